@@ -1,0 +1,127 @@
+#include "support/command_line.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "graph/error.hpp"
+
+namespace vern {
+
+namespace {
+[[noreturn]] void usage_error(const std::string& program, const std::string& message, const std::string& hint) {
+  throw Error(ErrorKind::Usage, program + ": error: " + message + (hint.empty() ? "" : "\n  hint: " + hint));
+}
+}  // namespace
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+CommandLine::CommandLine(std::string program, std::string usage, std::string description)
+    : program_(std::move(program)), usage_(std::move(usage)), description_(std::move(description)) {}
+
+void CommandLine::add(OptionSpec spec) { specs_.push_back(std::move(spec)); }
+
+const OptionSpec* CommandLine::find(const std::string& arg) const {
+  for (const auto& s : specs_)
+    if (arg == s.name || (!s.short_name.empty() && arg == s.short_name)) return &s;
+  return nullptr;
+}
+
+ParsedCommandLine CommandLine::parse(int argc, const char* const* argv) const {
+  ParsedCommandLine out;
+  bool only_positional = false;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (only_positional || arg.size() < 2 || arg[0] != '-' || (arg[1] >= '0' && arg[1] <= '9')) {
+      out.positional.push_back(arg);
+      continue;
+    }
+    if (arg == "--") {
+      only_positional = true;
+      continue;
+    }
+    std::string inline_value;
+    bool has_inline = false;
+    if (auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+      inline_value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+      has_inline = true;
+    }
+    const OptionSpec* spec = find(arg);
+    if (!spec) {
+      std::string best;
+      std::size_t best_d = 3;
+      for (const auto& s : specs_) {
+        const std::size_t d = edit_distance(arg, s.name);
+        if (d < best_d) best_d = d, best = s.name;
+      }
+      usage_error(program_, "unknown option '" + arg + "'",
+                  best.empty() ? "run '" + program_ + " --help' for the options"
+                               : "did you mean '" + best + "'? ('" + program_ + " --help' lists them all)");
+    }
+    auto& values = out.options[spec->name];
+    values.clear();
+    if (has_inline) {
+      if (spec->values != 1) usage_error(program_, spec->name + " takes " + std::to_string(spec->values) + " values", "");
+      values.push_back(inline_value);
+      continue;
+    }
+    for (int k = 0; k < spec->values; ++k) {
+      if (i + 1 >= argc)
+        usage_error(program_, spec->name + " needs " + std::to_string(spec->values) + " value" +
+                                  (spec->values > 1 ? "s" : "") + " (" + spec->value_names + ")",
+                    "for example: " + spec->name + " " + spec->value_names);
+      values.emplace_back(argv[++i]);
+    }
+  }
+  return out;
+}
+
+std::string CommandLine::help() const {
+  std::string text = "usage: " + usage_ + "\n\n" + description_ + "\n\noptions:\n";
+  for (const auto& s : specs_) {
+    std::string left = "  " + (s.short_name.empty() ? "" : s.short_name + ", ") + s.name;
+    if (!s.value_names.empty()) left += " " + s.value_names;
+    if (left.size() < 28) left.resize(28, ' ');
+    else left += "\n" + std::string(28, ' ');
+    text += left + s.help + "\n";
+  }
+  if (!epilog_.empty()) text += "\n" + epilog_;
+  return text;
+}
+
+double CommandLine::number(const ParsedCommandLine& cl, const std::string& name, std::size_t i) {
+  const std::string& text = cl.value(name, i);
+  double v = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
+    usage_error("", name + " expects a number, got '" + text + "'", "for example: " + name + " 10");
+  return v;
+}
+
+long long CommandLine::integer(const ParsedCommandLine& cl, const std::string& name, long long min, long long max) {
+  const std::string& text = cl.value(name);
+  long long v = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size())
+    usage_error("", name + " expects a whole number, got '" + text + "'", "");
+  if (v < min || v > max)
+    usage_error("", name + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " + text,
+                "");
+  return v;
+}
+
+}  // namespace vern

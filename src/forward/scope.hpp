@@ -1,0 +1,48 @@
+// Scopes: the oriented boxes that operations cut, move and fill.
+//
+// A scope is an origin corner, an orthonormal right-handed frame (its
+// columns are the scope's x, y and z axes in world space) and a size along
+// each of those axes. The box it stands for is
+//   { origin + frame * (u * size) : u in [0,1]^3 }.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "graph/value.hpp"
+
+namespace vern {
+
+struct Scope {
+  glm::dvec3 origin{0.0};
+  glm::dmat3 frame{1.0};
+  glm::dvec3 size{1.0};
+
+  // A point given in unit-box coordinates, in world space.
+  glm::dvec3 to_world(const glm::dvec3& unit) const { return origin + frame * (unit * size); }
+
+  // The part [from, from + length) along an axis.
+  Scope slice(Axis axis, double from, double length) const {
+    Scope s = *this;
+    const auto a = static_cast<int>(axis);
+    s.origin += frame[a] * from;
+    s.size[a] = length;
+    return s;
+  }
+
+  friend bool operator==(const Scope&, const Scope&) = default;
+};
+
+// The world-space axis-aligned bounds of a scope (min and max corners).
+struct Bounds {
+  glm::dvec3 min{0.0};
+  glm::dvec3 max{0.0};
+};
+Bounds world_bounds(const Scope& s);
+
+// R(axis, angle) applied to a scope: the same centre, the frame turned by
+// angle about the scope's own axis. Multiples of pi/2 (within 1e-9 rad) are
+// snapped to exact quarter turns and swap the two other sizes on odd
+// multiples, so the child occupies exactly the parent's box.
+Scope rotated(const Scope& s, Axis axis, double angle);
+
+}  // namespace vern

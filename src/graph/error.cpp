@@ -1,0 +1,34 @@
+#include "graph/error.hpp"
+
+namespace vern {
+
+int exit_code(ErrorKind kind) {
+  switch (kind) {
+    case ErrorKind::Usage: return 2;
+    case ErrorKind::Input: return 3;
+    case ErrorKind::Limit: return 4;
+    case ErrorKind::Io: return 5;
+    case ErrorKind::Internal: return 70;
+  }
+  return 70;
+}
+
+std::string format_message(const std::string& file, SourceLoc loc, const std::string& message,
+                           const std::string& hint) {
+  std::string text;
+  if (!file.empty()) text += file;
+  if (loc.known()) {
+    text += (text.empty() ? "" : ":") + std::to_string(loc.line) + ":" + std::to_string(loc.column);
+  }
+  if (!text.empty()) text += ": ";
+  text += "error: " + message;
+  if (!hint.empty()) text += "\n  hint: " + hint;
+  return text;
+}
+
+void fail(ErrorKind kind, const std::string& file, SourceLoc loc, const std::string& message,
+          const std::string& hint) {
+  throw Error(kind, format_message(file, loc, message, hint));
+}
+
+}  // namespace vern

@@ -1,0 +1,110 @@
+// Expressions of the grammar language, as small value-semantic trees.
+//
+// An Expr is a flat vector of nodes in post-order: a node's children come
+// right before it, and each node records the size of its subtree, so the
+// root is the last node and the whole tree lives in one allocation. That
+// makes an Expr cheap to copy, hash and compare (the inverse pipeline
+// hash-conses graphs full of them) and quick to evaluate.
+//
+// Names are resolved when an Expr is built: a parameter is the slot of the
+// enclosing rule's parameter list, a constant the index of the grammar's
+// constant table. Source locations ride along for messages but take no
+// part in equality or hashing.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "graph/error.hpp"
+#include "graph/value.hpp"
+
+namespace vern {
+
+enum class ExprKind : std::uint8_t { Number, Axis, Constant, Param, Unary, Binary, Call };
+
+enum class UnaryOp : std::uint8_t { Neg, Not };
+
+enum class BinaryOp : std::uint8_t { Add, Sub, Mul, Div, Mod, Eq, Ne, Lt, Le, Gt, Ge, And, Or };
+
+enum class Function : std::uint8_t {
+  Min, Max, Abs, Floor, Ceil, Round, Sqrt, Sin, Cos,
+  Rand, RandInt, Normal, TNormal, Choice,
+};
+
+// One table describes every function: its name, how many arguments it takes
+// (max_args < 0: any number from min_args up) and whether it draws.
+struct FunctionInfo {
+  Function function;
+  std::string_view name;
+  int min_args;
+  int max_args;
+  bool random;
+};
+std::span<const FunctionInfo> function_table();
+const FunctionInfo& function_info(Function f);
+std::optional<Function> find_function(std::string_view name);
+
+const char* operator_text(UnaryOp op);
+const char* operator_text(BinaryOp op);
+
+struct ExprNode {
+  ExprKind kind = ExprKind::Number;
+  std::uint8_t op = 0;      // UnaryOp, BinaryOp, Function or Axis, by kind
+  std::uint16_t argc = 0;   // Call: number of arguments
+  std::uint32_t size = 1;   // nodes in this subtree, itself included
+  std::uint32_t index = 0;  // Constant or Param: the slot
+  double number = 0.0;      // Number: the value
+
+  friend bool operator==(const ExprNode&, const ExprNode&) = default;
+};
+
+class Expr {
+ public:
+  Expr() = default;  // the empty expression: "not given"
+
+  static Expr number(double v, SourceLoc loc = {});
+  static Expr axis(Axis a, SourceLoc loc = {});
+  static Expr constant(std::uint32_t index, SourceLoc loc = {});
+  static Expr param(std::uint32_t index, SourceLoc loc = {});
+  static Expr unary(UnaryOp op, Expr operand, SourceLoc loc = {});
+  static Expr binary(BinaryOp op, Expr lhs, Expr rhs, SourceLoc loc = {});
+  static Expr call(Function f, std::vector<Expr> args, SourceLoc loc = {});
+
+  bool empty() const { return nodes_.empty(); }
+  std::size_t root() const { return nodes_.size() - 1; }
+  const std::vector<ExprNode>& nodes() const { return nodes_; }
+  const ExprNode& node(std::size_t i) const { return nodes_[i]; }
+  SourceLoc loc(std::size_t i) const { return i < locs_.size() ? locs_[i] : SourceLoc{}; }
+  SourceLoc loc() const { return empty() ? SourceLoc{} : loc(root()); }
+
+  // Roots of node i's children, in order (at most argc entries written).
+  // Returns how many children there are.
+  std::size_t children(std::size_t i, std::size_t* roots, std::size_t capacity) const;
+  std::vector<std::size_t> children(std::size_t i) const;
+
+  // The literal number, if the whole expression is one.
+  std::optional<double> literal() const;
+  bool draws_random() const;
+  bool uses_params() const;
+
+  std::size_t hash() const;
+  friend bool operator==(const Expr& a, const Expr& b) { return a.nodes_ == b.nodes_; }
+
+ private:
+  void append(const Expr& child);
+  void push(ExprNode n, SourceLoc loc);
+
+  std::vector<ExprNode> nodes_;
+  std::vector<SourceLoc> locs_;
+};
+
+// Mixes v into seed (boost-style, 64-bit); shared by every structural hash.
+inline std::size_t hash_combine(std::size_t seed, std::size_t v) {
+  return seed ^ (v + 0x9e3779b97f4a7c15ULL + (seed << 12) + (seed >> 4));
+}
+
+}  // namespace vern

@@ -1,0 +1,151 @@
+// The operation nodes of the operation graph (thesis chapter 5).
+//
+// A node is one operation; its children are NodeIds into the owning
+// Grammar's arena. Calls name rules by index, never nodes, so the node arena
+// is a DAG even when the grammar recurses, and hash-consing is bottom-up.
+// Every kind is a plain struct; a Node is a variant of them plus the place
+// in the source it came from (which takes no part in equality or hashing).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "graph/expr.hpp"
+
+namespace vern {
+
+using NodeId = std::uint32_t;
+using RuleId = std::uint32_t;
+using LabelId = std::uint32_t;  // a primitive's name, interned in the Grammar
+
+// `~e` (relative: a share of what the absolute sizes leave) or `e` (metres).
+// In T and S a relative size is a multiple of the scope's current size.
+struct Size {
+  Expr value;
+  bool relative = false;
+  friend bool operator==(const Size&, const Size&) = default;
+};
+
+struct SplitPart {
+  Size size;
+  NodeId child = 0;
+  friend bool operator==(const SplitPart&, const SplitPart&) = default;
+};
+
+// split(axis){ s1 : op1 | s2 : op2 | ... }
+struct Split {
+  Expr axis;
+  std::vector<SplitPart> parts;
+  friend bool operator==(const Split&, const Split&) = default;
+};
+
+// repeat(axis, size){ op }: max(1, ceil(L / size)) equal tiles.
+struct Repeat {
+  Expr axis;
+  Expr size;
+  NodeId child = 0;
+  friend bool operator==(const Repeat&, const Repeat&) = default;
+};
+
+// repeatN(axis, n){ op }: round(n) equal tiles, none if n <= 0.
+struct RepeatN {
+  Expr axis;
+  Expr count;
+  NodeId child = 0;
+  friend bool operator==(const RepeatN&, const RepeatN&) = default;
+};
+
+// One alternative of a choose: taken with probability proportional to its
+// priority among those whose condition holds. An empty condition holds.
+struct ChooseOption {
+  Expr condition;
+  Expr priority;
+  NodeId child = 0;
+  friend bool operator==(const ChooseOption&, const ChooseOption&) = default;
+};
+
+// The alternatives of a rule label (or, from inference, of the examples).
+struct Choose {
+  std::vector<ChooseOption> options;
+  friend bool operator==(const Choose&, const Choose&) = default;
+};
+
+// label(args): run a rule with these argument values.
+struct Call {
+  RuleId rule = 0;
+  std::vector<Expr> args;
+  friend bool operator==(const Call&, const Call&) = default;
+};
+
+// I(name): a terminal.
+struct Primitive {
+  LabelId label = 0;
+  friend bool operator==(const Primitive&, const Primitive&) = default;
+};
+
+struct Nil {
+  friend bool operator==(const Nil&, const Nil&) = default;
+};
+
+// T(dx, dy, dz){ op }: move along the scope's own axes.
+struct Translate {
+  std::array<Size, 3> offset;
+  NodeId child = 0;
+  friend bool operator==(const Translate&, const Translate&) = default;
+};
+
+// S(sx, sy, sz){ op }: resize, origin kept.
+struct Scale {
+  std::array<Size, 3> size;
+  NodeId child = 0;
+  friend bool operator==(const Scale&, const Scale&) = default;
+};
+
+// R(axis, angle){ op }: turn about the scope's centre (radians).
+struct Rotate {
+  Expr axis;
+  Expr angle;
+  NodeId child = 0;
+  friend bool operator==(const Rotate&, const Rotate&) = default;
+};
+
+enum class Face : std::uint8_t { Top, Bottom, Front, Back, Left, Right };
+const char* face_name(Face f);
+bool find_face(std::string_view name, Face& out);
+
+struct CompPart {
+  Face face = Face::Top;
+  NodeId child = 0;
+  friend bool operator==(const CompPart&, const CompPart&) = default;
+};
+
+// comp(f){ face : op | ... }: faces as zero-thickness scopes.
+struct Comp {
+  std::vector<CompPart> parts;
+  friend bool operator==(const Comp&, const Comp&) = default;
+};
+
+// colour(r, g, b): a `rect` terminal with that colour (components in 0..1).
+struct Colour {
+  Expr red, green, blue;
+  friend bool operator==(const Colour&, const Colour&) = default;
+};
+
+using Operation = std::variant<Split, Repeat, RepeatN, Choose, Call, Primitive, Nil, Translate, Scale, Rotate,
+                               Comp, Colour>;
+
+// The operation's name as the grammar spells it ("split", "repeatN", ...).
+const char* operation_name(const Operation& op);
+
+struct Node {
+  Operation op;
+  SourceLoc loc;
+};
+
+// The node's children in order (split parts, choose options, ...).
+std::vector<NodeId> node_children(const Operation& op);
+
+}  // namespace vern

@@ -1,0 +1,187 @@
+#include "graph/structural.hpp"
+
+#include <functional>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <utility>
+
+#include "graph/overload.hpp"
+
+namespace vern {
+
+namespace {
+
+std::size_t hash_size(std::size_t h, const Size& s) {
+  return hash_combine(hash_combine(h, s.value.hash()), s.relative ? 1 : 2);
+}
+
+// Hashes an operation's own fields; `child` says how a child id enters the
+// hash (its id, or its deep hash) and `label`/`rule` how names do.
+template <class ChildHash, class LabelHash, class RuleHash>
+std::size_t hash_operation(const Operation& op, ChildHash child, LabelHash label, RuleHash rule) {
+  std::size_t h = op.index() * 0x100000001b3ULL;
+  std::visit(Overload{
+                 [&](const Split& s) {
+                   h = hash_combine(h, s.axis.hash());
+                   for (const auto& p : s.parts) h = hash_combine(hash_size(h, p.size), child(p.child));
+                 },
+                 [&](const Repeat& r) {
+                   h = hash_combine(hash_combine(hash_combine(h, r.axis.hash()), r.size.hash()), child(r.child));
+                 },
+                 [&](const RepeatN& r) {
+                   h = hash_combine(hash_combine(hash_combine(h, r.axis.hash()), r.count.hash()), child(r.child));
+                 },
+                 [&](const Choose& c) {
+                   for (const auto& o : c.options) {
+                     h = hash_combine(hash_combine(h, o.condition.hash()), o.priority.hash());
+                     h = hash_combine(h, child(o.child));
+                   }
+                 },
+                 [&](const Call& c) {
+                   h = hash_combine(h, rule(c.rule));
+                   for (const auto& a : c.args) h = hash_combine(h, a.hash());
+                 },
+                 [&](const Primitive& p) { h = hash_combine(h, label(p.label)); },
+                 [&](const Nil&) {},
+                 [&](const Translate& t) {
+                   for (const auto& s : t.offset) h = hash_size(h, s);
+                   h = hash_combine(h, child(t.child));
+                 },
+                 [&](const Scale& s) {
+                   for (const auto& z : s.size) h = hash_size(h, z);
+                   h = hash_combine(h, child(s.child));
+                 },
+                 [&](const Rotate& r) {
+                   h = hash_combine(hash_combine(hash_combine(h, r.axis.hash()), r.angle.hash()), child(r.child));
+                 },
+                 [&](const Comp& c) {
+                   for (const auto& p : c.parts) h = hash_combine(hash_combine(h, std::size_t(p.face)), child(p.child));
+                 },
+                 [&](const Colour& c) {
+                   h = hash_combine(hash_combine(hash_combine(h, c.red.hash()), c.green.hash()), c.blue.hash());
+                 },
+             },
+             op);
+  return h;
+}
+
+// Deep comparison of two graphs, memoised on node pairs so shared subgraphs
+// (DAGs from hash-consing) are compared once.
+class Comparer {
+ public:
+  Comparer(const Grammar& a, const Grammar& b) : a_(a), b_(b) {}
+
+  bool nodes(NodeId x, NodeId y) {
+    if (&a_ == &b_ && x == y) return true;
+    if (!same_.insert({x, y}).second) return true;
+    const Operation& ox = a_.op(x);
+    const Operation& oy = b_.op(y);
+    if (ox.index() != oy.index()) return false;
+    return std::visit(
+        Overload{
+            [&](const Split& s) {
+              const auto& t = std::get<Split>(oy);
+              if (s.axis != t.axis || s.parts.size() != t.parts.size()) return false;
+              for (std::size_t i = 0; i < s.parts.size(); ++i)
+                if (s.parts[i].size != t.parts[i].size || !nodes(s.parts[i].child, t.parts[i].child)) return false;
+              return true;
+            },
+            [&](const Repeat& r) {
+              const auto& t = std::get<Repeat>(oy);
+              return r.axis == t.axis && r.size == t.size && nodes(r.child, t.child);
+            },
+            [&](const RepeatN& r) {
+              const auto& t = std::get<RepeatN>(oy);
+              return r.axis == t.axis && r.count == t.count && nodes(r.child, t.child);
+            },
+            [&](const Choose& c) {
+              const auto& t = std::get<Choose>(oy);
+              if (c.options.size() != t.options.size()) return false;
+              for (std::size_t i = 0; i < c.options.size(); ++i) {
+                const auto& p = c.options[i];
+                const auto& q = t.options[i];
+                if (p.condition != q.condition || p.priority != q.priority || !nodes(p.child, q.child)) return false;
+              }
+              return true;
+            },
+            [&](const Call& c) {
+              const auto& t = std::get<Call>(oy);
+              return a_.rules[c.rule].label == b_.rules[t.rule].label && c.args == t.args;
+            },
+            [&](const Primitive& p) { return a_.label(p.label) == b_.label(std::get<Primitive>(oy).label); },
+            [&](const Nil&) { return true; },
+            [&](const Translate& tr) {
+              const auto& t = std::get<Translate>(oy);
+              return tr.offset == t.offset && nodes(tr.child, t.child);
+            },
+            [&](const Scale& s) {
+              const auto& t = std::get<Scale>(oy);
+              return s.size == t.size && nodes(s.child, t.child);
+            },
+            [&](const Rotate& r) {
+              const auto& t = std::get<Rotate>(oy);
+              return r.axis == t.axis && r.angle == t.angle && nodes(r.child, t.child);
+            },
+            [&](const Comp& c) {
+              const auto& t = std::get<Comp>(oy);
+              if (c.parts.size() != t.parts.size()) return false;
+              for (std::size_t i = 0; i < c.parts.size(); ++i)
+                if (c.parts[i].face != t.parts[i].face || !nodes(c.parts[i].child, t.parts[i].child)) return false;
+              return true;
+            },
+            [&](const Colour& c) { return c == std::get<Colour>(oy); },
+        },
+        ox);
+  }
+
+ private:
+  const Grammar& a_;
+  const Grammar& b_;
+  // Pairs already compared or being compared; a mismatch anywhere makes the
+  // whole answer false, so optimistic entries never leak a wrong "equal".
+  std::set<std::pair<NodeId, NodeId>> same_;
+};
+
+}  // namespace
+
+std::size_t shallow_hash(const Operation& op) {
+  return hash_operation(
+      op, [](NodeId id) { return std::size_t{id}; }, [](LabelId id) { return std::size_t{id}; },
+      [](RuleId id) { return std::size_t{id}; });
+}
+
+std::size_t structural_hash(const Grammar& g, NodeId node) {
+  std::unordered_map<NodeId, std::size_t> memo;
+  std::function<std::size_t(NodeId)> deep = [&](NodeId id) -> std::size_t {
+    if (auto it = memo.find(id); it != memo.end()) return it->second;
+    const std::size_t h = hash_operation(
+        g.op(id), deep, [&](LabelId l) { return std::hash<std::string>{}(g.label(l)); },
+        [&](RuleId r) { return std::hash<std::string>{}(g.rules[r].label); });
+    memo.emplace(id, h);
+    return h;
+  };
+  return deep(node);
+}
+
+bool structurally_equal(const Grammar& ga, NodeId a, const Grammar& gb, NodeId b) {
+  return Comparer(ga, gb).nodes(a, b);
+}
+
+bool equal_grammars(const Grammar& a, const Grammar& b) {
+  if (a.rules.size() != b.rules.size() || a.constants.size() != b.constants.size()) return false;
+  if (a.primitives != b.primitives || a.scope != b.scope) return false;
+  if (!a.rules.empty() && a.rules[a.start_rule].label != b.rules[b.start_rule].label) return false;
+  for (std::size_t i = 0; i < a.constants.size(); ++i)
+    if (a.constants[i].name != b.constants[i].name || a.constants[i].value != b.constants[i].value) return false;
+  Comparer cmp(a, b);
+  for (std::size_t i = 0; i < a.rules.size(); ++i) {
+    const Rule& ra = a.rules[i];
+    const Rule& rb = b.rules[i];
+    if (ra.label != rb.label || ra.params.size() != rb.params.size()) return false;
+    if (!cmp.nodes(ra.body, rb.body)) return false;
+  }
+  return true;
+}
+
+}  // namespace vern
