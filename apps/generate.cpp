@@ -1,2 +1,204 @@
-// Interim entry point while the engine is being assembled; replaced by the real CLI.
-int main() { return 0; }
+// generate: a grammar in, buildings out (OBJ, glTF or GLB).
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <new>
+
+#include "forward/gltf_writer.hpp"
+#include "forward/obj_writer.hpp"
+#include "forward/primitive_check.hpp"
+#include "forward/variants.hpp"
+#include "graph/atomic_file.hpp"
+#include "graph/parser.hpp"
+#include "support/command_line.hpp"
+#include "support/primitive_sources.hpp"
+
+namespace fs = std::filesystem;
+using namespace vern;
+
+namespace {
+
+CommandLine make_command_line() {
+  CommandLine cl("generate", "generate GRAMMAR.grm [-n COUNT] [--seed S] [-o OUT] [options]",
+                 "Derives COUNT buildings from a grammar and writes them as OBJ, glTF or GLB.\n"
+                 "OUT is a folder (one file per variant: OUT/variant_000.obj, ...) or one file\n"
+                 "ending in .obj, .gltf or .glb that holds all variants side by side.");
+  cl.add({"--count", "-n", 1, "COUNT", "how many buildings (default 1)"});
+  cl.add({"--seed", "-s", 1, "S", "seed of the first building; building i uses S + i (default 1)"});
+  cl.add({"--output", "-o", 1, "OUT", "folder or .obj/.gltf/.glb file (default: variants/)"});
+  cl.add({"--format", "", 1, "FORMAT", "obj, gltf or glb: the file type in a folder (default obj)"});
+  cl.add({"--scope", "", 3, "X Y Z", "start-scope size in metres (default: the grammar's @scope, else 10 10 10)"});
+  cl.add({"--start", "", 1, "LABEL", "start rule (default: @start, else the first rule)"});
+  cl.add({"--spacing", "", 1, "METRES", "gap between buildings in a one-file layout (default 5)"});
+  cl.add({"--primitives", "", 1, "PATH", "primitive meshes: a folder of .obj files or one .obj of named objects"});
+  cl.add({"--strict", "", 0, "", "treat warnings (no rule applies, unknown primitive) as errors"});
+  cl.add({"--threads", "-j", 1, "N", "derive with N threads (default: all cores; output is the same)"});
+  cl.add({"--max-depth", "", 1, "N", "limit on nested rule calls (default 1000)"});
+  cl.add({"--max-terminals", "", 1, "N", "limit on terminals per building (default 10000000)"});
+  cl.add({"--max-operations", "", 1, "N", "limit on operations per building (default 200000000)"});
+  cl.add({"--quiet", "-q", 0, "", "print errors only"});
+  cl.add({"--help", "-h", 0, "", "show this help"});
+  cl.set_epilog(
+      "examples:\n"
+      "  generate data/grammars/garage.grm -n 10 -o garages/        # garages/variant_000.obj ...\n"
+      "  generate data/grammars/garage.grm -n 10 -o garages.glb     # all ten in one GLB\n"
+      "  generate style.grm --seed 14 -n 1 -o one.obj               # variant 7 of --seed 7\n"
+      "\n"
+      "exit codes: 0 success, 2 usage error, 3 bad input (grammar or mesh file),\n"
+      "            4 a limit was reached, 5 a file could not be read or written, 70 internal error\n");
+  return cl;
+}
+
+enum class Format { Obj, Gltf, Glb };
+
+std::optional<Format> format_of_extension(const fs::path& p) {
+  const std::string ext = p.extension().string();
+  if (ext == ".obj") return Format::Obj;
+  if (ext == ".gltf") return Format::Gltf;
+  if (ext == ".glb") return Format::Glb;
+  return std::nullopt;
+}
+
+const char* extension(Format f) { return f == Format::Obj ? ".obj" : f == Format::Gltf ? ".gltf" : ".glb"; }
+
+void write_scene(const Scene& scene, const PrimitiveLibrary& library, const fs::path& path, Format format) {
+  if (format == Format::Obj)
+    write_obj(scene, library, path);
+  else
+    write_gltf(scene, library, path);
+}
+
+[[noreturn]] void usage(const std::string& message, const std::string& hint = {}) {
+  throw Error(ErrorKind::Usage, "generate: error: " + message + (hint.empty() ? "" : "\n  hint: " + hint));
+}
+
+int run(int argc, char** argv) {
+  const CommandLine cl = make_command_line();
+  const ParsedCommandLine args = cl.parse(argc, argv);
+  if (args.has("--help")) {
+    std::cout << cl.help();
+    return 0;
+  }
+  if (args.positional.size() != 1)
+    usage(args.positional.empty() ? "no grammar file given" : "give one grammar file, got " + std::to_string(args.positional.size()),
+          "usage: generate GRAMMAR.grm [-n COUNT] [-o OUT]  (generate --help for more)");
+  const bool quiet = args.has("--quiet");
+  const fs::path grammar_path = args.positional[0];
+
+  VariantOptions options;
+  options.count = args.has("--count") ? static_cast<std::uint32_t>(CommandLine::integer(args, "--count", 1, 10'000'000)) : 1;
+  options.derive.seed = args.has("--seed") ? static_cast<std::uint64_t>(CommandLine::integer(args, "--seed", 0, (1LL << 53))) : 1;
+  options.threads = args.has("--threads") ? static_cast<unsigned>(CommandLine::integer(args, "--threads", 1, 256)) : 0;
+  options.derive.strict = args.has("--strict");
+  if (args.has("--max-depth"))
+    options.derive.limits.max_depth = static_cast<std::uint32_t>(CommandLine::integer(args, "--max-depth", 1, 1'000'000));
+  if (args.has("--max-terminals"))
+    options.derive.limits.max_terminals = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-terminals", 1, 1LL << 40));
+  if (args.has("--max-operations"))
+    options.derive.limits.max_operations = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-operations", 1, 1LL << 50));
+  if (args.has("--scope")) {
+    glm::dvec3 size;
+    for (int i = 0; i < 3; ++i) {
+      size[i] = CommandLine::number(args, "--scope", static_cast<std::size_t>(i));
+      if (size[i] < 0) usage("--scope sizes must be >= 0");
+    }
+    options.derive.size = size;
+  }
+  const double spacing = args.has("--spacing") ? CommandLine::number(args, "--spacing") : 5.0;
+
+  const fs::path output = args.has("--output") ? fs::path(args.value("--output")) : fs::path("variants/");
+  std::optional<Format> folder_format;
+  if (args.has("--format")) {
+    const std::string f = args.value("--format");
+    if (f == "obj") folder_format = Format::Obj;
+    else if (f == "gltf") folder_format = Format::Gltf;
+    else if (f == "glb") folder_format = Format::Glb;
+    else usage("unknown --format '" + f + "'", "formats are obj, gltf and glb");
+  }
+  const std::optional<Format> file_format = format_of_extension(output);
+  const bool one_file = file_format.has_value();
+  if (one_file && folder_format && *folder_format != *file_format)
+    usage("--format " + args.value("--format") + " contradicts the output file " + output.string());
+  if (!one_file && output.has_extension() && !fs::is_directory(output))
+    usage("cannot tell what to write to '" + output.string() + "'",
+          "name a folder (ending in /) or a file ending in .obj, .gltf or .glb");
+  std::error_code ec;
+  if (fs::exists(output, ec) && fs::equivalent(output, grammar_path, ec))
+    usage("the output " + output.string() + " is the grammar file itself", "choose another output path");
+
+  Grammar grammar = read_grammar_file(grammar_path);
+  if (args.has("--start")) {
+    const std::string label = args.value("--start");
+    const auto rule = grammar.find_rule(label);
+    if (!rule) usage("--start names '" + label + "', which is not a rule of " + grammar_path.string());
+    if (!grammar.rules[*rule].params.empty()) usage("--start '" + label + "' takes parameters; the start rule takes none");
+    grammar.start_rule = *rule;
+  }
+  const std::optional<fs::path> primitives_path =
+      args.has("--primitives") ? std::optional<fs::path>(args.value("--primitives")) : std::nullopt;
+  const PrimitiveLibrary library = primitives_for(grammar, grammar_path, primitives_path);
+  for (const auto& w : unknown_primitive_warnings(grammar, library)) {
+    if (options.derive.strict) throw Error(ErrorKind::Input, w + "\n  hint: --strict turns this warning into an error");
+    if (!quiet) std::cerr << w << "\n";
+  }
+
+  const auto started = std::chrono::steady_clock::now();
+  const bool show_progress = !quiet && options.count >= 50 && isatty(STDERR_FILENO);
+  if (show_progress) {
+    options.progress = [](std::uint32_t done, std::uint32_t total) {
+      if (done % 10 == 0 || done == total) std::fprintf(stderr, "\rderiving %u/%u buildings", done, total);
+    };
+  }
+  std::vector<Derivation> derivations = derive_variants(grammar, options);
+  if (show_progress) std::fprintf(stderr, "\n");
+
+  std::size_t terminals = 0;
+  std::vector<std::string> warnings;
+  for (auto& d : derivations) {
+    terminals += d.terminals.size();
+    for (auto& w : d.warnings)
+      if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(std::move(w));
+  }
+  if (!quiet)
+    for (const auto& w : warnings) std::cerr << w << "\n";
+
+  std::string where;
+  if (one_file) {
+    write_scene(lay_out(std::move(derivations), spacing), library, output, *file_format);
+    where = output.string();
+  } else {
+    const Format format = folder_format.value_or(Format::Obj);
+    fs::create_directories(output, ec);
+    if (ec) throw Error(ErrorKind::Io, output.string() + ": error: cannot create the folder: " + ec.message());
+    for (std::uint32_t i = 0; i < derivations.size(); ++i)
+      write_scene(single(std::move(derivations[i]), i), library, output / (variant_name(i) + extension(format)), format);
+    where = (output / ("variant_000" + std::string(extension(format)))).string();
+    if (options.count > 1) where += " ... " + variant_name(options.count - 1) + extension(format);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (!quiet)
+    std::fprintf(stderr, "generate: %u building%s, %zu terminals -> %s (%.2f s)\n", options.count,
+                 options.count == 1 ? "" : "s", terminals, where.c_str(), seconds);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  install_interrupt_cleanup();
+  try {
+    return run(argc, argv);
+  } catch (const Error& e) {
+    std::cerr << e.what() << "\n";
+    return exit_code(e.kind());
+  } catch (const std::bad_alloc&) {
+    std::cerr << "generate: error: out of memory\n  hint: lower --count or --max-terminals\n";
+    return exit_code(ErrorKind::Limit);
+  } catch (const std::exception& e) {
+    std::cerr << "generate: internal error: " << e.what() << "\n";
+    return exit_code(ErrorKind::Internal);
+  }
+}

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "graph/error.hpp"
+#include "graph/suggest.hpp"
 
 namespace vern {
 
@@ -13,21 +14,6 @@ namespace {
   throw Error(ErrorKind::Usage, program + ": error: " + message + (hint.empty() ? "" : "\n  hint: " + hint));
 }
 }  // namespace
-
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
 
 CommandLine::CommandLine(std::string program, std::string usage, std::string description)
     : program_(std::move(program)), usage_(std::move(usage)), description_(std::move(description)) {}
@@ -62,12 +48,9 @@ ParsedCommandLine CommandLine::parse(int argc, const char* const* argv) const {
     }
     const OptionSpec* spec = find(arg);
     if (!spec) {
-      std::string best;
-      std::size_t best_d = 3;
-      for (const auto& s : specs_) {
-        const std::size_t d = edit_distance(arg, s.name);
-        if (d < best_d) best_d = d, best = s.name;
-      }
+      std::vector<std::string> names;
+      for (const auto& s : specs_) names.push_back(s.name);
+      const std::string best = closest_name(arg, names);
       usage_error(program_, "unknown option '" + arg + "'",
                   best.empty() ? "run '" + program_ + " --help' for the options"
                                : "did you mean '" + best + "'? ('" + program_ + " --help' lists them all)");

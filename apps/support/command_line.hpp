@@ -50,7 +50,4 @@ class CommandLine {
   std::vector<OptionSpec> specs_;
 };
 
-// Levenshtein distance, for "did you mean" suggestions.
-std::size_t edit_distance(const std::string& a, const std::string& b);
-
 }  // namespace vern

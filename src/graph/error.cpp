@@ -13,15 +13,22 @@ int exit_code(ErrorKind kind) {
   return 70;
 }
 
+namespace {
+std::string where(const std::string& file, SourceLoc loc) {
+  std::string text = file;
+  if (loc.known()) text += (text.empty() ? "" : ":") + std::to_string(loc.line) + ":" + std::to_string(loc.column);
+  if (!text.empty()) text += ": ";
+  return text;
+}
+}  // namespace
+
+std::string format_warning(const std::string& file, SourceLoc loc, const std::string& message) {
+  return where(file, loc) + "warning: " + message;
+}
+
 std::string format_message(const std::string& file, SourceLoc loc, const std::string& message,
                            const std::string& hint) {
-  std::string text;
-  if (!file.empty()) text += file;
-  if (loc.known()) {
-    text += (text.empty() ? "" : ":") + std::to_string(loc.line) + ":" + std::to_string(loc.column);
-  }
-  if (!text.empty()) text += ": ";
-  text += "error: " + message;
+  std::string text = where(file, loc) + "error: " + message;
   if (!hint.empty()) text += "\n  hint: " + hint;
   return text;
 }

@@ -46,6 +46,9 @@ class Error : public std::runtime_error {
 std::string format_message(const std::string& file, SourceLoc loc, const std::string& message,
                            const std::string& hint = {});
 
+// "file:line:col: warning: message": warnings print in the same shape.
+std::string format_warning(const std::string& file, SourceLoc loc, const std::string& message);
+
 [[noreturn]] void fail(ErrorKind kind, const std::string& file, SourceLoc loc, const std::string& message,
                        const std::string& hint = {});
 

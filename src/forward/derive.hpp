@@ -1,0 +1,48 @@
+// Deriving buildings: running an operation graph on a start scope.
+//
+// derive() is a pure function of (grammar, options): same grammar, scope and
+// seed give the same terminals, bit for bit, on any thread. Limits stop
+// runaway grammars with an error that names the limit, the flag that raises
+// it and the chain of rules that reached it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "forward/terminal.hpp"
+#include "graph/grammar.hpp"
+
+namespace vern {
+
+struct DeriveLimits {
+  std::uint32_t max_depth = 1000;            // nested rule calls (--max-depth)
+  std::uint64_t max_terminals = 10'000'000;  // terminals per derivation (--max-terminals)
+  std::uint64_t max_operations = 200'000'000;  // operations run, tiles included (--max-operations)
+};
+
+struct DeriveOptions {
+  std::uint64_t seed = 0;
+  DeriveLimits limits;
+  // --strict: a label none of whose rules applies is an error, not nil.
+  bool strict = false;
+  // The start scope's size; when absent, the grammar's @scope, else
+  // default_size. The start scope sits at the origin, axis-aligned.
+  std::optional<glm::dvec3> size;
+  glm::dvec3 default_size{10.0, 10.0, 10.0};
+};
+
+struct Derivation {
+  Scope start;
+  std::vector<std::string> labels;  // LabelId -> name (the grammar's, plus "rect" for colour())
+  std::vector<Terminal> terminals;
+  std::vector<std::string> warnings;
+};
+
+// Throws vern::Error: Input for evaluation errors (type, division by zero,
+// negative sizes), Limit for depth/terminal/operation limits, naming
+// file:line:col and the rule chain.
+Derivation derive(const Grammar& grammar, const DeriveOptions& options);
+
+}  // namespace vern

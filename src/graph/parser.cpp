@@ -1,0 +1,724 @@
+// The grammar language, as this parser reads it (GRAMMAR.md is the contract):
+//
+//   file      := { line }
+//   line      := NEWLINE | directive NEWLINE | constant NEWLINE | rule NEWLINE
+//   directive := '@start' IDENT | '@scope' expr ',' expr ',' expr | '@primitives' STRING
+//   constant  := IDENT '=' expr
+//   rule      := IDENT [ '(' [ IDENT { ',' IDENT } ] ')' ] [ ':' expr ] ARROW op [ ':' expr ]
+//   op        := 'split' '(' expr ')' '{' size ':' op { '|' size ':' op } '}'
+//              | 'repeat' '(' expr ',' expr ')' '{' op '}'
+//              | 'repeat' '(' expr ')' '{' expr ':' op '}'
+//              | 'repeatN' '(' expr ',' expr ')' '{' op '}'
+//              | 'I' '(' ( IDENT | STRING ) ')'
+//              | 'nil'
+//              | ( 'T' | 'S' ) '(' size ',' size ',' size ')' '{' op '}'
+//              | 'R' '(' expr ',' expr ')' '{' op '}'
+//              | 'comp' '(' 'f' ')' '{' FACE ':' op { '|' FACE ':' op } '}'
+//              | ( 'colour' | 'color' ) '(' ( COLOURNAME | STRING | expr ',' expr ',' expr ) ')'
+//              | IDENT [ '(' [ expr { ',' expr } ] ')' ]
+//   size      := [ '~' ] expr
+//   expr      := and { '||' and }        and := equality { '&&' equality }
+//   equality  := relation { ('=='|'!=') relation }
+//   relation  := sum { ('<'|'<='|'>'|'>=') sum }
+//   sum       := product { ('+'|'-') product }
+//   product   := unary { ('*'|'/'|'%') unary }
+//   unary     := ( '-' | '!' ) unary | primary
+//   primary   := NUMBER | '(' expr ')' | IDENT [ '(' [ expr { ',' expr } ] ')' ]
+//
+// ARROW is '-->', '->' or '→'; NEWLINE is reported only outside ( ) and { }.
+// Rules sharing a label are alternatives: they become one Choose body when
+// there are several, or when the only one has a condition or a priority.
+#include "graph/parser.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "graph/lexer.hpp"
+#include "graph/suggest.hpp"
+
+namespace vern {
+
+namespace {
+
+struct NamedColour {
+  std::string_view name;
+  double r, g, b;
+};
+constexpr NamedColour kColours[] = {
+    {"black", 0, 0, 0},        {"white", 1, 1, 1},          {"red", 0.8, 0.1, 0.1},
+    {"green", 0.2, 0.6, 0.2},  {"blue", 0.15, 0.3, 0.8},    {"yellow", 0.95, 0.85, 0.2},
+    {"orange", 0.95, 0.55, 0.1}, {"brown", 0.5, 0.3, 0.15}, {"grey", 0.5, 0.5, 0.5},
+    {"gray", 0.5, 0.5, 0.5},   {"beige", 0.9, 0.85, 0.7},   {"brick", 0.65, 0.3, 0.2},
+    {"glass", 0.55, 0.75, 0.85}, {"slate", 0.35, 0.4, 0.45}, {"sand", 0.85, 0.75, 0.55},
+};
+
+const std::set<std::string_view> kOperationWords{"split", "repeat", "repeatN", "I", "nil", "T",
+                                                  "S",     "R",      "comp",    "colour", "color"};
+// Names that stand for values by themselves. Function names are free: a
+// name followed by '(' is the function, so the thesis's `tower(h, max)` reads.
+const std::set<std::string_view> kReservedNames{"x", "y", "z", "pi", "rand"};
+
+// One written rule line, before alternatives are gathered into a Choose.
+struct Alternative {
+  Expr condition;
+  Expr priority;
+  bool priority_written = false;
+  NodeId body = 0;
+  SourceLoc loc;
+};
+
+struct RuleHeader {
+  std::string label;
+  std::vector<std::string> params;
+  SourceLoc loc;
+};
+
+class Parser {
+ public:
+  Parser(std::string_view text, const std::string& source) : source_(source), tokens_(tokenize(text, source)) {
+    g_.source_name = source;
+  }
+
+  Grammar run() {
+    declare_rules();
+    while (peek().kind != TokenKind::End) {
+      if (accept(TokenKind::Newline)) continue;
+      if (peek().kind == TokenKind::Directive) {
+        directive();
+      } else if (peek().kind == TokenKind::Identifier && peek(1).kind == TokenKind::Assign) {
+        constant();
+      } else {
+        rule();
+      }
+      end_of_line();
+    }
+    finish_rules();
+    return std::move(g_);
+  }
+
+ private:
+  // ---- tokens ----
+  const Token& peek(std::size_t ahead = 0) const {
+    return tokens_[std::min(pos_ + ahead, tokens_.size() - 1)];
+  }
+  const Token& next() { return tokens_[pos_ < tokens_.size() - 1 ? pos_++ : pos_]; }
+  bool accept(TokenKind k) {
+    if (peek().kind != k) return false;
+    ++pos_;
+    return true;
+  }
+  const Token& expect(TokenKind k, const std::string& context) {
+    if (peek().kind != k) {
+      error(peek().loc,
+            "expected " + std::string(token_kind_name(k)) + " " + context + ", found " + describe(peek()));
+    }
+    return next();
+  }
+  static std::string describe(const Token& t) {
+    switch (t.kind) {
+      case TokenKind::Identifier: return "'" + std::string(t.text) + "'";
+      case TokenKind::Number: return "the number " + std::string(t.text);
+      case TokenKind::Newline:
+      case TokenKind::End: return token_kind_name(t.kind);
+      default: return token_kind_name(t.kind);
+    }
+  }
+  void end_of_line() {
+    if (peek().kind == TokenKind::Newline || peek().kind == TokenKind::End) {
+      accept(TokenKind::Newline);
+      return;
+    }
+    error(peek().loc, "unexpected " + describe(peek()) + " after a complete line",
+          "one rule, constant or directive per line; continue a rule only inside ( ) or { }");
+  }
+  void skip_newlines() {
+    while (accept(TokenKind::Newline)) {
+    }
+  }
+  [[noreturn]] void error(SourceLoc loc, const std::string& message, const std::string& hint = {}) const {
+    fail(ErrorKind::Input, source_, loc, message, hint);
+  }
+
+  // ---- pass 1: every rule label, so calls may name rules defined later ----
+  void declare_rules() {
+    std::size_t i = 0;
+    bool line_start = true;
+    int depth = 0;
+    while (tokens_[i].kind != TokenKind::End) {
+      const Token& t = tokens_[i];
+      if (line_start && t.kind == TokenKind::Identifier && tokens_[i + 1].kind != TokenKind::Assign) {
+        // A rule line: IDENT [ ( ... ) ] [: ...] ARROW; find the arrow on this line.
+        std::size_t j = i + 1;
+        int d = 0;
+        bool is_rule = false;
+        for (; tokens_[j].kind != TokenKind::End && !(d == 0 && tokens_[j].kind == TokenKind::Newline); ++j) {
+          if (tokens_[j].kind == TokenKind::LParen || tokens_[j].kind == TokenKind::LBrace) ++d;
+          if (tokens_[j].kind == TokenKind::RParen || tokens_[j].kind == TokenKind::RBrace) --d;
+          if (tokens_[j].kind == TokenKind::Arrow) {
+            is_rule = true;
+            break;
+          }
+        }
+        const std::string label(t.text);
+        if (is_rule && !labels_.count(label)) {
+          labels_.emplace(label, static_cast<RuleId>(g_.rules.size()));
+          g_.rules.push_back({label, {}, 0, t.loc});
+          declared_params_.push_back(-1);
+        }
+      }
+      if (t.kind == TokenKind::LParen || t.kind == TokenKind::LBrace) ++depth;
+      if (t.kind == TokenKind::RParen || t.kind == TokenKind::RBrace) --depth;
+      line_start = t.kind == TokenKind::Newline;
+      ++i;
+    }
+    alternatives_.resize(g_.rules.size());
+    for (const auto& r : g_.rules) rule_names_.push_back(r.label);
+  }
+
+  // ---- lines ----
+  void directive() {
+    const Token& d = next();
+    if (d.value == "start") {
+      const Token& name = expect(TokenKind::Identifier, "after @start (the start rule's label)");
+      start_label_ = std::string(name.text);
+      start_loc_ = name.loc;
+    } else if (d.value == "scope") {
+      for (int i = 0; i < 3; ++i) {
+        if (i) expect(TokenKind::Comma, "between the three @scope sizes (x, y, z)");
+        g_.scope[i] = expression();
+      }
+    } else if (d.value == "primitives") {
+      g_.primitives = expect(TokenKind::String, "after @primitives (a quoted path)").value;
+    } else {
+      error(d.loc, "unknown directive '@" + d.value + "'", "directives are @start, @scope and @primitives");
+    }
+  }
+
+  void constant() {
+    const Token& name = next();
+    const std::string n(name.text);
+    check_free_name(name, "a constant");
+    if (g_.find_constant(n)) error(name.loc, "the constant '" + n + "' is defined twice");
+    next();  // '='
+    skip_newlines();
+    params_ = nullptr;
+    Expr value = expression();
+    g_.constants.push_back({n, std::move(value), name.loc});
+  }
+
+  void check_free_name(const Token& name, const std::string& what) const {
+    const std::string_view n = name.text;
+    if (kReservedNames.count(n) || kOperationWords.count(n))
+      error(name.loc, "'" + std::string(n) + "' cannot name " + what + ": the language uses it", "choose another name");
+  }
+
+  void rule() {
+    const Token& name = expect(TokenKind::Identifier, "at the start of a rule");
+    const std::string label(name.text);
+    if (kOperationWords.count(label))
+      error(name.loc, "'" + label + "' is an operation and cannot be a rule label", "choose another label");
+    std::vector<std::string> params;
+    if (accept(TokenKind::LParen)) {
+      if (!accept(TokenKind::RParen)) {
+        do {
+          const Token& p = expect(TokenKind::Identifier, "(a parameter name)");
+          check_free_name(p, "a parameter");
+          for (const auto& q : params)
+            if (q == p.text) error(p.loc, "the parameter '" + q + "' is listed twice");
+          params.emplace_back(p.text);
+        } while (accept(TokenKind::Comma));
+        expect(TokenKind::RParen, "to close the parameter list");
+      }
+    }
+    const auto declared = labels_.find(label);
+    if (declared == labels_.end()) {
+      // Pass 1 found no arrow on this line.
+      while (peek().kind != TokenKind::Newline && peek().kind != TokenKind::End && peek().kind != TokenKind::Colon &&
+             peek().kind != TokenKind::LBrace && peek().kind != TokenKind::Identifier)
+        next();
+      error(peek().loc, "expected '-->' in the rule for '" + label + "', found " + describe(peek()),
+            "a rule reads: label(params) : condition --> operation : priority");
+    }
+    const RuleId id = declared->second;
+    if (declared_params_[id] < 0) {
+      declared_params_[id] = static_cast<int>(params.size());
+      g_.rules[id].params = params;
+      g_.rules[id].loc = name.loc;
+    } else if (declared_params_[id] != static_cast<int>(params.size())) {
+      error(name.loc,
+            "'" + label + "' takes " + std::to_string(declared_params_[id]) + " parameters where it was first defined (" +
+                std::to_string(g_.rules[id].loc.line) + ":" + std::to_string(g_.rules[id].loc.column) + "), here " +
+                std::to_string(params.size()),
+            "all rules of one label take the same parameters");
+    }
+    params_ = &params;
+    Alternative alt;
+    alt.loc = name.loc;
+    if (accept(TokenKind::Colon)) alt.condition = expression();
+    if (!accept(TokenKind::Arrow)) {
+      error(peek().loc, "expected '-->' in the rule for '" + label + "', found " + describe(peek()),
+            "a rule reads: label(params) : condition --> operation : priority");
+    }
+    skip_newlines();
+    alt.body = operation();
+    if (accept(TokenKind::Colon)) {
+      alt.priority = expression();
+      alt.priority_written = true;
+    } else {
+      alt.priority = Expr::number(1.0);
+    }
+    params_ = nullptr;
+    alternatives_[id].push_back(std::move(alt));
+  }
+
+  void finish_rules() {
+    for (RuleId id = 0; id < g_.rules.size(); ++id) {
+      auto& alts = alternatives_[id];
+      if (alts.size() == 1 && alts[0].condition.empty() && !alts[0].priority_written) {
+        g_.rules[id].body = alts[0].body;
+        continue;
+      }
+      Choose choose;
+      for (auto& a : alts) choose.options.push_back({std::move(a.condition), std::move(a.priority), a.body});
+      g_.rules[id].body = g_.add({std::move(choose), alts[0].loc});
+    }
+    if (g_.rules.empty()) error({1, 1}, "the grammar has no rules", "a rule reads: plot --> split(x){ ~1 : I(rect) }");
+    if (!start_label_.empty()) {
+      auto it = labels_.find(start_label_);
+      if (it == labels_.end())
+        error(start_loc_, "@start names '" + start_label_ + "', which has no rule",
+              suggest(start_label_, rule_names_, "the rules"));
+      g_.start_rule = it->second;
+      g_.start_written = true;
+    }
+    const Rule& start = g_.rules[g_.start_rule];
+    if (!start.params.empty())
+      error(start.loc, "the start rule '" + start.label + "' takes parameters",
+            "the start rule runs with no arguments: add a rule such as 'plot --> " + start.label + "(...)'");
+  }
+
+  // ---- operations ----
+  NodeId add(Operation op, SourceLoc loc) { return g_.add({std::move(op), loc}); }
+
+  void open_brace(const std::string& what) {
+    expect(TokenKind::LBrace, "to open the body of " + what);
+  }
+
+  NodeId child_block(const std::string& what) {
+    open_brace(what);
+    NodeId child = operation();
+    expect(TokenKind::RBrace, "to close the body of " + what);
+    return child;
+  }
+
+  Size size() {
+    Size s;
+    s.relative = accept(TokenKind::Tilde);
+    s.value = expression();
+    return s;
+  }
+
+  Expr axis_argument(const std::string& what) {
+    Expr e = expression();
+    if (auto v = e.literal(); v && !Value(*v).to_axis())
+      error(e.loc(), "the axis of " + what + " is " + Value(*v).describe(), "an axis is x, y or z (or 0, 1, 2)");
+    return e;
+  }
+
+  NodeId operation() {
+    const Token& t = peek();
+    if (t.kind != TokenKind::Identifier) {
+      error(t.loc, "expected an operation, found " + describe(t),
+            "operations are split, repeat, repeatN, I(name), nil, T, S, R, comp, colour or a rule label");
+    }
+    const std::string_view word = t.text;
+    const SourceLoc loc = t.loc;
+    next();
+    if (word == "split") {
+      expect(TokenKind::LParen, "after split");
+      Split s;
+      s.axis = axis_argument("split");
+      expect(TokenKind::RParen, "after the axis of split");
+      open_brace("split");
+      do {
+        SplitPart part;
+        part.size = size();
+        expect(TokenKind::Colon, "between a split size and its operation");
+        part.child = operation();
+        s.parts.push_back(std::move(part));
+      } while (accept(TokenKind::Pipe));
+      expect(TokenKind::RBrace, "or '|' after a split part");
+      return add(std::move(s), loc);
+    }
+    if (word == "repeat") {
+      expect(TokenKind::LParen, "after repeat");
+      Repeat r;
+      r.axis = axis_argument("repeat");
+      if (accept(TokenKind::Comma)) {
+        r.size = expression();
+        expect(TokenKind::RParen, "after the tile size of repeat");
+        r.child = child_block("repeat");
+      } else {
+        expect(TokenKind::RParen, "after the axis of repeat");
+        open_brace("repeat");
+        if (accept(TokenKind::Tilde))
+          error(peek().loc, "a repeat's tile size is absolute", "write repeat(x, 2){ op } without '~'");
+        r.size = expression();
+        expect(TokenKind::Colon, "between the tile size and the operation of repeat");
+        r.child = operation();
+        expect(TokenKind::RBrace, "to close the body of repeat");
+      }
+      return add(std::move(r), loc);
+    }
+    if (word == "repeatN") {
+      expect(TokenKind::LParen, "after repeatN");
+      RepeatN r;
+      r.axis = axis_argument("repeatN");
+      expect(TokenKind::Comma, "between the axis and the count of repeatN");
+      r.count = expression();
+      expect(TokenKind::RParen, "after the count of repeatN");
+      r.child = child_block("repeatN");
+      return add(std::move(r), loc);
+    }
+    if (word == "I") {
+      expect(TokenKind::LParen, "after I");
+      const Token& name = next();
+      std::string label;
+      if (name.kind == TokenKind::Identifier)
+        label = std::string(name.text);
+      else if (name.kind == TokenKind::String && !name.value.empty())
+        label = name.value;
+      else
+        error(name.loc, "expected a primitive name in I(...), found " + describe(name), "for example I(rect)");
+      expect(TokenKind::RParen, "after the primitive name");
+      return add(Primitive{g_.label_id(label)}, loc);
+    }
+    if (word == "nil") return add(Nil{}, loc);
+    if (word == "T" || word == "S") {
+      expect(TokenKind::LParen, std::string("after ") + std::string(word));
+      std::array<Size, 3> sizes;
+      for (int i = 0; i < 3; ++i) {
+        if (i) expect(TokenKind::Comma, "between the three values of " + std::string(word));
+        sizes[i] = size();
+      }
+      expect(TokenKind::RParen, "after the three values of " + std::string(word));
+      const NodeId child = child_block(std::string(word));
+      if (word == "T") return add(Translate{sizes, child}, loc);
+      return add(Scale{sizes, child}, loc);
+    }
+    if (word == "R") {
+      expect(TokenKind::LParen, "after R");
+      Rotate r;
+      r.axis = axis_argument("R");
+      expect(TokenKind::Comma, "between the axis and the angle of R");
+      r.angle = expression();
+      expect(TokenKind::RParen, "after the angle of R");
+      r.child = child_block("R");
+      return add(std::move(r), loc);
+    }
+    if (word == "comp") {
+      expect(TokenKind::LParen, "after comp");
+      const Token& f = expect(TokenKind::Identifier, "in comp(f)");
+      if (f.text != "f") error(f.loc, "comp splits into faces: write comp(f)");
+      expect(TokenKind::RParen, "after comp(f");
+      open_brace("comp");
+      Comp c;
+      do {
+        const Token& face = expect(TokenKind::Identifier, "(a face: top, bottom, front, back, left or right)");
+        CompPart part;
+        if (!find_face(face.text, part.face))
+          error(face.loc, "'" + std::string(face.text) + "' is not a face", "faces are top, bottom, front, back, left, right");
+        for (const auto& p : c.parts)
+          if (p.face == part.face) error(face.loc, "the face '" + std::string(face.text) + "' is listed twice");
+        expect(TokenKind::Colon, "between a face and its operation");
+        part.child = operation();
+        c.parts.push_back(part);
+      } while (accept(TokenKind::Pipe));
+      expect(TokenKind::RBrace, "or '|' after a comp part");
+      return add(std::move(c), loc);
+    }
+    if (word == "colour" || word == "color") return colour(loc);
+    return call(t, loc);
+  }
+
+  NodeId colour(SourceLoc loc) {
+    expect(TokenKind::LParen, "after colour");
+    Colour c;
+    const Token& first = peek();
+    double rgb[3];
+    if (first.kind == TokenKind::Identifier && peek(1).kind == TokenKind::RParen &&
+        find_named_colour(first.text, rgb)) {
+      next();
+      c = {Expr::number(rgb[0], first.loc), Expr::number(rgb[1], first.loc), Expr::number(rgb[2], first.loc)};
+    } else if (first.kind == TokenKind::String) {
+      next();
+      if (!parse_hex_colour(first.value, rgb))
+        error(first.loc, "'" + first.value + "' is not a colour", "write colour(\"#rrggbb\"), colour(red) or colour(r, g, b)");
+      c = {Expr::number(rgb[0], first.loc), Expr::number(rgb[1], first.loc), Expr::number(rgb[2], first.loc)};
+    } else if (first.kind == TokenKind::Identifier && peek(1).kind == TokenKind::RParen && !is_value_name(first.text)) {
+      std::vector<std::string> names;
+      for (const auto& n : kColours) names.emplace_back(n.name);
+      error(first.loc, "unknown colour '" + std::string(first.text) + "'", suggest(first.text, names, "the colours"));
+    } else {
+      c.red = expression();
+      expect(TokenKind::Comma, "between colour components (r, g, b from 0 to 1)");
+      c.green = expression();
+      expect(TokenKind::Comma, "between colour components (r, g, b from 0 to 1)");
+      c.blue = expression();
+    }
+    expect(TokenKind::RParen, "after the colour");
+    return add(std::move(c), loc);
+  }
+
+  static bool parse_hex_colour(const std::string& s, double rgb[3]) {
+    if (s.size() != 7 || s[0] != '#') return false;
+    for (int i = 0; i < 3; ++i) {
+      unsigned v = 0;
+      for (int k = 0; k < 2; ++k) {
+        const char c = s[1 + 2 * i + k];
+        unsigned d;
+        if (c >= '0' && c <= '9') d = unsigned(c - '0');
+        else if (c >= 'a' && c <= 'f') d = unsigned(c - 'a' + 10);
+        else if (c >= 'A' && c <= 'F') d = unsigned(c - 'A' + 10);
+        else return false;
+        v = v * 16 + d;
+      }
+      rgb[i] = v / 255.0;
+    }
+    return true;
+  }
+
+  bool is_value_name(std::string_view n) const {
+    if (params_)
+      for (const auto& p : *params_)
+        if (p == n) return true;
+    return g_.find_constant(n).has_value();
+  }
+
+  NodeId call(const Token& name, SourceLoc loc) {
+    const std::string label(name.text);
+    auto it = labels_.find(label);
+    if (it == labels_.end()) {
+      error(name.loc, "unknown rule '" + label + "'", suggest(label, rule_names_, "the rules"));
+    }
+    Call c;
+    c.rule = it->second;
+    if (accept(TokenKind::LParen)) {
+      if (!accept(TokenKind::RParen)) {
+        do c.args.push_back(expression());
+        while (accept(TokenKind::Comma));
+        expect(TokenKind::RParen, "to close the arguments of '" + label + "'");
+      }
+    }
+    pending_calls_.push_back({c.rule, c.args.size(), name.loc});
+    check_call(pending_calls_.back());
+    return add(std::move(c), loc);
+  }
+
+  struct PendingCall {
+    RuleId rule;
+    std::size_t args;
+    SourceLoc loc;
+  };
+
+  // The callee's parameter count is known once its first rule line has been
+  // read; calls read before that are checked when the file is done.
+  void check_call(const PendingCall& c) const {
+    const int expected = declared_params_[c.rule];
+    if (expected < 0 || static_cast<std::size_t>(expected) == c.args) return;
+    const Rule& r = g_.rules[c.rule];
+    std::string sig = r.label;
+    if (!r.params.empty()) {
+      sig += "(";
+      for (std::size_t i = 0; i < r.params.size(); ++i) sig += (i ? ", " : "") + r.params[i];
+      sig += ")";
+    }
+    error(c.loc,
+          "'" + r.label + "' takes " + std::to_string(expected) + " argument" + (expected == 1 ? "" : "s") + ", given " +
+              std::to_string(c.args),
+          "it is defined at " + std::to_string(r.loc.line) + ":" + std::to_string(r.loc.column) + " as " + sig);
+  }
+
+  // ---- expressions ----
+  Expr expression() { return binary_level(0); }
+
+  struct Level {
+    TokenKind token;
+    BinaryOp op;
+  };
+  // Binary operator levels, loosest first.
+  static const std::vector<std::vector<Level>>& levels() {
+    static const std::vector<std::vector<Level>> table{
+        {{TokenKind::OrOr, BinaryOp::Or}},
+        {{TokenKind::AndAnd, BinaryOp::And}},
+        {{TokenKind::Equal, BinaryOp::Eq}, {TokenKind::NotEqual, BinaryOp::Ne}},
+        {{TokenKind::Less, BinaryOp::Lt},
+         {TokenKind::LessEqual, BinaryOp::Le},
+         {TokenKind::Greater, BinaryOp::Gt},
+         {TokenKind::GreaterEqual, BinaryOp::Ge}},
+        {{TokenKind::Plus, BinaryOp::Add}, {TokenKind::Minus, BinaryOp::Sub}},
+        {{TokenKind::Star, BinaryOp::Mul}, {TokenKind::Slash, BinaryOp::Div}, {TokenKind::Percent, BinaryOp::Mod}},
+    };
+    return table;
+  }
+
+  Expr binary_level(std::size_t level) {
+    if (level == levels().size()) return unary();
+    Expr lhs = binary_level(level + 1);
+    while (true) {
+      const Token& t = peek();
+      const Level* match = nullptr;
+      for (const auto& l : levels()[level])
+        if (l.token == t.kind) match = &l;
+      if (!match) return lhs;
+      next();
+      Expr rhs = binary_level(level + 1);
+      check_operand(lhs, *match);
+      check_operand(rhs, *match);
+      lhs = Expr::binary(match->op, std::move(lhs), std::move(rhs), t.loc);
+    }
+  }
+
+  // Axes take part only in == and !=; an axis literal anywhere else is a type
+  // error that can be reported now rather than at every derivation.
+  void check_operand(const Expr& e, const Level& l) const {
+    if (l.op == BinaryOp::Eq || l.op == BinaryOp::Ne) return;
+    if (e.node(e.root()).kind == ExprKind::Axis)
+      error(e.loc(), std::string("'") + operator_text(l.op) + "' expects numbers, found the axis " +
+                         axis_name(static_cast<Axis>(e.node(e.root()).op)),
+            "axes can only be compared with == and !=");
+  }
+
+  Expr unary() {
+    const Token& t = peek();
+    if (t.kind == TokenKind::Minus || t.kind == TokenKind::Bang) {
+      next();
+      Expr operand = unary();
+      if (operand.node(operand.root()).kind == ExprKind::Axis)
+        error(operand.loc(), std::string("'") + std::string(t.text) + "' expects a number, found an axis");
+      return Expr::unary(t.kind == TokenKind::Minus ? UnaryOp::Neg : UnaryOp::Not, std::move(operand), t.loc);
+    }
+    if (t.kind == TokenKind::Tilde)
+      error(t.loc, "'~' marks a relative size and must come first", "write ~(a + b) : op, not a + ~b");
+    return primary();
+  }
+
+  Expr primary() {
+    const Token& t = next();
+    if (t.kind == TokenKind::Number) return Expr::number(t.number, t.loc);
+    if (t.kind == TokenKind::LParen) {
+      Expr e = expression();
+      expect(TokenKind::RParen, "to close '(' at " + std::to_string(t.loc.line) + ":" + std::to_string(t.loc.column));
+      return e;
+    }
+    if (t.kind != TokenKind::Identifier) {
+      error(t.loc, "expected a value, found " + describe(t), "values are numbers, names, x y z, pi, or function calls");
+    }
+    const std::string_view n = t.text;
+    if (peek().kind == TokenKind::LParen) {
+      auto f = find_function(n);
+      if (!f) {
+        std::vector<std::string> names;
+        for (const auto& info : function_table()) names.emplace_back(info.name);
+        error(t.loc, "unknown function '" + std::string(n) + "'", suggest(n, names, "the functions"));
+      }
+      next();
+      std::vector<Expr> args;
+      if (!accept(TokenKind::RParen)) {
+        do args.push_back(expression());
+        while (accept(TokenKind::Comma));
+        expect(TokenKind::RParen, "to close the arguments of " + std::string(n));
+      }
+      check_arity(*f, args.size(), t);
+      for (const auto& a : args)
+        if (a.node(a.root()).kind == ExprKind::Axis)
+          error(a.loc(), std::string(n) + " expects numbers, found an axis");
+      return Expr::call(*f, std::move(args), t.loc);
+    }
+    if (params_) {
+      for (std::size_t i = 0; i < params_->size(); ++i)
+        if ((*params_)[i] == n) return Expr::param(static_cast<std::uint32_t>(i), t.loc);
+    }
+    if (auto c = g_.find_constant(n)) return Expr::constant(*c, t.loc);
+    if (n == "x") return Expr::axis(Axis::X, t.loc);
+    if (n == "y") return Expr::axis(Axis::Y, t.loc);
+    if (n == "z") return Expr::axis(Axis::Z, t.loc);
+    if (n == "pi") return Expr::number(std::numbers::pi, t.loc);
+    if (n == "rand") return Expr::call(Function::Rand, {}, t.loc);
+    if (find_function(n))
+      error(t.loc, "the function '" + std::string(n) + "' needs its arguments", "for example " + std::string(n) + "(1, 2)");
+    std::vector<std::string> known;
+    if (params_) known = *params_;
+    for (const auto& c : g_.constants) known.push_back(c.name);
+    std::string hint = suggest(n, known, "the names in scope here");
+    if (labels_.count(std::string(n))) hint += " ('" + std::string(n) + "' is a rule, not a value)";
+    if (!params_) hint += "; a constant can use only the constants defined above it";
+    error(t.loc, "unknown name '" + std::string(n) + "'", hint);
+  }
+
+  void check_arity(Function f, std::size_t n, const Token& t) const {
+    const FunctionInfo& info = function_info(f);
+    bool ok = static_cast<int>(n) >= info.min_args && (info.max_args < 0 || static_cast<int>(n) <= info.max_args);
+    if (f == Function::Rand) ok = n == 0 || n == 2;
+    if (ok) return;
+    std::string expected;
+    if (f == Function::Rand) expected = "0 or 2 arguments";
+    else if (info.max_args < 0) expected = "at least " + std::to_string(info.min_args) + " argument" + (info.min_args == 1 ? "" : "s");
+    else expected = std::to_string(info.min_args) + " argument" + (info.min_args == 1 ? "" : "s");
+    error(t.loc, std::string(info.name) + " takes " + expected + ", given " + std::to_string(n));
+  }
+
+  const std::string& source_;
+  std::vector<Token> tokens_;
+  std::size_t pos_ = 0;
+  Grammar g_;
+  std::map<std::string, RuleId> labels_;
+  std::vector<std::string> rule_names_;
+  std::vector<int> declared_params_;
+  std::vector<std::vector<Alternative>> alternatives_;
+  std::vector<PendingCall> pending_calls_;
+  const std::vector<std::string>* params_ = nullptr;
+  std::string start_label_;
+  SourceLoc start_loc_;
+
+  friend Grammar vern::parse_grammar(std::string_view, const std::string&);
+  void check_pending_calls() const {
+    for (const auto& c : pending_calls_) check_call(c);
+  }
+};
+
+}  // namespace
+
+bool find_named_colour(std::string_view name, double rgb[3]) {
+  for (const auto& c : kColours) {
+    if (c.name == name) {
+      rgb[0] = c.r, rgb[1] = c.g, rgb[2] = c.b;
+      return true;
+    }
+  }
+  return false;
+}
+
+Grammar parse_grammar(std::string_view text, const std::string& source_name) {
+  Parser p(text, source_name);
+  Grammar g = p.run();
+  p.check_pending_calls();
+  return g;
+}
+
+Grammar read_grammar_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    fail(ErrorKind::Io, path.string(), {}, "is a folder, not a grammar file", "name a .grm file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(ErrorKind::Io, path.string(), {}, "cannot open the grammar file", "check the path");
+  std::ostringstream buf;
+  buf << in.rdbuf();
+  return parse_grammar(buf.str(), path.string());
+}
+
+}  // namespace vern
