@@ -118,6 +118,9 @@ int run(int argc, char** argv) {
     else if (f == "glb") folder_format = Format::Glb;
     else usage("unknown --format '" + f + "'", "formats are obj, gltf and glb");
   }
+  std::error_code ec;
+  if (fs::exists(output, ec) && fs::equivalent(output, grammar_path, ec))
+    usage("the output " + output.string() + " is the grammar file itself", "choose another output path");
   const std::optional<Format> file_format = format_of_extension(output);
   const bool one_file = file_format.has_value();
   if (one_file && folder_format && *folder_format != *file_format)
@@ -125,9 +128,13 @@ int run(int argc, char** argv) {
   if (!one_file && output.has_extension() && !fs::is_directory(output))
     usage("cannot tell what to write to '" + output.string() + "'",
           "name a folder (ending in /) or a file ending in .obj, .gltf or .glb");
-  std::error_code ec;
-  if (fs::exists(output, ec) && fs::equivalent(output, grammar_path, ec))
-    usage("the output " + output.string() + " is the grammar file itself", "choose another output path");
+  if (one_file) {
+    // Say so now, naming the path as given, rather than after deriving.
+    const fs::path folder = output.has_parent_path() ? output.parent_path() : fs::path(".");
+    if (!fs::is_directory(folder, ec))
+      throw Error(ErrorKind::Io, output.string() + ": error: cannot write here: " + folder.string() +
+                                     " is not an existing folder\n  hint: create the folder first, or choose another path");
+  }
 
   Grammar grammar = read_grammar_file(grammar_path);
   if (args.has("--start")) {

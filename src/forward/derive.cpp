@@ -41,6 +41,8 @@ class Deriver {
       out_.labels.emplace_back("rect");
     }
     warned_.resize(g.rules.size(), false);
+    params_.reserve(64);
+    out_.terminals.reserve(256);
   }
 
   void run() {
@@ -86,7 +88,7 @@ class Deriver {
     if (g_.scope[0].empty()) return opt_.default_size;
     RandomStream rng(key);
     EvalContext ctx{nullptr, constants_.data(), &rng};
-    glm::dvec3 size;
+    glm::dvec3 size(0.0);
     for (int i = 0; i < 3; ++i) {
       try {
         size[i] = evaluate_number(g_.scope[i], ctx, "an @scope size");
@@ -99,9 +101,7 @@ class Deriver {
     return size;
   }
 
-  EvalContext context(RandomStream& rng) const {
-    return {chain_.empty() ? nullptr : params_.data() + chain_.back().params, constants_.data(), &rng};
-  }
+  EvalContext context(RandomStream& rng) const { return {params_.data() + params_base_, constants_.data(), &rng}; }
 
   double number(const Expr& e, RandomStream& rng, const char* what) {
     try {
@@ -249,7 +249,10 @@ class Deriver {
       params_.push_back(v);
     }
     chain_.push_back({op.rule, base, n.loc});
+    const std::size_t caller_base = params_base_;
+    params_base_ = base;
     node(g_.rules[op.rule].body, s, 0, key);
+    params_base_ = caller_base;
     chain_.pop_back();
     params_.resize(base);
   }
@@ -287,6 +290,7 @@ class Deriver {
   LabelId rect_label_ = 0;
   std::vector<Value> constants_;
   std::vector<Value> params_;
+  std::size_t params_base_ = 0;  // the running rule's first argument in params_
   std::vector<Frame> chain_;
   std::vector<double> scratch_;
   std::vector<bool> warned_;
@@ -295,8 +299,11 @@ class Deriver {
 
 void Deriver::node(NodeId id, const Scope& s, std::uint64_t slot, std::uint64_t parent_key) {
   const Node& n = g_.node(id);
-  const std::uint64_t key = child_key(parent_key, slot);
   count_operation(n.loc);
+  // Leaves draw nothing and have no children: no key to compute.
+  if (const auto* p = std::get_if<Primitive>(&n.op)) return emit(p->label, s, n.loc);
+  if (std::holds_alternative<Nil>(n.op)) return;
+  const std::uint64_t key = child_key(parent_key, slot);
   RandomStream rng(key);
   switch (n.op.index()) {
     case 0: return split(*std::get_if<Split>(&n.op), s, key, rng);
@@ -326,8 +333,6 @@ void Deriver::node(NodeId id, const Scope& s, std::uint64_t slot, std::uint64_t 
     }
     case 3: return choose(*std::get_if<Choose>(&n.op), n, s, key, rng);
     case 4: return call(*std::get_if<Call>(&n.op), n, s, key, rng);
-    case 5: return emit(std::get_if<Primitive>(&n.op)->label, s, n.loc);
-    case 6: return;  // nil
     case 7: {
       const auto& op = *std::get_if<Translate>(&n.op);
       glm::dvec3 d;

@@ -144,11 +144,15 @@ class Evaluator {
 
 Value evaluate(const Expr& e, const EvalContext& ctx) {
   const ExprNode& root = e.node(e.root());
-  if (root.kind == ExprKind::Number) return root.number;  // the common case: a literal
-  return Evaluator(e, ctx).at(e.root());
+  switch (root.kind) {  // the common cases, without setting up an Evaluator
+    case ExprKind::Number: return root.number;
+    case ExprKind::Param: return ctx.params[root.index];
+    case ExprKind::Constant: return ctx.constants[root.index];
+    default: return Evaluator(e, ctx).at(e.root());
+  }
 }
 
-double evaluate_number(const Expr& e, const EvalContext& ctx, const char* what) {
+double evaluate_number_slow(const Expr& e, const EvalContext& ctx, const char* what) {
   const Value v = evaluate(e, ctx);
   if (!v.is_number())
     throw EvaluationError{e.loc(), std::string(what) + " must be a number, found " + v.describe(), {}};
@@ -157,7 +161,7 @@ double evaluate_number(const Expr& e, const EvalContext& ctx, const char* what) 
   return v.number();
 }
 
-Axis evaluate_axis(const Expr& e, const EvalContext& ctx, const char* what) {
+Axis evaluate_axis_slow(const Expr& e, const EvalContext& ctx, const char* what) {
   const Value v = evaluate(e, ctx);
   if (auto a = v.to_axis()) return *a;
   throw EvaluationError{e.loc(), std::string(what) + " must be an axis, found " + v.describe(),

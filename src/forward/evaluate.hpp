@@ -24,11 +24,24 @@ struct EvalContext {
 
 Value evaluate(const Expr& e, const EvalContext& ctx);
 
+// The general cases of the two functions below.
+double evaluate_number_slow(const Expr& e, const EvalContext& ctx, const char* what);
+Axis evaluate_axis_slow(const Expr& e, const EvalContext& ctx, const char* what);
+
 // A number that must be finite; `what` names it in the message ("the size
-// of a split part"). Axes and NaN/inf are EvaluationErrors.
-double evaluate_number(const Expr& e, const EvalContext& ctx, const char* what);
+// of a split part"). Axes and NaN/inf are EvaluationErrors. Literals, most
+// of what grammars hold, are answered inline.
+inline double evaluate_number(const Expr& e, const EvalContext& ctx, const char* what) {
+  const ExprNode& root = e.nodes().back();
+  if (root.kind == ExprKind::Number && e.nodes().size() == 1) return root.number;
+  return evaluate_number_slow(e, ctx, what);
+}
 
 // An axis (x/y/z or 0/1/2).
-Axis evaluate_axis(const Expr& e, const EvalContext& ctx, const char* what);
+inline Axis evaluate_axis(const Expr& e, const EvalContext& ctx, const char* what) {
+  const ExprNode& root = e.nodes().back();
+  if (root.kind == ExprKind::Axis) return static_cast<Axis>(root.op);
+  return evaluate_axis_slow(e, ctx, what);
+}
 
 }  // namespace vern

@@ -21,8 +21,10 @@ constexpr std::uint64_t mix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
+// One mix per step: parent keys are themselves mixed, so offsetting them by
+// an odd multiple of the slot gives independent-looking children.
 constexpr std::uint64_t child_key(std::uint64_t parent, std::uint64_t slot) {
-  return mix64(parent ^ mix64(slot + 0x632be59bd9b4e019ULL));
+  return mix64(parent + (slot + 1) * 0xd1b54a32d192ed03ULL);
 }
 
 // The key of derivation `seed`'s start node; constants and @scope use
@@ -34,7 +36,9 @@ class RandomStream {
   explicit RandomStream(std::uint64_t key) : key_(key) {}
 
   // Uniform in [0, 1): 53 random bits.
-  double uniform() { return static_cast<double>(mix64(key_ ^ mix64(++count_)) >> 11) * 0x1.0p-53; }
+  double uniform() {
+    return static_cast<double>(mix64(key_ + (++count_) * 0xaef17502108ef2d9ULL) >> 11) * 0x1.0p-53;
+  }
 
   // Uniform in [a, b].
   double uniform(double a, double b) { return a + (b - a) * uniform(); }

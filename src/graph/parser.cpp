@@ -38,6 +38,7 @@
 #include <sstream>
 
 #include "graph/lexer.hpp"
+#include "graph/reserved_words.hpp"
 #include "graph/suggest.hpp"
 
 namespace vern {
@@ -56,11 +57,6 @@ constexpr NamedColour kColours[] = {
     {"glass", 0.55, 0.75, 0.85}, {"slate", 0.35, 0.4, 0.45}, {"sand", 0.85, 0.75, 0.55},
 };
 
-const std::set<std::string_view> kOperationWords{"split", "repeat", "repeatN", "I", "nil", "T",
-                                                  "S",     "R",      "comp",    "colour", "color"};
-// Names that stand for values by themselves. Function names are free: a
-// name followed by '(' is the function, so the thesis's `tower(h, max)` reads.
-const std::set<std::string_view> kReservedNames{"x", "y", "z", "pi", "rand"};
 
 // One written rule line, before alternatives are gathered into a Choose.
 struct Alternative {
@@ -97,6 +93,7 @@ class Parser {
       end_of_line();
     }
     finish_rules();
+    for (const auto& c : pending_calls_) check_call(c);
     return std::move(g_);
   }
 
@@ -212,14 +209,14 @@ class Parser {
 
   void check_free_name(const Token& name, const std::string& what) const {
     const std::string_view n = name.text;
-    if (kReservedNames.count(n) || kOperationWords.count(n))
+    if (is_reserved_value_name(n))
       error(name.loc, "'" + std::string(n) + "' cannot name " + what + ": the language uses it", "choose another name");
   }
 
   void rule() {
     const Token& name = expect(TokenKind::Identifier, "at the start of a rule");
     const std::string label(name.text);
-    if (kOperationWords.count(label))
+    if (is_operation_word(label))
       error(name.loc, "'" + label + "' is an operation and cannot be a rule label", "choose another label");
     std::vector<std::string> params;
     if (accept(TokenKind::LParen)) {
@@ -685,10 +682,6 @@ class Parser {
   std::string start_label_;
   SourceLoc start_loc_;
 
-  friend Grammar vern::parse_grammar(std::string_view, const std::string&);
-  void check_pending_calls() const {
-    for (const auto& c : pending_calls_) check_call(c);
-  }
 };
 
 }  // namespace
@@ -704,10 +697,7 @@ bool find_named_colour(std::string_view name, double rgb[3]) {
 }
 
 Grammar parse_grammar(std::string_view text, const std::string& source_name) {
-  Parser p(text, source_name);
-  Grammar g = p.run();
-  p.check_pending_calls();
-  return g;
+  return Parser(text, source_name).run();
 }
 
 Grammar read_grammar_file(const std::filesystem::path& path) {

@@ -1,0 +1,223 @@
+// Reading labelled OBJ: objects, corner forms, re-indexing, and the errors
+// a user sees for broken files.
+#include "forward/obj_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "graph/error.hpp"
+
+namespace vern {
+namespace {
+
+std::vector<ObjObject> parse(const std::string& text) {
+  std::istringstream in(text);
+  return read_obj(in, "test.obj");
+}
+
+// The message of the error that reading text throws (empty, and a test
+// failure, when it reads fine).
+std::string error_of(const std::string& text) {
+  try {
+    parse(text);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Input) << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << "no error for:\n" << text;
+  return {};
+}
+
+TEST(ObjReader, ObjectsOwnTheirVerticesReindexed) {
+  const auto objects = parse(
+      "# two labelled parts sharing the global vertex list\n"
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 5 5 5\n"
+      "vt 0 0\nvt 1 0\nvt 1 1\n"
+      "vn 0 0 1\n"
+      "o wall\n"
+      "f 1/1/1 2/2/1 3/3/1\n"
+      "o window.001\n"
+      "f 5//1 3//1 4//1\n");
+  ASSERT_EQ(objects.size(), 2u);
+  EXPECT_EQ(objects[0].name, "wall");
+  EXPECT_EQ(objects[0].line, 11u);
+  EXPECT_EQ(objects[1].name, "window.001");  // Blender's suffix is kept
+  EXPECT_EQ(objects[1].line, 13u);
+
+  const Mesh& wall = objects[0].mesh;
+  EXPECT_EQ(wall.positions.size(), 3u);
+  EXPECT_EQ(wall.uvs.size(), 3u);
+  EXPECT_EQ(wall.normals.size(), 1u);
+  ASSERT_EQ(wall.face_sizes, std::vector<std::uint32_t>{3});
+  EXPECT_EQ(wall.corners[2], (Mesh::Corner{2, 0, 2}));
+  EXPECT_EQ(wall.uvs[2], glm::dvec2(1, 1));
+
+  // Only the vertices it uses, numbered in order of first use.
+  const Mesh& window = objects[1].mesh;
+  ASSERT_EQ(window.positions.size(), 3u);
+  EXPECT_EQ(window.positions[0], glm::dvec3(5, 5, 5));
+  EXPECT_EQ(window.positions[1], glm::dvec3(1, 1, 0));
+  EXPECT_EQ(window.positions[2], glm::dvec3(0, 1, 0));
+  EXPECT_TRUE(window.uvs.empty());
+  EXPECT_EQ(window.corners[0], (Mesh::Corner{0, 0, Mesh::kNone}));
+  EXPECT_EQ(window.min_corner(), glm::dvec3(0, 1, 0));
+  EXPECT_EQ(window.max_corner(), glm::dvec3(5, 5, 5));
+}
+
+TEST(ObjReader, NegativeIndicesCountBackFromTheLatest) {
+  const auto objects = parse(
+      "o quad\n"
+      "v 0 0 0\nv 2 0 0\nv 2 3 0\nv 0 3 0\n"
+      "vt 0 0\nvt 1 1\n"
+      "f -4/-2 -3/-1 -2/-1 -1/-2\n");
+  ASSERT_EQ(objects.size(), 1u);
+  const Mesh& m = objects[0].mesh;
+  ASSERT_EQ(m.face_sizes, std::vector<std::uint32_t>{4});
+  EXPECT_EQ(m.positions[1], glm::dvec3(2, 0, 0));
+  EXPECT_EQ(m.positions[3], glm::dvec3(0, 3, 0));
+  EXPECT_EQ(m.corners[0].uv, 0u);
+  EXPECT_EQ(m.corners[1].uv, 1u);
+  EXPECT_EQ(m.uvs[1], glm::dvec2(1, 1));
+}
+
+TEST(ObjReader, GroupsNameObjectsOnlyInFilesWithoutO) {
+  const std::string geometry = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const auto grouped = parse(geometry + "g roof\nf 1 2 3\ng wall\nf 3 2 1\n");
+  ASSERT_EQ(grouped.size(), 2u);
+  EXPECT_EQ(grouped[0].name, "roof");
+  EXPECT_EQ(grouped[1].name, "wall");
+
+  // With `o` present, groups (materials, smoothing sets) are ignored.
+  const auto objects = parse(geometry + "o house\ng roof\nf 1 2 3\ng wall\nf 3 2 1\n");
+  ASSERT_EQ(objects.size(), 1u);
+  EXPECT_EQ(objects[0].name, "house");
+  EXPECT_EQ(objects[0].mesh.face_sizes.size(), 2u);
+}
+
+TEST(ObjReader, FacesBeforeAnyNameFormAnUnnamedObject) {
+  const auto objects = parse("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 3\no door\nf 1 3 2\n");
+  ASSERT_EQ(objects.size(), 2u);
+  EXPECT_EQ(objects[0].name, "");
+  EXPECT_EQ(objects[0].line, 5u);  // its first face
+  EXPECT_EQ(objects[1].name, "door");
+}
+
+TEST(ObjReader, RepeatedNamesStaySeparateAndEmptyObjectsAreDropped) {
+  const auto objects =
+      parse("v 0 0 0\nv 1 0 0\nv 0 1 0\no window\nf 1 2 3\no empty\no window\nf 1 2 3\n");
+  ASSERT_EQ(objects.size(), 2u);
+  EXPECT_EQ(objects[0].name, "window");
+  EXPECT_EQ(objects[1].name, "window");
+  EXPECT_EQ(objects[1].line, 7u);
+}
+
+TEST(ObjReader, IgnoresMaterialsSmoothingLinesCommentsAndLineEndings) {
+  const auto objects = parse(
+      "\xEF\xBB\xBF# exported\r\n"
+      "mtllib house.mtl\r\n"
+      "o  big wall  # trailing comment\r\n"
+      "v 0 0 0\r\nv +1 0 0 1.0\r\nv 0 1e0 0 0.5 0.5 0.5\r\n"
+      "usemtl plaster\r\n"
+      "s off\r\n"
+      "l 1 2\r\n"
+      "p 1\r\n"
+      "f 1 \\\r\n 2 3\r\n");
+  ASSERT_EQ(objects.size(), 1u);
+  EXPECT_EQ(objects[0].name, "big wall");
+  ASSERT_EQ(objects[0].mesh.face_sizes, std::vector<std::uint32_t>{3});
+  EXPECT_EQ(objects[0].mesh.positions[1], glm::dvec3(1, 0, 0));
+  EXPECT_EQ(objects[0].mesh.positions[2], glm::dvec3(0, 1, 0));
+}
+
+TEST(ObjReader, ErrorsNameFileLineAndColumn) {
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  std::string e = error_of(tri + "o a\nf 1 2 4\n");
+  EXPECT_NE(e.find("test.obj:5:7: error:"), std::string::npos) << e;
+  EXPECT_NE(e.find("vertex 4, but 3 vertices are defined"), std::string::npos) << e;
+  EXPECT_NE(e.find("hint:"), std::string::npos) << e;
+
+  e = error_of(tri + "f 1 0 2\n");
+  EXPECT_NE(e.find("test.obj:4:5:"), std::string::npos) << e;
+  EXPECT_NE(e.find("index of 0"), std::string::npos) << e;
+
+  e = error_of(tri + "f -1 -2 -4\n");
+  EXPECT_NE(e.find("test.obj:4:"), std::string::npos) << e;
+
+  e = error_of(tri + "vn 0 0 1\nf 1//2 2//1 3//1\n");
+  EXPECT_NE(e.find("normal 2"), std::string::npos) << e;
+
+  e = error_of("v 0 zero 0\n");
+  EXPECT_NE(e.find("test.obj:1:5:"), std::string::npos) << e;
+  EXPECT_NE(e.find("'zero'"), std::string::npos) << e;
+
+  e = error_of("v 0 1.5x 0\n");
+  EXPECT_NE(e.find("'1.5x'"), std::string::npos) << e;
+
+  e = error_of(tri + "v nan 0 0\n");
+  EXPECT_NE(e.find("test.obj:4:3:"), std::string::npos) << e;
+  EXPECT_NE(e.find("not a finite number"), std::string::npos) << e;
+
+  e = error_of("vt inf\n");
+  EXPECT_NE(e.find("not a finite number"), std::string::npos) << e;
+
+  e = error_of("v 1 2\n");
+  EXPECT_NE(e.find("needs 3 numbers"), std::string::npos) << e;
+
+  e = error_of(tri + "f 1 2\n");
+  EXPECT_NE(e.find("test.obj:4:1:"), std::string::npos) << e;
+  EXPECT_NE(e.find("at least 3 corners"), std::string::npos) << e;
+
+  e = error_of(tri + "f 1/x 2 3\n");
+  EXPECT_NE(e.find("'x'"), std::string::npos) << e;
+}
+
+TEST(ObjReader, RejectsWhatIsNotObjText) {
+  std::string glb("glTF\x02\0\0\0", 8);
+  std::string e = error_of(glb + "\nmore");
+  EXPECT_NE(e.find("test.obj:1:"), std::string::npos) << e;
+  EXPECT_NE(e.find("NUL"), std::string::npos) << e;
+
+  e = error_of("# a comment first is fine\nsolid cube\n  facet normal 0 0 1\n");
+  EXPECT_NE(e.find("test.obj:2:1:"), std::string::npos) << e;
+  EXPECT_NE(e.find("'solid'"), std::string::npos) << e;
+
+  // Once the file has shown itself to be OBJ, unknown extensions pass.
+  EXPECT_EQ(parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nvendor_thing 1 2\no a\nf 1 2 3\n").size(), 1u);
+}
+
+TEST(ObjReader, MissingFileAndFolderAreIoErrors) {
+  const auto dir = std::filesystem::temp_directory_path();
+  try {
+    read_obj_file(dir / "vern-no-such-file.obj");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Io);
+    EXPECT_NE(std::string(e.what()).find("vern-no-such-file.obj"), std::string::npos);
+  }
+  try {
+    read_obj_file(dir);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Io);
+    EXPECT_NE(std::string(e.what()).find("folder"), std::string::npos);
+  }
+}
+
+TEST(ObjReader, ReadsManyObjectsLinearly) {
+  // 20000 one-triangle objects: re-indexing must stay linear, not quadratic.
+  std::string text;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    text += "o part" + std::to_string(i) + "\nv " + std::to_string(i) + " 0 0\nv 0 1 0\nv 0 0 1\nf -3 -2 -1\n";
+  }
+  const auto objects = parse(text);
+  ASSERT_EQ(objects.size(), static_cast<std::size_t>(n));
+  EXPECT_EQ(objects.back().name, "part19999");
+  EXPECT_EQ(objects.back().mesh.positions.size(), 3u);
+  EXPECT_EQ(objects.back().mesh.positions[0], glm::dvec3(n - 1, 0, 0));
+}
+
+}  // namespace
+}  // namespace vern
