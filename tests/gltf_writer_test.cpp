@@ -11,22 +11,15 @@
 
 #include "forward/palette.hpp"
 #include "graph/error.hpp"
+#include "support/scene_helpers.hpp"
 
 namespace vern {
 namespace {
 
 namespace fs = std::filesystem;
 
-const glm::dmat3 kQuarterTurnZ(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1));
-
-Terminal terminal(LabelId label, glm::dvec3 origin, glm::dvec3 size, glm::dmat3 frame = glm::dmat3(1.0)) {
-  Terminal t;
-  t.label = label;
-  t.scope.origin = origin;
-  t.scope.size = size;
-  t.scope.frame = frame;
-  return t;
-}
+using test::kQuarterTurnZ;
+using test::terminal;
 
 // Three walls and a turned window; a second variant with one more wall.
 Scene street() {

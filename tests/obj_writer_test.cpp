@@ -13,23 +13,15 @@
 
 #include "forward/obj_reader.hpp"
 #include "graph/error.hpp"
+#include "support/scene_helpers.hpp"
 
 namespace vern {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A scope's frame turned a quarter about z: its x axis points along world y.
-const glm::dmat3 kQuarterTurnZ(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1));
-
-Terminal terminal(LabelId label, glm::dvec3 origin, glm::dvec3 size, glm::dmat3 frame = glm::dmat3(1.0)) {
-  Terminal t;
-  t.label = label;
-  t.scope.origin = origin;
-  t.scope.size = size;
-  t.scope.frame = frame;
-  return t;
-}
+using test::kQuarterTurnZ;
+using test::terminal;
 
 // A wall box and a window on a frame turned about z.
 Scene two_terminal_scene() {

@@ -33,7 +33,14 @@ Axis evaluate_axis_slow(const Expr& e, const EvalContext& ctx, const char* what)
 // of what grammars hold, are answered inline.
 inline double evaluate_number(const Expr& e, const EvalContext& ctx, const char* what) {
   const ExprNode& root = e.nodes().back();
-  if (root.kind == ExprKind::Number && e.nodes().size() == 1) return root.number;
+  if (root.size == 1) {  // a literal, a parameter or a constant
+    if (root.kind == ExprKind::Number) return root.number;
+    const Value* v = root.kind == ExprKind::Param ? &ctx.params[root.index]
+                     : root.kind == ExprKind::Constant ? &ctx.constants[root.index]
+                                                       : nullptr;
+    // NaN and inf fail the comparison and take the slow path's message.
+    if (v && v->is_number() && v->number() - v->number() == 0.0) return v->number();
+  }
   return evaluate_number_slow(e, ctx, what);
 }
 
