@@ -160,6 +160,18 @@ class Deriver {
 
   void node(NodeId id, const Scope& s, std::uint64_t slot_key, std::uint64_t key);
 
+  // Runs a child node. Leaves, the most common children, are handled here
+  // without a recursive call: a nil costs one count, a primitive one emit.
+  void child(NodeId id, const Scope& s, std::uint64_t slot, std::uint64_t key) {
+    const Node& n = g_.node(id);
+    if (const auto* p = std::get_if<Primitive>(&n.op)) {
+      count_operation(n.loc);
+      return emit(p->label, s, n.loc);
+    }
+    if (std::holds_alternative<Nil>(n.op)) return count_operation(n.loc);
+    node(id, s, slot, key);
+  }
+
   void split(const Split& op, const Scope& s, std::uint64_t key, RandomStream& rng) {
     const Axis a = axis(op.axis, rng, "the axis of split");
     const double length = s.size[static_cast<int>(a)];
@@ -179,7 +191,7 @@ class Deriver {
     for (std::size_t i = 0; i < op.parts.size(); ++i) {
       const double share = scratch_[base + i];
       const double len = op.parts[i].size.relative ? share * rel_unit : share * abs_scale;
-      if (len > 0) node(op.parts[i].child, s.slice(a, from, len), i, key);
+      if (len > 0) child(op.parts[i].child, s.slice(a, from, len), i, key);
       from += len;
     }
     scratch_.resize(base);
@@ -189,7 +201,7 @@ class Deriver {
     count_operation(loc, count);
     const double length = s.size[static_cast<int>(a)];
     const double tile = length / static_cast<double>(count);
-    for (std::uint64_t i = 0; i < count; ++i) node(child, s.slice(a, tile * static_cast<double>(i), tile), i, key);
+    for (std::uint64_t i = 0; i < count; ++i) this->child(child, s.slice(a, tile * static_cast<double>(i), tile), i, key);
   }
 
   void choose(const Choose& op, const Node& n, const Scope& s, std::uint64_t key, RandomStream& rng) {
