@@ -148,14 +148,8 @@ class Deriver {
     if (out_.terminals.size() >= opt_.limits.max_terminals)
       fail_here(ErrorKind::Limit, loc, "more than " + std::to_string(opt_.limits.max_terminals) + " terminals in one derivation",
                 "raise the limit with --max-terminals, or check the grammar for runaway recursion");
-    Terminal t;
-    t.label = label;
-    t.scope = s;
-    if (colour) {
-      t.coloured = true;
-      t.colour = *colour;
-    }
-    out_.terminals.push_back(t);
+    // Built in place: the scope is copied once, straight into the vector.
+    out_.terminals.push_back(Terminal{label, colour != nullptr, colour ? *colour : Rgb{}, s});
   }
 
   void node(NodeId id, const Scope& s, std::uint64_t slot_key, std::uint64_t key);

@@ -8,69 +8,99 @@ namespace vern {
 
 namespace {
 
-class Evaluator {
- public:
-  Evaluator(const Expr& e, const EvalContext& ctx) : e_(e), ctx_(ctx) {}
+// A tree walk over the flat node array. Numbers stay unboxed on the hot
+// path (num); Values, which may be axes, appear only where an axis can
+// stand: ==, !=, choice() and the top level (val).
+//
+// Operands are always evaluated left to right, so the random draws of
+// `rand() - rand()` happen in one order on every compiler.
+struct Evaluator {
+  const ExprNode* n;
+  const Expr& e;
+  const EvalContext& ctx;
 
-  Value at(std::size_t i) {
-    const ExprNode& n = e_.node(i);
-    switch (n.kind) {
-      case ExprKind::Number: return n.number;
-      case ExprKind::Axis: return Value::axis(static_cast<Axis>(n.op));
-      case ExprKind::Constant: return ctx_.constants[n.index];
-      case ExprKind::Param: return ctx_.params[n.index];
-      case ExprKind::Unary: {
-        const double v = number(i - 1, i);
-        return static_cast<UnaryOp>(n.op) == UnaryOp::Neg ? -v : (v == 0.0 ? 1.0 : 0.0);
+  [[noreturn]] void fail_at(std::size_t i, std::string message, std::string hint = {}) const {
+    SourceLoc loc = e.loc(i);
+    if (!loc.known()) loc = e.loc();
+    throw EvaluationError{loc, std::move(message), std::move(hint)};
+  }
+
+  [[noreturn]] void not_a_number(std::size_t i, const Value& v) const {
+    fail_at(i, "expected a number here, found " + v.describe(), "axes can only be compared with == and !=");
+  }
+
+  double num(std::size_t i) const {
+    const ExprNode& x = n[i];
+    switch (x.kind) {
+      case ExprKind::Number: return x.number;
+      case ExprKind::Param: {
+        const Value& v = ctx.params[x.index];
+        if (v.is_number()) return v.number();
+        not_a_number(i, v);
       }
-      case ExprKind::Binary: return binary(i, static_cast<BinaryOp>(n.op));
-      case ExprKind::Call: return call(i, static_cast<Function>(n.op));
+      case ExprKind::Constant: {
+        const Value& v = ctx.constants[x.index];
+        if (v.is_number()) return v.number();
+        not_a_number(i, v);
+      }
+      case ExprKind::Axis: not_a_number(i, Value::axis(static_cast<Axis>(x.op)));
+      case ExprKind::Unary: {
+        const double v = num(i - 1);
+        return static_cast<UnaryOp>(x.op) == UnaryOp::Neg ? -v : (v == 0.0 ? 1.0 : 0.0);
+      }
+      case ExprKind::Binary: return binary(i, static_cast<BinaryOp>(x.op));
+      case ExprKind::Call: {
+        if (static_cast<Function>(x.op) == Function::Choice) {
+          const Value v = choice(i);
+          if (v.is_number()) return v.number();
+          not_a_number(i, v);
+        }
+        return call(i, static_cast<Function>(x.op));
+      }
     }
     return 0.0;
   }
 
- private:
-  double number(std::size_t child, std::size_t parent) {
-    const Value v = at(child);
-    if (!v.is_number()) {
-      fail_at(e_.loc(child).known() ? e_.loc(child) : e_.loc(parent),
-              "expected a number here, found " + v.describe(), "axes can only be compared with == and !=");
+  Value val(std::size_t i) const {
+    const ExprNode& x = n[i];
+    switch (x.kind) {
+      case ExprKind::Axis: return Value::axis(static_cast<Axis>(x.op));
+      case ExprKind::Param: return ctx.params[x.index];
+      case ExprKind::Constant: return ctx.constants[x.index];
+      case ExprKind::Call:
+        if (static_cast<Function>(x.op) == Function::Choice) return choice(i);
+        return num(i);
+      default: return num(i);
     }
-    return v.number();
   }
 
-  [[noreturn]] void fail_at(SourceLoc loc, std::string message, std::string hint = {}) {
-    throw EvaluationError{loc.known() ? loc : e_.loc(), std::move(message), std::move(hint)};
-  }
-
-  Value binary(std::size_t i, BinaryOp op) {
+  double binary(std::size_t i, BinaryOp op) const {
     const std::size_t rhs = i - 1;
-    const std::size_t lhs = rhs - e_.node(rhs).size;
+    const std::size_t lhs = rhs - n[rhs].size;
     switch (op) {
-      case BinaryOp::And: return number(lhs, i) != 0.0 && number(rhs, i) != 0.0 ? 1.0 : 0.0;
-      case BinaryOp::Or: return number(lhs, i) != 0.0 || number(rhs, i) != 0.0 ? 1.0 : 0.0;
+      case BinaryOp::And: return num(lhs) != 0.0 && num(rhs) != 0.0 ? 1.0 : 0.0;
+      case BinaryOp::Or: return num(lhs) != 0.0 || num(rhs) != 0.0 ? 1.0 : 0.0;
       case BinaryOp::Eq:
       case BinaryOp::Ne: {
         // An axis equals the number that writes it (x == 0), so parameters
         // passed as 0/1/2 compare as the thesis grammars expect.
-        const Value a = at(lhs);
-        const Value b = at(rhs);
-        const bool equal = a.number() == b.number();
-        return (op == BinaryOp::Eq) == equal ? 1.0 : 0.0;
+        const Value a = val(lhs);
+        const Value b = val(rhs);
+        return (op == BinaryOp::Eq) == (a.number() == b.number()) ? 1.0 : 0.0;
       }
       default: break;
     }
-    const double a = number(lhs, i);
-    const double b = number(rhs, i);
+    const double a = num(lhs);
+    const double b = num(rhs);
     switch (op) {
       case BinaryOp::Add: return a + b;
       case BinaryOp::Sub: return a - b;
       case BinaryOp::Mul: return a * b;
       case BinaryOp::Div:
-        if (b == 0.0) fail_at(e_.loc(i), "division by zero (" + format_number(a) + " / 0)");
+        if (b == 0.0) fail_at(i, "division by zero (" + format_number(a) + " / 0)");
         return a / b;
       case BinaryOp::Mod:
-        if (b == 0.0) fail_at(e_.loc(i), "remainder by zero (" + format_number(a) + " % 0)");
+        if (b == 0.0) fail_at(i, "remainder by zero (" + format_number(a) + " % 0)");
         return std::fmod(a, b);
       case BinaryOp::Lt: return a < b ? 1.0 : 0.0;
       case BinaryOp::Le: return a <= b ? 1.0 : 0.0;
@@ -80,76 +110,88 @@ class Evaluator {
     }
   }
 
-  Value call(std::size_t i, Function f) {
-    std::size_t roots[8];
-    const std::size_t argc = e_.children(i, roots, 8);
-    auto arg = [&](std::size_t k) { return number(k < 8 ? roots[k] : nth_child(i, k), i); };
-    const SourceLoc loc = e_.loc(i);
+  // Roots of node i's children, in order; returns how many (at most 8
+  // stored: only min, max and choice take more, and they walk again).
+  std::size_t roots(std::size_t i, std::size_t* out) const { return e.children(i, out, 8); }
+  std::size_t nth(std::size_t i, std::size_t k, const std::size_t* r) const { return k < 8 ? r[k] : e.children(i)[k]; }
+
+  Value choice(std::size_t i) const {
+    std::size_t r[8];
+    const std::size_t argc = roots(i, r);
+    const auto k = static_cast<std::size_t>(std::floor(ctx.random->uniform() * static_cast<double>(argc)));
+    return val(nth(i, std::min(k, argc - 1), r));
+  }
+
+  double call(std::size_t i, Function f) const {
+    const std::size_t argc = n[i].argc;
+    // Fixed-arity functions find their arguments without a walk: the last
+    // argument ends right before the call, each one before the next.
+    if (argc == 1) {
+      const double v = num(i - 1);
+      switch (f) {
+        case Function::Abs: return std::abs(v);
+        case Function::Floor: return std::floor(v);
+        case Function::Ceil: return std::ceil(v);
+        case Function::Round: return std::round(v);
+        case Function::Sqrt:
+          if (v < 0) fail_at(i, "sqrt of a negative number (" + format_number(v) + ")");
+          return std::sqrt(v);
+        case Function::Sin: return std::sin(v);
+        case Function::Cos: return std::cos(v);
+        case Function::Min:
+        case Function::Max: return v;
+        default: break;
+      }
+    }
+    if (argc == 0) return ctx.random->uniform();  // rand()
+    std::size_t r[8];
+    roots(i, r);
     switch (f) {
       case Function::Min:
       case Function::Max: {
-        double best = arg(0);
-        for (std::size_t k = 1; k < argc; ++k) best = f == Function::Min ? std::min(best, arg(k)) : std::max(best, arg(k));
+        double best = num(r[0]);
+        for (std::size_t k = 1; k < argc; ++k) {
+          const double v = num(nth(i, k, r));
+          best = f == Function::Min ? std::min(best, v) : std::max(best, v);
+        }
         return best;
       }
-      case Function::Abs: return std::abs(arg(0));
-      case Function::Floor: return std::floor(arg(0));
-      case Function::Ceil: return std::ceil(arg(0));
-      case Function::Round: return std::round(arg(0));
-      case Function::Sqrt: {
-        const double v = arg(0);
-        if (v < 0) fail_at(loc, "sqrt of a negative number (" + format_number(v) + ")");
-        return std::sqrt(v);
-      }
-      case Function::Sin: return std::sin(arg(0));
-      case Function::Cos: return std::cos(arg(0));
       case Function::Rand: {
-        if (argc == 0) return ctx_.random->uniform();
-        const double a = arg(0), b = arg(1);
-        return ctx_.random->uniform(a, b);
+        const double a = num(r[0]);
+        const double b = num(r[1]);
+        return ctx.random->uniform(a, b);
       }
       case Function::RandInt: {
-        const double a = std::ceil(arg(0)), b = std::floor(arg(1));
-        if (b < a) fail_at(loc, "randint(" + format_number(a) + ", " + format_number(b) + ") has no whole number in range");
-        const double n = std::floor(ctx_.random->uniform() * (b - a + 1));
-        return std::min(a + n, b);
+        const double a = std::ceil(num(r[0]));
+        const double b = std::floor(num(r[1]));
+        if (b < a)
+          fail_at(i, "randint(" + format_number(a) + ", " + format_number(b) + ") has no whole number in range");
+        return std::min(a + std::floor(ctx.random->uniform() * (b - a + 1)), b);
       }
       case Function::Normal: {
-        const double mu = arg(0), sigma = arg(1);
-        if (sigma < 0) fail_at(loc, "normal() needs sigma >= 0, got " + format_number(sigma));
-        return mu + sigma * ctx_.random->normal();
+        const double mu = num(r[0]);
+        const double sigma = num(r[1]);
+        if (sigma < 0) fail_at(i, "normal() needs sigma >= 0, got " + format_number(sigma));
+        return mu + sigma * ctx.random->normal();
       }
       case Function::TNormal: {
-        const double mu = arg(0), sigma = arg(1), lo = arg(2), hi = arg(3);
-        if (sigma < 0) fail_at(loc, "tnormal() needs sigma >= 0, got " + format_number(sigma));
-        if (hi < lo) fail_at(loc, "tnormal() needs lo <= hi, got " + format_number(lo) + " > " + format_number(hi));
-        return ctx_.random->truncated_normal(mu, sigma, lo, hi);
+        const double mu = num(r[0]);
+        const double sigma = num(r[1]);
+        const double lo = num(r[2]);
+        const double hi = num(r[3]);
+        if (sigma < 0) fail_at(i, "tnormal() needs sigma >= 0, got " + format_number(sigma));
+        if (hi < lo) fail_at(i, "tnormal() needs lo <= hi, got " + format_number(lo) + " > " + format_number(hi));
+        return ctx.random->truncated_normal(mu, sigma, lo, hi);
       }
-      case Function::Choice: {
-        const auto k = static_cast<std::size_t>(std::floor(ctx_.random->uniform() * static_cast<double>(argc)));
-        const std::size_t pick = std::min(k, argc - 1);
-        return at(pick < 8 ? roots[pick] : nth_child(i, pick));
-      }
+      default: return 0.0;  // one-argument functions were answered above
     }
-    return 0.0;
   }
-
-  std::size_t nth_child(std::size_t i, std::size_t k) const { return e_.children(i)[k]; }
-
-  const Expr& e_;
-  const EvalContext& ctx_;
 };
 
 }  // namespace
 
 Value evaluate(const Expr& e, const EvalContext& ctx) {
-  const ExprNode& root = e.node(e.root());
-  switch (root.kind) {  // the common cases, without setting up an Evaluator
-    case ExprKind::Number: return root.number;
-    case ExprKind::Param: return ctx.params[root.index];
-    case ExprKind::Constant: return ctx.constants[root.index];
-    default: return Evaluator(e, ctx).at(e.root());
-  }
+  return Evaluator{e.nodes().data(), e, ctx}.val(e.root());
 }
 
 double evaluate_number_slow(const Expr& e, const EvalContext& ctx, const char* what) {
