@@ -29,6 +29,26 @@ Scope face_scope(const Scope& s, Face face) {
   return f;
 }
 
+// The per-part numbers of one split or choose: on the stack for the usual
+// handful of parts, on the heap beyond that. (A shared scratch vector cost
+// a capacity check per part and a resize per node on the hot path.)
+class PartValues {
+ public:
+  explicit PartValues(std::size_t n) : data_(inline_) {
+    if (n > kInline) {
+      heap_.resize(n);
+      data_ = heap_.data();
+    }
+  }
+  double& operator[](std::size_t i) { return data_[i]; }
+
+ private:
+  static constexpr std::size_t kInline = 16;
+  double inline_[kInline];
+  std::vector<double> heap_;
+  double* data_;
+};
+
 class Deriver {
  public:
   Deriver(const Grammar& g, const DeriveOptions& o, Derivation& out) : g_(g), opt_(o), out_(out) {
@@ -169,12 +189,12 @@ class Deriver {
   void split(const Split& op, const Scope& s, std::uint64_t key, RandomStream& rng) {
     const Axis a = axis(op.axis, rng, "the axis of split");
     const double length = s.size[static_cast<int>(a)];
-    const std::size_t base = scratch_.size();
+    PartValues share(op.parts.size());
     double absolute = 0, relative = 0;
-    for (const auto& part : op.parts) {
-      const double v = size_value(part.size, rng, "a split size");
-      scratch_.push_back(v);
-      (part.size.relative ? relative : absolute) += v;
+    for (std::size_t i = 0; i < op.parts.size(); ++i) {
+      const Size& size = op.parts[i].size;
+      share[i] = size_value(size, rng, "a split size");
+      (size.relative ? relative : absolute) += share[i];
     }
     // Absolute parts take what they ask for; relative parts share the rest.
     // When the absolute parts alone exceed the scope, they shrink in
@@ -183,12 +203,10 @@ class Deriver {
     const double rel_unit = (absolute < length && relative > 0) ? (length - absolute) / relative : 0.0;
     double from = 0;
     for (std::size_t i = 0; i < op.parts.size(); ++i) {
-      const double share = scratch_[base + i];
-      const double len = op.parts[i].size.relative ? share * rel_unit : share * abs_scale;
+      const double len = op.parts[i].size.relative ? share[i] * rel_unit : share[i] * abs_scale;
       if (len > 0) child(op.parts[i].child, s.slice(a, from, len), i, key);
       from += len;
     }
-    scratch_.resize(base);
   }
 
   void tiles(Axis a, const Scope& s, std::uint64_t count, NodeId child, SourceLoc loc, std::uint64_t key) {
@@ -199,19 +217,19 @@ class Deriver {
   }
 
   void choose(const Choose& op, const Node& n, const Scope& s, std::uint64_t key, RandomStream& rng) {
-    const std::size_t base = scratch_.size();
+    PartValues weight(op.options.size());
     double total = 0;
-    for (const auto& o : op.options) {
-      double weight = 0;
+    for (std::size_t i = 0; i < op.options.size(); ++i) {
+      const ChooseOption& o = op.options[i];
+      double w = 0;
       if (o.condition.empty() || number(o.condition, rng, "a condition") != 0.0) {
-        weight = number(o.priority, rng, "a priority");
-        if (weight < 0) weight = 0;  // a priority <= 0 never wins
+        w = number(o.priority, rng, "a priority");
+        if (w < 0) w = 0;  // a priority <= 0 never wins
       }
-      scratch_.push_back(weight);
-      total += weight;
+      weight[i] = w;
+      total += w;
     }
     if (total <= 0) {
-      scratch_.resize(base);
       no_rule_applies(n);
       return;
     }
@@ -219,13 +237,11 @@ class Deriver {
     double running = 0;
     std::size_t pick = op.options.size();
     for (std::size_t i = 0; i < op.options.size(); ++i) {
-      const double w = scratch_[base + i];
-      if (w <= 0) continue;
-      running += w;
+      if (weight[i] <= 0) continue;
+      running += weight[i];
       pick = i;
       if (target < running) break;
     }
-    scratch_.resize(base);
     node(op.options[pick].child, s, pick, key);
   }
 
@@ -298,7 +314,6 @@ class Deriver {
   std::vector<Value> params_;
   std::size_t params_base_ = 0;  // the running rule's first argument in params_
   std::vector<Frame> chain_;
-  std::vector<double> scratch_;
   std::vector<bool> warned_;
   std::uint64_t operations_ = 0;
 };

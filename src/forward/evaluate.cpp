@@ -195,12 +195,23 @@ Value evaluate(const Expr& e, const EvalContext& ctx) {
 }
 
 double evaluate_number_slow(const Expr& e, const EvalContext& ctx, const char* what) {
-  const Value v = evaluate(e, ctx);
-  if (!v.is_number())
-    throw EvaluationError{e.loc(), std::string(what) + " must be a number, found " + v.describe(), {}};
-  if (!std::isfinite(v.number()))
-    throw EvaluationError{e.loc(), std::string(what) + " is " + format_number(v.number()) + ", not a finite number", {}};
-  return v.number();
+  const ExprNode& root = e.node(e.root());
+  // Operators and functions other than choice() can only give numbers:
+  // evaluate them unboxed. Names and choice() may give an axis.
+  const bool surely_number = root.kind == ExprKind::Unary || root.kind == ExprKind::Binary ||
+                             (root.kind == ExprKind::Call && static_cast<Function>(root.op) != Function::Choice);
+  double v;
+  if (surely_number) {
+    v = Evaluator{e.nodes().data(), e, ctx}.num(e.root());
+  } else {
+    const Value value = evaluate(e, ctx);
+    if (!value.is_number())
+      throw EvaluationError{e.loc(), std::string(what) + " must be a number, found " + value.describe(), {}};
+    v = value.number();
+  }
+  if (!std::isfinite(v))
+    throw EvaluationError{e.loc(), std::string(what) + " is " + format_number(v) + ", not a finite number", {}};
+  return v;
 }
 
 Axis evaluate_axis_slow(const Expr& e, const EvalContext& ctx, const char* what) {
