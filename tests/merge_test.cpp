@@ -1,0 +1,108 @@
+// Merging example graphs (thesis chapter 10) and writing the result as
+// named rules (chapter 11).
+#include "inverse/merge.hpp"
+
+#include <gtest/gtest.h>
+
+#include "graph/import.hpp"
+#include "graph/parser.hpp"
+#include "graph/writer.hpp"
+#include "inverse/rule_naming.hpp"
+
+namespace vern {
+namespace {
+
+// Each text is one example's graph, as inference builds them: splits with
+// relative sizes in metres. All go into one interned grammar.
+std::vector<NodeId> examples(Grammar& g, const std::vector<std::string>& texts) {
+  std::vector<NodeId> roots;
+  for (const auto& t : texts) {
+    const Grammar parsed = parse_grammar("e --> " + t);
+    roots.push_back(import_subgraph(g, parsed, parsed.rules[0].body));
+  }
+  return roots;
+}
+
+const std::string kHouse = "split(z){ ~6 : I(rect) | ~3 : I(triangle) }";
+
+std::string right_garage(double height) {
+  return "split(x){ ~6 : " + kHouse + " | ~3 : split(z){ ~" + std::to_string(height) + " : I(rect) | ~" +
+         std::to_string(9 - height) + " : nil } }";
+}
+
+TEST(Merge, IdenticalExamplesAreOneGraph) {
+  Grammar g;
+  const auto roots = examples(g, {right_garage(3), right_garage(3)});
+  EXPECT_EQ(roots[0], roots[1]);
+  EXPECT_EQ(merge_examples(g, roots, {}), roots[0]);
+}
+
+TEST(Merge, SameShapesMergeSizesIntoRangesAndShapesStayAlternatives) {
+  Grammar g;
+  const auto roots = examples(g, {right_garage(3), right_garage(3.5),
+                                  "split(x){ ~3 : split(z){ ~3.25 : I(rect) | ~5.75 : nil } | ~6 : " + kHouse + " }"});
+  const NodeId merged = merge_examples(g, roots, {});
+  const auto* choose = std::get_if<Choose>(&g.op(merged));
+  ASSERT_NE(choose, nullptr);
+  ASSERT_EQ(choose->options.size(), 2u);
+  EXPECT_EQ(choose->options[0].priority.literal(), 2.0);  // two examples have the garage on the right
+  EXPECT_EQ(choose->options[1].priority.literal(), 1.0);
+  const auto& right = std::get<Split>(g.op(choose->options[0].child));
+  const auto& garage = std::get<Split>(g.op(right.parts[1].child));
+  EXPECT_EQ(garage.parts[0].size.value, Expr::call(Function::Rand, {Expr::number(3), Expr::number(3.5)}));
+  EXPECT_EQ(garage.parts[1].size.value, Expr::call(Function::Rand, {Expr::number(5.5), Expr::number(6)}));
+  // The house is the same node in both alternatives.
+  const auto& left = std::get<Split>(g.op(choose->options[1].child));
+  EXPECT_EQ(right.parts[0].child, left.parts[1].child);
+}
+
+TEST(Merge, RunsOfEqualPartsBecomeRepeats) {
+  Grammar g;
+  const auto roots = examples(g, {"split(x){ ~0.5 : I(wall) | ~2 : I(window) | ~2 : I(window) | ~2 : I(window) | ~0.5 : I(wall) }"});
+  const NodeId merged = merge_examples(g, roots, {});
+  const auto& s = std::get<Split>(g.op(merged));
+  ASSERT_EQ(s.parts.size(), 3u);
+  EXPECT_EQ(s.parts[1].size.value.literal(), 6.0);
+  const auto& rep = std::get<RepeatN>(g.op(s.parts[1].child));
+  EXPECT_EQ(rep.count.literal(), 3.0);
+  EXPECT_EQ(g.label(std::get<Primitive>(g.op(rep.child)).label), "window");
+}
+
+TEST(Merge, WholeRunBecomesTheRepeatItself) {
+  Grammar g;
+  const auto roots = examples(g, {"split(z){ ~3 : I(floor) | ~3 : I(floor) | ~3 : I(floor) }"});
+  const NodeId merged = merge_examples(g, roots, {});
+  const auto* rep = std::get_if<RepeatN>(&g.op(merged));
+  ASSERT_NE(rep, nullptr);
+  EXPECT_EQ(rep->count.literal(), 3.0);
+}
+
+TEST(Merge, SizesWithinToleranceAreOneSize) {
+  Grammar g;
+  const auto roots = examples(g, {right_garage(3), right_garage(3 + 1e-12)});
+  MergeOptions o;
+  o.tolerance = 1e-9;
+  const NodeId merged = merge_examples(g, roots, o);
+  const auto& split = std::get<Split>(g.op(merged));
+  const auto& garage = std::get<Split>(g.op(split.parts[1].child));
+  EXPECT_TRUE(garage.parts[0].size.value.literal().has_value());
+}
+
+TEST(RuleNaming, RulesOnlyWhereSharedOrChosenWithNamesFromTheirParts) {
+  Grammar g;
+  const auto roots = examples(g, {right_garage(3), right_garage(3.5),
+                                  "split(x){ ~3 : split(z){ ~3.25 : I(rect) | ~5.75 : nil } | ~6 : " + kHouse + " }"});
+  const NodeId merged = merge_examples(g, roots, {});
+  const Grammar named = rules_for(g, merged);
+  EXPECT_EQ(write_grammar(named),
+            "building --> split(x){\n"
+            "    ~6 : rectTriangleZ |\n"
+            "    ~3 : split(z){ ~rand(3, 3.5) : I(rect) | ~rand(5.5, 6) : nil } } : 2\n"
+            "building --> split(x){\n"
+            "    ~3 : split(z){ ~3.25 : I(rect) | ~5.75 : nil } |\n"
+            "    ~6 : rectTriangleZ }\n"
+            "rectTriangleZ --> split(z){ ~6 : I(rect) | ~3 : I(triangle) }\n");
+}
+
+}  // namespace
+}  // namespace vern
