@@ -78,6 +78,12 @@ TEST(DeriveErrors, ArithmeticErrors) {
   EXPECT_NE(f.message.find("a split size is inf, not a finite number"), std::string::npos);
 }
 
+TEST(DeriveErrors, StartRuleWithParameters) {
+  const auto f = derive_failure("wall(a) --> nil\np --> wall(1)");
+  EXPECT_EQ(f.kind, ErrorKind::Input);
+  EXPECT_NE(f.message.find("g.grm:1:1: error: the start rule 'wall' takes parameters"), std::string::npos);
+}
+
 TEST(DeriveErrors, NoApplicableRuleWarnsOnceOrFailsWhenStrict) {
   const char* text = "p --> repeatN(x, 3){ q(2) }\nq(n) : n > 5 --> I(rect)\n";
   const Grammar g = parse_grammar(text, "g.grm");

@@ -37,7 +37,7 @@ TEST(Merge, IdenticalExamplesAreOneGraph) {
   EXPECT_EQ(merge_examples(g, roots, {}), roots[0]);
 }
 
-TEST(Merge, SameShapesMergeSizesIntoRangesAndShapesStayAlternatives) {
+TEST(Merge, EqualStructuresMergeSizesIntoRangesAnywhereAndShapesStayAlternatives) {
   Grammar g;
   const auto roots = examples(g, {right_garage(3), right_garage(3.5),
                                   "split(x){ ~3 : split(z){ ~3.25 : I(rect) | ~5.75 : nil } | ~6 : " + kHouse + " }"});
@@ -48,12 +48,28 @@ TEST(Merge, SameShapesMergeSizesIntoRangesAndShapesStayAlternatives) {
   EXPECT_EQ(choose->options[0].priority.literal(), 2.0);  // two examples have the garage on the right
   EXPECT_EQ(choose->options[1].priority.literal(), 1.0);
   const auto& right = std::get<Split>(g.op(choose->options[0].child));
+  const auto& left = std::get<Split>(g.op(choose->options[1].child));
+  // The garages of both sides have one structure: one node, one range.
+  EXPECT_EQ(right.parts[1].child, left.parts[0].child);
   const auto& garage = std::get<Split>(g.op(right.parts[1].child));
   EXPECT_EQ(garage.parts[0].size.value, Expr::call(Function::Rand, {Expr::number(3), Expr::number(3.5)}));
   EXPECT_EQ(garage.parts[1].size.value, Expr::call(Function::Rand, {Expr::number(5.5), Expr::number(6)}));
-  // The house is the same node in both alternatives.
-  const auto& left = std::get<Split>(g.op(choose->options[1].child));
+  // The house is the same node in both alternatives, its sizes exact.
   EXPECT_EQ(right.parts[0].child, left.parts[1].child);
+  EXPECT_EQ(std::get<Split>(g.op(right.parts[0].child)).parts[0].size.value, Expr::number(6));
+}
+
+TEST(Merge, ParentsOfUnifiedChildrenUnifyInTurn) {
+  // Two towers of different heights inside two blocks of different widths:
+  // the towers unify, so the blocks have one structure and unify too.
+  Grammar g;
+  const auto roots = examples(g, {"split(x){ ~2 : split(z){ ~5 : I(rect) | ~1 : nil } | ~3 : nil }",
+                                  "split(x){ ~4 : split(z){ ~2 : I(rect) | ~4 : nil } | ~1 : nil }"});
+  const NodeId merged = merge_examples(g, roots, {});
+  const auto& block = std::get<Split>(g.op(merged));
+  EXPECT_EQ(block.parts[0].size.value, Expr::call(Function::Rand, {Expr::number(2), Expr::number(4)}));
+  const auto& tower = std::get<Split>(g.op(block.parts[0].child));
+  EXPECT_EQ(tower.parts[0].size.value, Expr::call(Function::Rand, {Expr::number(2), Expr::number(5)}));
 }
 
 TEST(Merge, RunsOfEqualPartsBecomeRepeats) {
@@ -95,13 +111,10 @@ TEST(RuleNaming, RulesOnlyWhereSharedOrChosenWithNamesFromTheirParts) {
   const NodeId merged = merge_examples(g, roots, {});
   const Grammar named = rules_for(g, merged);
   EXPECT_EQ(write_grammar(named),
-            "building --> split(x){\n"
-            "    ~6 : rectTriangleZ |\n"
-            "    ~3 : split(z){ ~rand(3, 3.5) : I(rect) | ~rand(5.5, 6) : nil } } : 2\n"
-            "building --> split(x){\n"
-            "    ~3 : split(z){ ~3.25 : I(rect) | ~5.75 : nil } |\n"
-            "    ~6 : rectTriangleZ }\n"
-            "rectTriangleZ --> split(z){ ~6 : I(rect) | ~3 : I(triangle) }\n");
+            "building --> split(x){ ~6 : rectTriangleZ | ~3 : rectZ } : 2\n"
+            "building --> split(x){ ~3 : rectZ | ~6 : rectTriangleZ }\n"
+            "rectTriangleZ --> split(z){ ~6 : I(rect) | ~3 : I(triangle) }\n"
+            "rectZ --> split(z){ ~rand(3, 3.5) : I(rect) | ~rand(5.5, 6) : nil }\n");
 }
 
 }  // namespace

@@ -70,6 +70,11 @@ class Deriver {
     evaluate_constants(child_key(root, 1));
     out_.start.size = start_size(child_key(root, 2));
     if (g_.rules.empty()) return;
+    const Rule& start = g_.rules[g_.start_rule];
+    if (!start.params.empty())
+      fail(ErrorKind::Input, g_.source_name, start.loc, "the start rule '" + start.label + "' takes parameters",
+           "the start rule runs with no arguments: name another with @start or --start, or add a rule such as "
+           "'plot --> " + start.label + "(...)'");
     chain_.push_back({g_.start_rule, 0, g_.rules[g_.start_rule].loc});
     node(g_.rules[g_.start_rule].body, out_.start, 0, child_key(root, 3));
     chain_.pop_back();

@@ -292,9 +292,12 @@ class Parser {
       g_.start_rule = it->second;
       g_.start_written = true;
     }
+    // Only a start rule that @start names must take no parameters here: a
+    // default start rule may be replaced (generate --start), and derive()
+    // refuses one with parameters when it runs.
     const Rule& start = g_.rules[g_.start_rule];
-    if (!start.params.empty())
-      error(start.loc, "the start rule '" + start.label + "' takes parameters",
+    if (g_.start_written && !start.params.empty())
+      error(start_loc_, "the start rule '" + start.label + "' takes parameters",
             "the start rule runs with no arguments: add a rule such as 'plot --> " + start.label + "(...)'");
   }
 

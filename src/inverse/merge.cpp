@@ -28,135 +28,125 @@ Expr range_expr(Range r, double tolerance) {
 
 namespace {
 
-class Merger {
+// Unifies nodes of equal structure anywhere below a root (thesis 10.3):
+// the same operation, axis, relative flags, counts and children (after
+// unification), whatever their sizes. Each group becomes one node whose
+// sizes are ranges over its members, so parents whose children now
+// coincide fall into one group in turn. Bottom-up, one pass: a node's key
+// names its children's groups, which are settled before it.
+class Unifier {
  public:
-  Merger(Grammar& g, const MergeOptions& o) : g_(g), opt_(o) {}
+  Unifier(Grammar& g, const MergeOptions& o) : g_(g), opt_(o) {}
 
-  // Groups nodes by shape and merges each group; one group merges to its
-  // node, several to a choose weighted by their sizes (first seen first).
-  NodeId merge_alternatives(const std::vector<NodeId>& nodes, const std::vector<double>& weights) {
-    std::vector<std::vector<NodeId>> groups;
-    std::vector<double> group_weight;
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      std::size_t k = 0;
-      while (k < groups.size() && !same_shape(groups[k].front(), nodes[i])) ++k;
-      if (k == groups.size()) {
-        groups.emplace_back();
-        group_weight.push_back(0);
-      }
-      groups[k].push_back(nodes[i]);
-      group_weight[k] += weights[i];
-    }
-    if (groups.size() == 1) return merge_group(groups[0]);
-    Choose choose;
-    for (std::size_t k = 0; k < groups.size(); ++k)
-      choose.options.push_back({Expr{}, Expr::number(group_weight[k]), merge_group(groups[k])});
-    return g_.intern({std::move(choose), {}});
+  NodeId run(NodeId root) {
+    visit(root);
+    std::vector<NodeId> built(groups_.size(), 0);
+    for (std::size_t k = 0; k < groups_.size(); ++k) built[k] = build(groups_[k], built);
+    return built[group_of_.at(root)];
   }
 
  private:
-  // Same operations, axes, labels, relative flags, counts and structure;
-  // sizes may differ. Memoised: graphs are DAGs with much sharing.
-  bool same_shape(NodeId a, NodeId b) {
-    if (a == b) return true;
-    const auto key = std::minmax(a, b);
-    if (auto it = shape_memo_.find(key); it != shape_memo_.end()) return it->second;
-    const bool same = compare_shapes(g_.op(a), g_.op(b));
-    shape_memo_.emplace(key, same);
-    return same;
-  }
+  struct Group {
+    NodeId first;                     // a member: the operation's form
+    std::vector<std::size_t> children;  // child groups, in order
+    std::vector<Range> ranges;        // per split part, over the members
+  };
 
-  bool compare_shapes(const Operation& x, const Operation& y) {
-    if (x.index() != y.index()) return false;
-    return std::visit(
-        Overload{
-            [&](const Split& s) {
-              const auto& t = std::get<Split>(y);
-              if (s.axis != t.axis || s.parts.size() != t.parts.size()) return false;
-              for (std::size_t i = 0; i < s.parts.size(); ++i) {
-                if (s.parts[i].size.relative != t.parts[i].size.relative) return false;
-                if (!literal_range(s.parts[i].size.value) || !literal_range(t.parts[i].size.value)) {
-                  if (s.parts[i].size.value != t.parts[i].size.value) return false;
-                }
-                if (!same_shape(s.parts[i].child, t.parts[i].child)) return false;
-              }
-              return true;
-            },
-            [&](const RepeatN& r) {
-              const auto& t = std::get<RepeatN>(y);
-              return r.axis == t.axis && r.count == t.count && same_shape(r.child, t.child);
-            },
-            [&](const Repeat& r) {
-              const auto& t = std::get<Repeat>(y);
-              return r.axis == t.axis && r.size == t.size && same_shape(r.child, t.child);
-            },
-            [&](const Rotate& r) {
-              const auto& t = std::get<Rotate>(y);
-              return r.axis == t.axis && r.angle == t.angle && same_shape(r.child, t.child);
-            },
-            [&](const Primitive& p) { return p.label == std::get<Primitive>(y).label; },
-            [&](const Nil&) { return true; },
-            // Anything else merges only when identical (interned: same id).
-            [&](const auto&) { return false; },
-        },
-        x);
-  }
-
-  // Merges nodes of one shape: sizes become ranges, children merge part by part.
-  NodeId merge_group(const std::vector<NodeId>& group) {
-    const NodeId first = group.front();
-    if (std::all_of(group.begin(), group.end(), [&](NodeId n) { return n == first; })) return first;
-    const Operation& op = g_.op(first);
+  // Post-order: children's groups exist before their parents' keys.
+  void visit(NodeId id) {
+    if (group_of_.count(id)) return;
+    const Operation& op = g_.op(id);
+    std::vector<std::size_t> children;
+    for (NodeId c : node_children(op)) {
+      visit(c);
+      children.push_back(group_of_.at(c));
+    }
+    std::string key = structure_key(op, children);
+    auto [it, fresh] = group_by_key_.emplace(std::move(key), groups_.size());
+    if (fresh) groups_.push_back({id, children, {}});
+    Group& group = groups_[it->second];
     if (const auto* s = std::get_if<Split>(&op)) {
-      Split merged;
-      merged.axis = s->axis;
+      // Each part's range starts at the first member's own value.
+      const bool first_member = group.ranges.empty();
+      if (first_member) group.ranges.resize(s->parts.size());
       for (std::size_t i = 0; i < s->parts.size(); ++i) {
-        std::vector<NodeId> children;
-        Range range{0, 0};
-        bool has_range = false;
-        for (NodeId n : group) {
-          const SplitPart& part = std::get<Split>(g_.op(n)).parts[i];
-          children.push_back(part.child);
-          if (auto r = literal_range(part.size.value)) {
-            range = has_range ? Range{std::min(range.lo, r->lo), std::max(range.hi, r->hi)} : *r;
-            has_range = true;
-          }
-        }
-        SplitPart part;
-        part.size.relative = s->parts[i].size.relative;
-        part.size.value = has_range ? range_expr(range, opt_.tolerance) : s->parts[i].size.value;
-        part.child = merge_group(children);
-        merged.parts.push_back(std::move(part));
+        const auto r = literal_range(s->parts[i].size.value);
+        if (!r) continue;  // non-literal sizes are part of the key
+        Range& range = group.ranges[i];
+        range = first_member ? *r : Range{std::min(range.lo, r->lo), std::max(range.hi, r->hi)};
       }
-      return g_.intern({std::move(merged), {}});
     }
-    // Single-child operations of one shape differ only below.
-    auto merged_child = [&](auto member) {
-      std::vector<NodeId> children;
-      for (NodeId n : group) children.push_back(member(g_.op(n)));
-      return merge_group(children);
-    };
-    if (const auto* r = std::get_if<RepeatN>(&op)) {
-      RepeatN m = *r;
-      m.child = merged_child([](const Operation& o) { return std::get<RepeatN>(o).child; });
-      return g_.intern({std::move(m), {}});
+    group_of_.emplace(id, it->second);
+  }
+
+  // Everything that must agree for two nodes to be one, sizes excepted:
+  // the operation with its numbers blanked, and the child groups.
+  std::string structure_key(const Operation& op, const std::vector<std::size_t>& children) const {
+    Operation blank = op;
+    if (auto* s = std::get_if<Split>(&blank)) {
+      for (auto& p : s->parts) {
+        if (literal_range(p.size.value)) p.size.value = Expr::number(0);
+        p.child = 0;
+      }
+    } else {
+      for (auto* child : child_slots(blank)) *child = 0;
     }
-    if (const auto* r = std::get_if<Repeat>(&op)) {
-      Repeat m = *r;
-      m.child = merged_child([](const Operation& o) { return std::get<Repeat>(o).child; });
-      return g_.intern({std::move(m), {}});
+    std::string key = form_id(blank);
+    for (std::size_t c : children) key += "," + std::to_string(c);
+    return key;
+  }
+
+  // Two blank forms with one hash may still differ: give each distinct form
+  // its own id by comparing with the forms seen under that hash.
+  std::string form_id(const Operation& form) const {
+    const std::size_t h = shallow_hash(form);
+    auto& seen = forms_by_hash_[h];
+    for (std::size_t i = 0; i < seen.size(); ++i)
+      if (seen[i] == form) return std::to_string(h) + "." + std::to_string(i);
+    seen.push_back(form);
+    return std::to_string(h) + "." + std::to_string(seen.size() - 1);
+  }
+
+  static std::vector<NodeId*> child_slots(Operation& op) {
+    std::vector<NodeId*> out;
+    std::visit(Overload{
+                   [&](Split& s) {
+                     for (auto& p : s.parts) out.push_back(&p.child);
+                   },
+                   [&](Repeat& r) { out.push_back(&r.child); },
+                   [&](RepeatN& r) { out.push_back(&r.child); },
+                   [&](Choose& c) {
+                     for (auto& o : c.options) out.push_back(&o.child);
+                   },
+                   [&](Translate& t) { out.push_back(&t.child); },
+                   [&](Scale& s) { out.push_back(&s.child); },
+                   [&](Rotate& r) { out.push_back(&r.child); },
+                   [&](Comp& c) {
+                     for (auto& p : c.parts) out.push_back(&p.child);
+                   },
+                   [](auto&) {},
+               },
+               op);
+    return out;
+  }
+
+  NodeId build(const Group& group, const std::vector<NodeId>& built) {
+    Operation op = g_.op(group.first);
+    auto slots = child_slots(op);
+    for (std::size_t i = 0; i < slots.size(); ++i) *slots[i] = built[group.children[i]];
+    if (auto* s = std::get_if<Split>(&op)) {
+      for (std::size_t i = 0; i < s->parts.size() && i < group.ranges.size(); ++i)
+        if (literal_range(s->parts[i].size.value)) s->parts[i].size.value = range_expr(group.ranges[i], opt_.tolerance);
     }
-    if (const auto* r = std::get_if<Rotate>(&op)) {
-      Rotate m = *r;
-      m.child = merged_child([](const Operation& o) { return std::get<Rotate>(o).child; });
-      return g_.intern({std::move(m), {}});
-    }
-    return first;  // primitives and nil of one shape are one node already
+    return g_.intern({std::move(op), {}});
   }
 
   Grammar& g_;
   const MergeOptions& opt_;
-  std::map<std::pair<NodeId, NodeId>, bool> shape_memo_;
+  std::vector<Group> groups_;
+  std::unordered_map<std::string, std::size_t> group_by_key_;
+  std::unordered_map<NodeId, std::size_t> group_of_;
+  mutable std::unordered_map<std::size_t, std::vector<Operation>> forms_by_hash_;
 };
 
 // ---- simplification ----
@@ -293,9 +283,15 @@ class Simplifier {
 }  // namespace
 
 NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeOptions& options) {
-  Merger merger(g, options);
-  const NodeId merged = merger.merge_alternatives(roots, std::vector<double>(roots.size(), 1.0));
-  return Simplifier(g, options).run(merged);
+  // Runs of equal parts are found while sizes are still exact numbers.
+  Simplifier exact(g, options);
+  Choose all;
+  for (NodeId r : roots) all.options.push_back({Expr{}, Expr::number(1.0), exact.run(r)});
+  const NodeId examples = g.intern({std::move(all), {}});
+  // One example is reproduced as it is: ranges come only from variation
+  // across examples, never from one building's own parts.
+  const NodeId unified = roots.size() > 1 ? Unifier(g, options).run(examples) : examples;
+  return Simplifier(g, options).run(unified);
 }
 
 }  // namespace vern

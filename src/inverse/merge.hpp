@@ -3,16 +3,23 @@
 // made of their parts.
 //
 // The examples' graphs live in one Grammar, interned, so identical parts
-// are already one node (10.2). merge_examples groups the roots by shape
-// (the same operations, axes, labels and structure, whatever the numbers),
-// merges each group into one graph whose sizes become ranges over the group
-// (10.3), and puts the groups under one choose weighted by how many
-// examples each holds (10.1, 10.4). Then it simplifies: runs of equal parts
-// become repeats and identical alternatives add their priorities.
+// are already one node (10.2). merge_examples
+//   1. turns runs of equal parts into repeats, in each example, while the
+//      sizes are still exact;
+//   2. puts the examples under one choose, one option each (10.1);
+//   3. unifies nodes of equal structure anywhere in the graph (the same
+//      operation, axis, relative flags, counts and children, whatever the
+//      sizes) into one node whose sizes are ranges over them (10.3), bottom
+//      up, so parents whose children coincide unify in turn;
+//   4. adds the priorities of alternatives that became one (10.4).
 //
-// Every example stays derivable: each of its sizes lies in its range.
-// Groups of different shape stay separate alternatives; merging parts of
-// different shape (generalising further) is left to later stages.
+// Step 3 needs two examples or more: one example is reproduced exactly as
+// it is, since ranges should come from variation across examples, never
+// from one building's own parts (which only parameters could share
+// exactly). Every example stays derivable: each of its sizes lies in its range and
+// each of its parts was replaced by a node that covers it. Unifying equal
+// structures everywhere is the thesis's rule; it also joins parts that only
+// look alike (its balcony bars), which keeping parts apart must refine.
 #pragma once
 
 #include <vector>

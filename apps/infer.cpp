@@ -1,0 +1,158 @@
+// infer: labelled example buildings in, a grammar of their style out.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <new>
+
+#include "forward/obj_writer.hpp"
+#include "forward/variants.hpp"
+#include "graph/atomic_file.hpp"
+#include "graph/writer.hpp"
+#include "inverse/infer.hpp"
+#include "support/command_line.hpp"
+
+namespace fs = std::filesystem;
+using namespace vern;
+
+namespace {
+
+CommandLine make_command_line() {
+  CommandLine cl("infer", "infer EXAMPLES... -o STYLE.grm [options]",
+                 "Reads example buildings whose parts are labelled (OBJ objects `o window`, or\n"
+                 "named glTF nodes), finds how each is cut into its parts, merges the examples\n"
+                 "and writes a grammar that derives each of them and new ones in their style,\n"
+                 "plus the parts' meshes (STYLE.prims.obj) so the grammar alone regenerates them.\n"
+                 "EXAMPLES are .obj, .gltf or .glb files, or folders of them.");
+  cl.add({"--output", "-o", 1, "STYLE.grm", "the grammar to write (required)"});
+  cl.add({"--primitives-out", "", 1, "FILE.obj", "where to write the parts' meshes (default: STYLE.prims.obj)"});
+  cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the largest example)"});
+  cl.add({"--start", "", 1, "LABEL", "name of the start rule (default: building)"});
+  cl.add({"--seed", "-s", 1, "S", "seed of the test derivations run on the result (default 1)"});
+  cl.add({"--quiet", "-q", 0, "", "print errors only"});
+  cl.add({"--help", "-h", 0, "", "show this help"});
+  cl.set_epilog(
+      "examples:\n"
+      "  infer data/examples/garage/*.obj -o garage.grm     # then: generate garage.grm -n 10 -o g.glb\n"
+      "  infer my_buildings/ -o style.grm --tolerance 0.001\n"
+      "\n"
+      "exit codes: 0 success, 2 usage error, 3 bad input (an example file), 4 a limit was reached,\n"
+      "            5 a file could not be read or written, 70 internal error\n");
+  return cl;
+}
+
+[[noreturn]] void usage(const std::string& message, const std::string& hint = {}) {
+  throw Error(ErrorKind::Usage, "infer: error: " + message + (hint.empty() ? "" : "\n  hint: " + hint));
+}
+
+// A path for the grammar to name: relative to the grammar's folder when
+// possible, so the two files can move together.
+std::string path_from(const fs::path& grammar, const fs::path& file) {
+  std::error_code ec;
+  const fs::path base = fs::absolute(grammar, ec).parent_path();
+  const fs::path rel = fs::relative(fs::absolute(file, ec), base, ec);
+  return (ec || rel.empty()) ? fs::absolute(file, ec).string() : rel.generic_string();
+}
+
+int run(int argc, char** argv) {
+  const CommandLine cl = make_command_line();
+  const ParsedCommandLine args = cl.parse(argc, argv);
+  if (args.has("--help")) {
+    std::cout << cl.help();
+    return 0;
+  }
+  if (!args.has("--output")) usage("no output grammar given", "add -o STYLE.grm");
+  if (args.positional.empty()) usage("no examples given", "list .obj/.glb files or folders: infer examples/*.obj -o style.grm");
+  const bool quiet = args.has("--quiet");
+  const fs::path output = args.value("--output");
+  const fs::path prims = args.has("--primitives-out") ? fs::path(args.value("--primitives-out"))
+                                                      : fs::path(output).replace_extension(".prims.obj");
+  if (prims.extension() != ".obj") usage("--primitives-out must name an .obj file, got " + prims.string());
+  InferOptions options;
+  if (args.has("--tolerance")) {
+    options.tolerance = CommandLine::number(args, "--tolerance");
+    if (!(options.tolerance > 0)) usage("--tolerance must be > 0");
+  }
+  if (args.has("--start")) options.start = args.value("--start");
+  const std::uint64_t seed =
+      args.has("--seed") ? static_cast<std::uint64_t>(CommandLine::integer(args, "--seed", 0, 1LL << 53)) : 1;
+
+  const auto started = std::chrono::steady_clock::now();
+  const std::vector<fs::path> files = example_files(args.positional);
+  std::error_code ec;
+  for (const auto& f : files)
+    if (fs::equivalent(f, output, ec) || fs::equivalent(f, prims, ec))
+      usage("the output " + (fs::equivalent(f, output, ec) ? output : prims).string() + " is one of the examples",
+            "choose another output path");
+  const fs::path folder = output.has_parent_path() ? output.parent_path() : fs::path(".");
+  if (!fs::is_directory(folder, ec))
+    throw Error(ErrorKind::Io, output.string() + ": error: cannot write here: " + folder.string() +
+                                   " is not an existing folder\n  hint: create the folder first, or choose another path");
+
+  const bool show_progress = !quiet && files.size() >= 20 && isatty(STDERR_FILENO);
+  std::vector<Example> examples;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    examples.push_back(load_example(files[i]));
+    if (show_progress && (i % 10 == 9 || i + 1 == files.size()))
+      std::fprintf(stderr, "\rreading examples %zu/%zu", i + 1, files.size());
+  }
+  if (show_progress) std::fprintf(stderr, "\n");
+  Inference result = infer(examples, options);
+
+  // Derive a few buildings from the result before writing it: a grammar
+  // that cannot derive is a bug, better found here than by the user.
+  VariantOptions check;
+  check.count = 8;
+  check.threads = 1;
+  check.derive.seed = seed;
+  result.grammar.primitives = path_from(output, prims);
+  std::size_t terminals = 0;
+  for (const auto& d : derive_variants(result.grammar, check)) terminals += d.terminals.size();
+
+  // The parts' meshes: one object per label, each filling the unit box.
+  Scene meshes;
+  Variant all;
+  all.name = "primitives";
+  for (const auto& name : result.primitives.names()) {
+    Terminal t;
+    t.label = static_cast<LabelId>(meshes.labels.size());
+    meshes.labels.push_back(name);
+    all.terminals.push_back(t);
+  }
+  meshes.variants.push_back(std::move(all));
+
+  std::string text = "# Inferred by Vernacular's infer from " + std::to_string(examples.size()) + " example" +
+                     (examples.size() == 1 ? "" : "s") + " (tolerance " + std::to_string(result.tolerance) +
+                     " m).\n# Regenerate buildings with: generate " + output.filename().string() + " -n 10 -o out/\n";
+  text += write_grammar(result.grammar);
+  write_obj(meshes, result.primitives, prims);
+  write_file_atomically(output, text);
+
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (!quiet)
+    std::fprintf(stderr, "infer: %zu example%s -> %s: %zu rules, %zu lines; meshes -> %s (%.2f s)\n", examples.size(),
+                 examples.size() == 1 ? "" : "s", output.string().c_str(), result.grammar.rules.size(),
+                 static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')), prims.string().c_str(), seconds);
+  (void)terminals;
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  install_interrupt_cleanup();
+  try {
+    return run(argc, argv);
+  } catch (const Error& e) {
+    std::cerr << e.what() << "\n";
+    return exit_code(e.kind());
+  } catch (const std::bad_alloc&) {
+    std::cerr << "infer: error: out of memory\n";
+    return exit_code(ErrorKind::Limit);
+  } catch (const std::exception& e) {
+    std::cerr << "infer: internal error: " << e.what() << "\n";
+    return exit_code(ErrorKind::Internal);
+  }
+}

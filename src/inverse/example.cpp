@@ -1,0 +1,442 @@
+#include "inverse/example.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <utility>
+
+#include <glm/gtc/quaternion.hpp>
+
+// tinygltf stays in this file among the inverse sources. As in the glTF
+// writer, the header is included for declarations only: Debian's
+// libtinygltf-dev ships the implementation as a library (TinyGLTF::TinyGLTF).
+#include <tiny_gltf.h>
+
+#include "forward/obj_reader.hpp"
+#include "graph/error.hpp"
+
+namespace vern {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+enum class Format { Obj, Glb, Gltf, Other };
+
+Format format_of(const fs::path& path) {
+  const std::string ext = lower(path.extension().string());
+  if (ext == ".obj") return Format::Obj;
+  if (ext == ".glb") return Format::Glb;
+  if (ext == ".gltf") return Format::Gltf;
+  return Format::Other;
+}
+
+[[noreturn]] void not_an_example(const fs::path& path) {
+  fail(ErrorKind::Usage, path.string(), {},
+       "is not an example file: examples are labelled .obj, .glb or .gltf files",
+       "export the building as OBJ (one object per part) or glTF (one named node per part)");
+}
+
+LabelledBox box_of(const std::string& name, std::uint32_t line, const Mesh& mesh, std::size_t index) {
+  LabelledBox b;
+  b.label = strip_numeric_suffix(name);
+  b.min = mesh.min_corner();
+  b.max = mesh.max_corner();
+  b.object = name;
+  b.line = line;
+  b.mesh = static_cast<std::uint32_t>(index);
+  return b;
+}
+
+Example load_obj_example(const fs::path& path) {
+  std::vector<ObjObject> objects = read_obj_file(path);
+  Example ex;
+  ex.source = path.string();
+  for (ObjObject& o : objects) {
+    if (o.name.empty()) {
+      fail(ErrorKind::Input, ex.source, {o.line, 1},
+           "these faces have no name: inference cannot tell which primitive they are",
+           "start each part with `o <label>` naming its primitive (e.g. `o window.001`)");
+    }
+    ex.boxes.push_back(box_of(o.name, o.line, o.mesh, ex.meshes.size()));
+    ex.meshes.push_back(std::move(o.mesh));
+  }
+  if (ex.boxes.empty()) {
+    fail(ErrorKind::Input, ex.source, {}, "has no labelled objects; each part must be an OBJ object `o name`",
+         "write `o <label>` before each part's faces (e.g. `o window.001`), one object per primitive");
+  }
+  return ex;
+}
+
+// --- glTF -------------------------------------------------------------------
+
+// Images play no part in inference: skip decoding them.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+// One accessor's elements, read as doubles whatever their storage.
+class AccessorReader {
+ public:
+  AccessorReader(const tinygltf::Model& model, int index, const std::string& source, const std::string& what)
+      : source_(source), what_(what) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) broken("refers to a missing accessor");
+    const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(index)];
+    if (a.sparse.isSparse) broken("uses a sparse accessor, which is not supported");
+    if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= model.bufferViews.size()) {
+      broken("has no buffer view");
+    }
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(a.bufferView)];
+    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model.buffers.size()) broken("has no buffer");
+    const std::vector<unsigned char>& data = model.buffers[static_cast<std::size_t>(view.buffer)].data;
+    component_type_ = a.componentType;
+    normalized_ = a.normalized;
+    components_ = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
+    const int component_size = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType));
+    if (components_ <= 0 || component_size <= 0) broken("has an unknown element type");
+    const int stride = a.ByteStride(view);
+    if (stride <= 0) broken("has an invalid byte stride");
+    stride_ = static_cast<std::size_t>(stride);
+    component_size_ = static_cast<std::size_t>(component_size);
+    count_ = a.count;
+    const std::size_t start = view.byteOffset + a.byteOffset;
+    const std::size_t element = component_size_ * static_cast<std::size_t>(components_);
+    if (count_ > 0 && (start + stride_ * (count_ - 1) + element > data.size() ||
+                       a.byteOffset + stride_ * (count_ - 1) + element > view.byteLength)) {
+      broken("reads past the end of its buffer");
+    }
+    data_ = data.data() + start;
+  }
+
+  std::size_t count() const { return count_; }
+  int components() const { return components_; }
+
+  double get(std::size_t element, int component) const {
+    const unsigned char* p = data_ + element * stride_ + static_cast<std::size_t>(component) * component_size_;
+    switch (component_type_) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: return read<float>(p, 1.0);
+      case TINYGLTF_COMPONENT_TYPE_DOUBLE: return read<double>(p, 1.0);
+      case TINYGLTF_COMPONENT_TYPE_BYTE: return std::max(read<std::int8_t>(p, 127.0), -1.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return read<std::uint8_t>(p, 255.0);
+      case TINYGLTF_COMPONENT_TYPE_SHORT: return std::max(read<std::int16_t>(p, 32767.0), -1.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return read<std::uint16_t>(p, 65535.0);
+      case TINYGLTF_COMPONENT_TYPE_INT: return read<std::int32_t>(p, 2147483647.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return read<std::uint32_t>(p, 4294967295.0);
+      default: broken("has an unknown component type");
+    }
+  }
+
+  // An index: an unsigned integer, never normalised.
+  std::uint32_t index(std::size_t element) const {
+    const unsigned char* p = data_ + element * stride_;
+    switch (component_type_) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return raw<std::uint8_t>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return raw<std::uint16_t>(p);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return raw<std::uint32_t>(p);
+      default: broken("stores indices in a type other than unsigned byte, short or int");
+    }
+  }
+
+ private:
+  template <class T>
+  static T raw(const unsigned char* p) {
+    T v;
+    std::memcpy(&v, p, sizeof v);  // buffers need not be aligned for T
+    return v;
+  }
+
+  template <class T>
+  double read(const unsigned char* p, double scale) const {
+    const double v = static_cast<double>(raw<T>(p));
+    return normalized_ ? v / scale : v;
+  }
+
+  [[noreturn]] void broken(const std::string& problem) const {
+    fail(ErrorKind::Input, source_, {}, what_ + " " + problem, "export the file again, or check it with scripts/validate-gltf");
+  }
+
+  const std::string& source_;
+  std::string what_;
+  const unsigned char* data_ = nullptr;
+  std::size_t stride_ = 0, component_size_ = 0, count_ = 0;
+  int component_type_ = 0, components_ = 0;
+  bool normalized_ = false;
+};
+
+glm::dmat4 local_matrix(const tinygltf::Node& n) {
+  if (n.matrix.size() == 16) {
+    glm::dmat4 m(1.0);
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) m[c][r] = n.matrix[static_cast<std::size_t>(4 * c + r)];
+    return m;
+  }
+  glm::dmat4 m(1.0);
+  if (n.translation.size() == 3) m[3] = glm::dvec4(n.translation[0], n.translation[1], n.translation[2], 1.0);
+  if (n.rotation.size() == 4) {
+    const glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);  // glTF stores x, y, z, w
+    const glm::dmat3 r = glm::mat3_cast(glm::normalize(q));
+    for (int c = 0; c < 3; ++c) m[c] = glm::dvec4(r[c], 0.0);
+  }
+  if (n.scale.size() == 3) {
+    for (int c = 0; c < 3; ++c) m[c] *= n.scale[static_cast<std::size_t>(c)];
+  }
+  return m;
+}
+
+// Appends one glTF mesh, transformed to world space, to `out`.
+void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, const glm::dmat4& world,
+                 const std::string& source, const std::string& who, Mesh& out) {
+  const glm::dmat3 linear(world);
+  const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+  const bool mirrored = glm::determinant(linear) < 0.0;  // keep faces turned outwards
+  for (const tinygltf::Primitive& p : gmesh.primitives) {
+    const auto pos = p.attributes.find("POSITION");
+    if (pos == p.attributes.end()) continue;  // nothing to place
+    const AccessorReader positions(model, pos->second, source, who + ": its POSITION accessor");
+    if (positions.components() != 3) {
+      fail(ErrorKind::Input, source, {}, who + ": POSITION must hold 3 numbers per vertex",
+           "export the file again, or check it with scripts/validate-gltf");
+    }
+    const auto base = static_cast<std::uint32_t>(out.positions.size());
+    for (std::size_t i = 0; i < positions.count(); ++i) {
+      const glm::dvec4 v(positions.get(i, 0), positions.get(i, 1), positions.get(i, 2), 1.0);
+      out.positions.push_back(glm::dvec3(world * v));
+    }
+
+    std::uint32_t normal_base = Mesh::kNone;
+    if (const auto nrm = p.attributes.find("NORMAL"); nrm != p.attributes.end()) {
+      const AccessorReader normals(model, nrm->second, source, who + ": its NORMAL accessor");
+      if (normals.components() == 3 && normals.count() == positions.count()) {
+        normal_base = static_cast<std::uint32_t>(out.normals.size());
+        for (std::size_t i = 0; i < normals.count(); ++i) {
+          const glm::dvec3 n = normal_matrix * glm::dvec3(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
+          const double len = glm::length(n);
+          out.normals.push_back(len > 0.0 ? n / len : n);
+        }
+      }
+    }
+    std::uint32_t uv_base = Mesh::kNone;
+    if (const auto tex = p.attributes.find("TEXCOORD_0"); tex != p.attributes.end()) {
+      const AccessorReader uvs(model, tex->second, source, who + ": its TEXCOORD_0 accessor");
+      if (uvs.components() == 2 && uvs.count() == positions.count()) {
+        uv_base = static_cast<std::uint32_t>(out.uvs.size());
+        // glTF's v points down, OBJ's (and Mesh's) up.
+        for (std::size_t i = 0; i < uvs.count(); ++i) out.uvs.emplace_back(uvs.get(i, 0), 1.0 - uvs.get(i, 1));
+      }
+    }
+
+    std::vector<std::uint32_t> indices;
+    if (p.indices >= 0) {
+      const AccessorReader reader(model, p.indices, source, who + ": its index accessor");
+      indices.reserve(reader.count());
+      for (std::size_t i = 0; i < reader.count(); ++i) {
+        const std::uint32_t index = reader.index(i);
+        if (index >= positions.count()) {
+          fail(ErrorKind::Input, source, {},
+               who + ": index " + std::to_string(index) + " is past the " + std::to_string(positions.count()) +
+                   " vertices",
+               "export the file again, or check it with scripts/validate-gltf");
+        }
+        indices.push_back(index);
+      }
+    } else {
+      for (std::size_t i = 0; i < positions.count(); ++i) indices.push_back(static_cast<std::uint32_t>(i));
+    }
+
+    auto corner = [&](std::uint32_t i) {
+      Mesh::Corner c;
+      c.position = base + i;
+      if (normal_base != Mesh::kNone) c.normal = normal_base + i;
+      if (uv_base != Mesh::kNone) c.uv = uv_base + i;
+      return c;
+    };
+    auto triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+      if (mirrored) std::swap(b, c);
+      out.corners.insert(out.corners.end(), {corner(a), corner(b), corner(c)});
+      out.face_sizes.push_back(3);
+    };
+    const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+    const std::size_t n = indices.size();
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+      for (std::size_t i = 0; i + 2 < n; i += 3) triangle(indices[i], indices[i + 1], indices[i + 2]);
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      for (std::size_t i = 0; i + 2 < n; ++i) {
+        if (i % 2 == 0) triangle(indices[i], indices[i + 1], indices[i + 2]);
+        else triangle(indices[i + 1], indices[i], indices[i + 2]);
+      }
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+      for (std::size_t i = 1; i + 1 < n; ++i) triangle(indices[0], indices[i], indices[i + 1]);
+    }
+    // Points and lines have no faces; their vertices still count for the box.
+  }
+}
+
+Example load_gltf_example(const fs::path& path, bool binary) {
+  Example ex;
+  ex.source = path.string();
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(skip_image, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, ex.source)
+                         : loader.LoadASCIIFromFile(&model, &err, &warn, ex.source);
+  if (!ok) {
+    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+    fail(ErrorKind::Input, ex.source, {}, std::string("is not a valid ") + (binary ? "GLB" : "glTF") + " file: " + err,
+         "export the file again, or check it with scripts/validate-gltf");
+  }
+
+  // The default scene's roots; without scenes, every node no other node
+  // lists as a child.
+  std::vector<int> roots;
+  if (!model.scenes.empty()) {
+    const auto scene = static_cast<std::size_t>(model.defaultScene >= 0 ? model.defaultScene : 0);
+    if (scene < model.scenes.size()) roots = model.scenes[scene].nodes;
+  } else {
+    std::vector<bool> is_child(model.nodes.size(), false);
+    for (const tinygltf::Node& n : model.nodes)
+      for (int c : n.children)
+        if (c >= 0 && static_cast<std::size_t>(c) < is_child.size()) is_child[static_cast<std::size_t>(c)] = true;
+    for (std::size_t i = 0; i < model.nodes.size(); ++i)
+      if (!is_child[i]) roots.push_back(static_cast<int>(i));
+  }
+
+  // Depth first, children in order: parts come out in the file's node order.
+  // Each node is visited once, so a malformed file with cycles still ends.
+  std::vector<bool> visited(model.nodes.size(), false);
+  std::vector<std::pair<int, glm::dmat4>> stack;
+  for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, glm::dmat4(1.0));
+  while (!stack.empty()) {
+    const auto [index, parent] = stack.back();
+    stack.pop_back();
+    if (index < 0 || static_cast<std::size_t>(index) >= model.nodes.size()) continue;
+    if (visited[static_cast<std::size_t>(index)]) continue;
+    visited[static_cast<std::size_t>(index)] = true;
+    const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(index)];
+    const glm::dmat4 world = parent * local_matrix(node);
+    for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.emplace_back(*it, world);
+    if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= model.meshes.size()) continue;
+
+    const std::string who = "node " + std::to_string(index) + (node.name.empty() ? "" : " '" + node.name + "'");
+    if (node.name.empty()) {
+      fail(ErrorKind::Input, ex.source, {}, who + " has a mesh but no name: inference cannot tell which primitive it is",
+           "name each part's node after its primitive (e.g. `window.001`)");
+    }
+    Mesh mesh;
+    append_mesh(model, model.meshes[static_cast<std::size_t>(node.mesh)], world, ex.source, who, mesh);
+    if (mesh.positions.empty()) {
+      fail(ErrorKind::Input, ex.source, {}, who + " has a mesh without vertex positions",
+           "export the file again with geometry for every named part");
+    }
+    ex.boxes.push_back(box_of(node.name, 0, mesh, ex.meshes.size()));
+    ex.meshes.push_back(std::move(mesh));
+  }
+  if (ex.boxes.empty()) {
+    fail(ErrorKind::Input, ex.source, {}, "has no labelled objects; each part must be a named glTF node with a mesh",
+         "give each part its own node named after its primitive (e.g. `window.001`)");
+  }
+  return ex;
+}
+
+}  // namespace
+
+std::string strip_numeric_suffix(std::string_view name) {
+  const std::size_t dot = name.rfind('.');
+  if (dot == std::string_view::npos || dot == 0 || dot + 1 == name.size()) return std::string(name);
+  for (std::size_t i = dot + 1; i < name.size(); ++i)
+    if (name[i] < '0' || name[i] > '9') return std::string(name);
+  return std::string(name.substr(0, dot));
+}
+
+void update_bounds(Example& example) {
+  if (example.boxes.empty()) {
+    example.min = example.max = glm::dvec3(0.0);
+    return;
+  }
+  example.min = example.boxes.front().min;
+  example.max = example.boxes.front().max;
+  for (const LabelledBox& b : example.boxes) {
+    example.min = glm::min(example.min, b.min);
+    example.max = glm::max(example.max, b.max);
+  }
+}
+
+glm::dvec3 example_size(const Example& example) { return example.max - example.min; }
+
+double default_tolerance(const Example& example) {
+  const glm::dvec3 size = example_size(example);
+  return 1e-6 * std::max({size.x, size.y, size.z});
+}
+
+std::string describe_object(const LabelledBox& box) {
+  std::string text = "'" + box.object + "'";
+  if (box.line != 0) text += " (line " + std::to_string(box.line) + ")";
+  return text;
+}
+
+Example load_example(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) {
+    fail(ErrorKind::Io, path.string(), {}, "no such file", "check the path of the example");
+  }
+  if (fs::is_directory(path, ec)) {
+    fail(ErrorKind::Io, path.string(), {}, "is a folder, not an example file",
+         "name an .obj, .glb or .gltf file (the command line accepts folders)");
+  }
+  Example ex;
+  switch (format_of(path)) {
+    case Format::Obj: ex = load_obj_example(path); break;
+    case Format::Glb: ex = load_gltf_example(path, true); break;
+    case Format::Gltf: ex = load_gltf_example(path, false); break;
+    case Format::Other: not_an_example(path);
+  }
+  update_bounds(ex);
+
+  // A part may be flat (a facade panel has no thickness), but a part with
+  // no extent at all is a point that no scope can be fitted to.
+  const double tolerance = default_tolerance(ex);
+  for (const LabelledBox& b : ex.boxes) {
+    const glm::dvec3 size = b.max - b.min;
+    if (size.x <= tolerance && size.y <= tolerance && size.z <= tolerance) {
+      fail(ErrorKind::Input, ex.source, {b.line, b.line != 0 ? 1u : 0u},
+           "object " + describe_object(b) + " is a single point: its vertices have no extent on any axis",
+           "delete the object or give it its real geometry");
+    }
+  }
+  return ex;
+}
+
+std::vector<fs::path> example_files(const std::vector<std::string>& args) {
+  std::vector<fs::path> files;
+  for (const std::string& arg : args) {
+    const fs::path path(arg);
+    std::error_code ec;
+    if (!fs::exists(path, ec)) {
+      fail(ErrorKind::Io, arg, {}, "no such file or folder", "name example files (.obj, .glb, .gltf) or folders of them");
+    }
+    if (!fs::is_directory(path, ec)) {
+      if (format_of(path) == Format::Other) not_an_example(path);
+      files.push_back(path);
+      continue;
+    }
+    std::vector<fs::path> inside;
+    for (const fs::directory_entry& e : fs::directory_iterator(path, ec)) {
+      if (e.is_regular_file(ec) && format_of(e.path()) != Format::Other) inside.push_back(e.path());
+    }
+    if (ec) fail(ErrorKind::Io, arg, {}, "cannot list the folder: " + ec.message(), "check its permissions");
+    if (inside.empty()) {
+      fail(ErrorKind::Io, arg, {}, "the folder holds no example files (.obj, .glb or .gltf)",
+           "put the labelled examples there, or name the files themselves");
+    }
+    std::sort(inside.begin(), inside.end());
+    files.insert(files.end(), inside.begin(), inside.end());
+  }
+  return files;
+}
+
+}  // namespace vern

@@ -1,0 +1,78 @@
+// Loading labelled examples: the buildings that inference learns from.
+//
+// An example is a file of labelled parts (thesis chapter 9): each OBJ object
+// (`o name`), or each named glTF node with a mesh, is one primitive; its
+// label is the name with a Blender-style numeric suffix removed, so
+// "window.001" and "window.002" are both the primitive "window". Inference
+// works on the axis-aligned bounding box of each part; the meshes are kept
+// for whatever needs the shapes themselves.
+//
+// Coordinates stay as the file has them (world space). "Each example is
+// placed at its own origin": callers translate by -min.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "forward/mesh.hpp"
+
+namespace vern {
+
+// One labelled part and its world-space bounding box.
+struct LabelledBox {
+  std::string label;   // the primitive: the object's name without its numeric suffix
+  glm::dvec3 min{0.0}, max{0.0};
+  std::string object;  // the name as written in the file, for messages
+  std::uint32_t line = 0;  // OBJ: the line of its `o` statement; glTF: 0
+  std::uint32_t mesh = 0;  // index into Example::meshes
+};
+
+struct Example {
+  std::string source;  // the file, as named to load_example
+  std::vector<LabelledBox> boxes;  // in file order
+  std::vector<Mesh> meshes;        // world-space mesh of each box, same order
+  glm::dvec3 min{0.0}, max{0.0};   // bounds of all boxes
+};
+
+// Reads a labelled example: .obj (each object one part), .glb or .gltf
+// (each node with a mesh one part, its world transform applied; the name is
+// required). Throws vern::Error: Io when the file is missing or unreadable,
+// Input when it holds no labelled parts, geometry without a name, a part
+// that is a single point (no extent on any axis, within
+// default_tolerance), or is not a valid OBJ or glTF file; Usage for another
+// extension. A part flat on one axis (a facade panel) is fine.
+Example load_example(const std::filesystem::path& path);
+
+// The files that command-line arguments name, in the order given; a folder
+// stands for every .obj, .glb and .gltf file directly inside it, sorted by
+// name. Throws vern::Error (Io) for a path that does not exist or a folder
+// without example files, (Usage) for a file of another kind.
+std::vector<std::filesystem::path> example_files(const std::vector<std::string>& args);
+
+// "window.001" -> "window", "wall.12" -> "wall", "v1.5" -> "v1": a final
+// '.' followed only by digits is dropped. Names that would become empty
+// (".001") and names without such a suffix are kept whole.
+std::string strip_numeric_suffix(std::string_view name);
+
+// The bounds of all boxes (both zero when there are none).
+void update_bounds(Example& example);
+
+// The example's extent: max - min.
+glm::dvec3 example_size(const Example& example);
+
+// 1e-6 times the example's largest extent: the distance below which two
+// box bounds count as the same. Exporters write coordinates as 32-bit
+// floats, about 1e-7 relative noise; real gaps are far larger (1e-6 keeps a
+// 1 mm gap on a 100 m building).
+double default_tolerance(const Example& example);
+
+// "'window.001' (line 12)", or "'window.001'" when the line is unknown: how
+// messages name a part.
+std::string describe_object(const LabelledBox& box);
+
+}  // namespace vern

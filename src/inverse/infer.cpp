@@ -1,0 +1,55 @@
+#include "inverse/infer.hpp"
+
+#include <algorithm>
+
+#include "inverse/box_split.hpp"
+#include "inverse/merge.hpp"
+#include "inverse/rule_naming.hpp"
+#include "inverse/split_graph.hpp"
+#include "inverse/tidy_numbers.hpp"
+
+namespace vern {
+
+Inference infer(const std::vector<Example>& examples, const InferOptions& options) {
+  if (examples.empty()) throw Error(ErrorKind::Usage, "infer: error: no examples given");
+  Inference out;
+  out.tolerance = options.tolerance;
+  if (out.tolerance <= 0)
+    for (const auto& e : examples) out.tolerance = std::max(out.tolerance, default_tolerance(e));
+
+  Grammar graph;
+  std::vector<NodeId> roots;
+  for (std::size_t i = 0; i < examples.size(); ++i) {
+    roots.push_back(example_graph(graph, examples[i], BoxSplitOptions{out.tolerance}));
+    if (options.progress) options.progress(i + 1, examples.size());
+  }
+  MergeOptions merge;
+  merge.tolerance = out.tolerance;
+  NodeId root = merge_examples(graph, roots, merge);
+  root = tidy_numbers(graph, root, out.tolerance);
+  out.grammar = rules_for(graph, root, NamingOptions{options.start});
+
+  // @scope: each axis's size, or the range the examples span.
+  for (int axis = 0; axis < 3; ++axis) {
+    Range r{example_size(examples[0])[axis], example_size(examples[0])[axis]};
+    for (const auto& e : examples) {
+      r.lo = std::min(r.lo, example_size(e)[axis]);
+      r.hi = std::max(r.hi, example_size(e)[axis]);
+    }
+    r = {shortest_decimal(r.lo, out.tolerance, -1), shortest_decimal(r.hi, out.tolerance, +1)};
+    out.grammar.scope[axis] = range_expr(r, out.tolerance);
+  }
+
+  // The first mesh seen for each label stands for all its parts.
+  for (const auto& e : examples) {
+    for (const auto& box : e.boxes) {
+      // An example built in memory may have no meshes: its labels then
+      // fall back to the library's box when generated.
+      if (out.primitives.find(box.label) || box.mesh >= e.meshes.size()) continue;
+      out.primitives.add(box.label, normalised_primitive(e.meshes[box.mesh]));
+    }
+  }
+  return out;
+}
+
+}  // namespace vern

@@ -1,0 +1,40 @@
+// Inference as one call: labelled examples in, a readable grammar and the
+// primitive meshes it needs out (thesis chapters 9-11).
+//
+//   examples -> ordered-box split per example (box_split, split_graph)
+//            -> one interned graph, merged (merge)
+//            -> numbers a person would write (tidy_numbers)
+//            -> named rules (rule_naming)
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "forward/primitive_library.hpp"
+#include "graph/grammar.hpp"
+#include "inverse/example.hpp"
+
+namespace vern {
+
+struct InferOptions {
+  // Coordinates closer than this (metres) are the same coordinate; 0 means
+  // 1e-6 of the largest example's extent (see default_tolerance).
+  double tolerance = 0;
+  std::string start = "building";
+  // Called after each example is split: (done, total).
+  std::function<void(std::size_t, std::size_t)> progress;
+};
+
+struct Inference {
+  Grammar grammar;               // rules, start rule, @scope (not @primitives)
+  PrimitiveLibrary primitives;   // each label's mesh as first seen, in the unit box
+  double tolerance = 0;          // the tolerance used
+};
+
+// Throws vern::Error (Input) for examples that cannot be represented
+// (overlapping parts, parts no straight cut separates), naming the file and
+// the objects.
+Inference infer(const std::vector<Example>& examples, const InferOptions& options);
+
+}  // namespace vern

@@ -1,0 +1,33 @@
+// From a split tree to an operation graph (thesis chapter 9, toOp).
+//
+// A Split container becomes split(axis){ ~l1 : ... | ~l2 : ... } with each
+// part's length as its relative size, a Leaf becomes I(label), empty space
+// nil. Nodes are interned bottom-up (Grammar::intern), so equal subtrees,
+// within one example or across examples built into the same grammar, share
+// one node. The graph uses only split, primitive and nil: it derives the
+// example exactly, and deriving it needs no parsing.
+//
+// Exactness: deriving the graph on a scope at the origin whose size is the
+// example's extent (example_size) reproduces every part's box translated by
+// -example.min, within the split tolerance.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "graph/grammar.hpp"
+#include "inverse/box_split.hpp"
+#include "inverse/example.hpp"
+
+namespace vern {
+
+// The graph of a split tree over `boxes` (the boxes it was split from).
+// Throws vern::Error (Input) for an Unsplittable container, naming its
+// parts; `source` names the example file in that message.
+NodeId split_graph(Grammar& grammar, const SplitTree& tree, const std::vector<LabelledBox>& boxes,
+                   const std::string& source = {});
+
+// split_boxes then split_graph for one loaded example.
+NodeId example_graph(Grammar& grammar, const Example& example, const BoxSplitOptions& options);
+
+}  // namespace vern

@@ -1,0 +1,28 @@
+// Numbers a person would write (GRAMMAR.md, "Written grammars"), without
+// losing exactness: every example must still derive within tolerance.
+//
+//   - A split whose parts are all relative literals becomes small whole
+//     ratios when the lengths allow it: ~6.666666666666667 : ~3.3333333333333335
+//     is ~2 : ~1 (checked to 1e-9 relative, far below any tolerance).
+//   - Any other literal becomes the shortest decimal within the tolerance:
+//     0.30000000000000004 is 0.3.
+//   - A range rand(lo, hi) rounds outward to the shortest decimals within
+//     the tolerance (lo down, hi up), so every example stays inside it.
+#pragma once
+
+#include "graph/grammar.hpp"
+
+namespace vern {
+
+// The shortest decimal within tolerance of v (direction < 0: not above v;
+// > 0: not below v; 0: either side).
+double shortest_decimal(double v, double tolerance, int direction = 0);
+
+// Small whole ratios for a split's relative sizes, if they exist: values
+// r_i = k * n_i with whole n_i <= max_whole, to 1e-9 relative.
+std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes, int max_whole = 60);
+
+// Rewrites the sizes below root; returns the new root (nodes interned in g).
+NodeId tidy_numbers(Grammar& g, NodeId root, double tolerance);
+
+}  // namespace vern

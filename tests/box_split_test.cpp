@@ -1,0 +1,385 @@
+// The ordered-box algorithm: the thesis's interval example, gaps, flat
+// parts, float noise, overlaps, unsplittable pinwheels, and a large random
+// building.
+#include "inverse/box_split.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numeric>
+#include <random>
+
+#include "graph/error.hpp"
+#include "support/example_helpers.hpp"
+
+namespace vern {
+namespace {
+
+using Kind = SplitTree::Kind;
+using test::part;
+
+// The boxes of all leaves below t, sorted.
+void collect(const SplitTree& t, std::vector<std::uint32_t>& out) {
+  if (t.kind == Kind::Leaf) out.push_back(t.box);
+  for (const SplitTree& c : t.children) collect(c, out);
+}
+std::vector<std::uint32_t> leaves(const SplitTree& t) {
+  std::vector<std::uint32_t> out;
+  collect(t, out);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The invariants every tree keeps: a split's children tile it exactly
+// along its axis and span it on the other two; a leaf fills its container.
+void check_tree(const SplitTree& t, const std::vector<LabelledBox>& boxes, double tolerance) {
+  switch (t.kind) {
+    case Kind::Leaf:
+      ASSERT_LT(t.box, boxes.size());
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(t.min[i], boxes[t.box].min[i], tolerance);
+        EXPECT_NEAR(t.max[i], boxes[t.box].max[i], tolerance);
+      }
+      EXPECT_TRUE(t.children.empty());
+      break;
+    case Kind::Empty: EXPECT_TRUE(t.children.empty()); break;
+    case Kind::Unsplittable:
+      for (const SplitTree& c : t.children) EXPECT_EQ(c.kind, Kind::Leaf);
+      break;
+    case Kind::Split: {
+      ASSERT_GE(t.axis, 0);
+      ASSERT_LE(t.axis, 2);
+      ASSERT_GE(t.children.size(), 2u);
+      double at = t.min[t.axis];
+      for (const SplitTree& c : t.children) {
+        EXPECT_EQ(c.min[t.axis], at);  // exactly: snapped coordinates
+        EXPECT_GT(c.max[t.axis], c.min[t.axis]);  // no zero-length parts
+        at = c.max[t.axis];
+        for (int i = 0; i < 3; ++i) {
+          if (i == t.axis) continue;
+          EXPECT_EQ(c.min[i], t.min[i]);
+          EXPECT_EQ(c.max[i], t.max[i]);
+        }
+        check_tree(c, boxes, tolerance);
+      }
+      EXPECT_EQ(at, t.max[t.axis]);
+      break;
+    }
+  }
+}
+
+SplitTree split(const std::vector<LabelledBox>& boxes, double tolerance = 1e-9) {
+  const SplitTree t = split_boxes(boxes, {tolerance}, "test.obj");
+  check_tree(t, boxes, std::max(tolerance, 1e-12));
+  return t;
+}
+
+std::string split_error(const std::vector<LabelledBox>& boxes, double tolerance = 1e-9) {
+  try {
+    split_boxes(boxes, {tolerance}, "test.obj");
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Input) << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << "no error";
+  return {};
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// Thesis 9.1.2: intervals (0,4) (1,5) (2,5) (5,9) (8,9) (11,14) split into
+// {(0,4), (1,5), (2,5)}, {(5,9), (8,9)} and {(11,14)}. In 3-D each interval
+// is a box along x in its own row along y, so the groups can be split
+// further.
+TEST(BoxSplit, ThesisIntervalsFallIntoThreeGroups) {
+  const double intervals[6][2] = {{0, 4}, {1, 5}, {2, 5}, {5, 9}, {8, 9}, {11, 14}};
+  std::vector<LabelledBox> boxes;
+  for (std::uint32_t i = 0; i < 6; ++i) {
+    boxes.push_back(part("rect", {intervals[i][0], i, 0}, {intervals[i][1], i + 1, 1}, i));
+  }
+  const SplitTree t = split(boxes);
+  ASSERT_EQ(t.kind, Kind::Split);
+  EXPECT_EQ(t.axis, 0);
+  ASSERT_EQ(t.children.size(), 4u);
+  EXPECT_EQ(leaves(t.children[0]), (std::vector<std::uint32_t>{0, 1, 2}));
+  EXPECT_EQ(leaves(t.children[1]), (std::vector<std::uint32_t>{3, 4}));
+  EXPECT_EQ(t.children[2].kind, Kind::Empty);  // nothing between 9 and 11
+  EXPECT_EQ(t.children[2].min, glm::dvec3(9, 0, 0));
+  EXPECT_EQ(t.children[2].max, glm::dvec3(11, 6, 1));
+  EXPECT_EQ(leaves(t.children[3]), (std::vector<std::uint32_t>{5}));
+  EXPECT_EQ(t.children[0].max.x, 5.0);
+  EXPECT_EQ(t.children[1].min.x, 5.0);
+  const SplitTreeStats s = split_tree_stats(t);
+  EXPECT_EQ(s.leaves, 6u);
+  EXPECT_EQ(s.unsplittable, 0u);
+}
+
+TEST(BoxSplit, ASinglePartIsALeaf) {
+  const SplitTree t = split({part("roof", {1, 2, 3}, {4, 6, 8})});
+  EXPECT_EQ(t.kind, Kind::Leaf);
+  EXPECT_EQ(t.box, 0u);
+  EXPECT_EQ(t.min, glm::dvec3(1, 2, 3));
+  EXPECT_EQ(t.max, glm::dvec3(4, 6, 8));
+  EXPECT_EQ(split_boxes({}, {}).kind, Kind::Empty);
+}
+
+TEST(BoxSplit, GapsBecomeEmptyPartsOfTheRightSize) {
+  // A tall box, a gap of 2, a low box: along x, then along y for the low one.
+  const SplitTree t = split({part("a", {0, 0, 0}, {1, 2, 1}, 0), part("b", {3, 0, 0}, {4, 1, 1}, 1)});
+  ASSERT_EQ(t.kind, Kind::Split);
+  EXPECT_EQ(t.axis, 0);
+  ASSERT_EQ(t.children.size(), 3u);
+  EXPECT_EQ(t.children[0].kind, Kind::Leaf);
+  EXPECT_EQ(t.children[1].kind, Kind::Empty);
+  EXPECT_EQ(t.children[1].size(), glm::dvec3(2, 2, 1));
+  const SplitTree& low = t.children[2];
+  ASSERT_EQ(low.kind, Kind::Split);
+  EXPECT_EQ(low.axis, 1);
+  ASSERT_EQ(low.children.size(), 2u);
+  EXPECT_EQ(low.children[0].kind, Kind::Leaf);
+  EXPECT_EQ(low.children[0].box, 1u);
+  EXPECT_EQ(low.children[1].kind, Kind::Empty);
+  EXPECT_EQ(low.children[1].min, glm::dvec3(3, 1, 0));
+  EXPECT_EQ(low.children[1].max, glm::dvec3(4, 2, 1));
+}
+
+// Five boxes around a square, each pushing the next: no straight cut
+// separates any of them.
+std::vector<LabelledBox> pinwheel(glm::dvec3 at = glm::dvec3(0.0)) {
+  return test::numbered({part("a", at + glm::dvec3(0, 0, 0), at + glm::dvec3(2, 1, 1)),
+                         part("b", at + glm::dvec3(2, 0, 0), at + glm::dvec3(3, 2, 1)),
+                         part("c", at + glm::dvec3(1, 2, 0), at + glm::dvec3(3, 3, 1)),
+                         part("d", at + glm::dvec3(0, 1, 0), at + glm::dvec3(1, 3, 1)),
+                         part("e", at + glm::dvec3(1, 1, 0), at + glm::dvec3(2, 2, 1))});
+}
+
+TEST(BoxSplit, APinwheelIsUnsplittableAndEnds) {
+  const std::vector<LabelledBox> boxes = pinwheel();
+  const SplitTree t = split(boxes);
+  ASSERT_EQ(t.kind, Kind::Unsplittable);
+  ASSERT_EQ(t.children.size(), 5u);
+  for (std::uint32_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(t.children[i].box, i);
+    EXPECT_EQ(t.children[i].min, boxes[i].min);
+    EXPECT_EQ(t.children[i].max, boxes[i].max);
+  }
+
+  // Inside a building, the rest still splits around it.
+  std::vector<LabelledBox> more = pinwheel();
+  more.push_back(part("tower", {4, 0, 0}, {5, 3, 4}, 5));
+  const SplitTree u = split(more);
+  ASSERT_EQ(u.kind, Kind::Split);
+  EXPECT_EQ(u.axis, 0);
+  ASSERT_EQ(u.children.size(), 3u);
+  const SplitTree& left = u.children[0];  // the pinwheel's column, split off its empty top
+  ASSERT_EQ(left.kind, Kind::Split);
+  EXPECT_EQ(left.axis, 2);
+  EXPECT_EQ(left.children[0].kind, Kind::Unsplittable);
+  EXPECT_EQ(left.children[1].kind, Kind::Empty);
+  EXPECT_EQ(u.children[1].kind, Kind::Empty);
+  EXPECT_EQ(u.children[2].kind, Kind::Leaf);
+  EXPECT_EQ(split_tree_stats(u).unsplittable, 1u);
+}
+
+TEST(BoxSplit, OverlapsNameBothObjectsAndHowMuch) {
+  const std::string e = split_error(test::numbered(
+      {part("wall", {0, 0, 0}, {4, 1, 3}), part("window", {3, 0.5, 1}, {5, 1, 2}), part("roof", {0, 0, 3}, {4, 1, 4})}));
+  EXPECT_TRUE(contains(e, "test.obj:1:1: error: objects 'wall.0' (line 1) and 'window.1' (line 2) overlap by "
+                          "1 x 0.5 x 1 (along x, y, z)"))
+      << e;
+  EXPECT_TRUE(contains(e, "hint: inference needs non-overlapping parts; separate or merge these objects")) << e;
+}
+
+TEST(BoxSplit, DuplicatesAndCoplanarOrEmbeddedFlatPartsOverlap) {
+  // Three copies of one box: three pairs.
+  std::string e = split_error(test::numbered(
+      {part("rect", {0, 0, 0}, {1, 1, 1}), part("rect", {0, 0, 0}, {1, 1, 1}), part("rect", {0, 0, 0}, {1, 1, 1})}));
+  EXPECT_TRUE(contains(e, "objects 'rect.0' (line 1) and 'rect.1' (line 2) overlap by 1 x 1 x 1 (along x, y, z); "
+                          "2 more pairs overlap"))
+      << e;
+
+  // Two facade panels in one plane.
+  e = split_error(test::numbered({part("rect", {0, 0, 0}, {2, 0, 2}), part("window", {1, 0, 1}, {3, 0, 3})}));
+  EXPECT_TRUE(contains(e, "overlap by 1 x 0 x 1")) << e;
+
+  // A panel inside a wall.
+  e = split_error(test::numbered({part("wall", {0, 0, 0}, {4, 1, 3}), part("window", {1, 0.5, 1}, {2, 0.5, 2})}));
+  EXPECT_TRUE(contains(e, "'wall.0' (line 1) and 'window.1' (line 2) overlap")) << e;
+
+  // Overlaps inside a splittable building are found too.
+  std::vector<LabelledBox> boxes = pinwheel();
+  boxes.push_back(part("tower", {4, 0, 0}, {5, 3, 4}, 5));
+  boxes.push_back(part("tower", {4.5, 1, 1}, {5, 2, 2}, 6));
+  e = split_error(boxes);
+  EXPECT_TRUE(contains(e, "test.obj:6:1: error: objects 'tower.5' (line 6) and 'tower.6' (line 7) overlap by "
+                          "0.5 x 1 x 1"))
+      << e;
+}
+
+TEST(BoxSplit, TouchingPartsAndPanelsOnAFaceDoNotOverlap) {
+  // A panel lying on a wall's face: allowed, but no cut can separate it.
+  const SplitTree t = split(test::numbered({part("wall", {0, 0, 0}, {4, 1, 3}), part("panel", {1, 0, 1}, {2, 0, 2})}));
+  EXPECT_EQ(t.kind, Kind::Unsplittable);
+  // Boxes sharing faces, edges and corners split.
+  const SplitTree u = split(test::numbered({part("a", {0, 0, 0}, {1, 1, 1}), part("b", {1, 0, 0}, {2, 1, 1}),
+                                            part("c", {0, 1, 0}, {1, 2, 1}), part("d", {1, 1, 1}, {2, 2, 2})}));
+  EXPECT_EQ(split_tree_stats(u).leaves, 4u);
+  EXPECT_EQ(split_tree_stats(u).unsplittable, 0u);
+}
+
+// A grid of boxes sharing faces, each bound moved by up to 1e-9 as float
+// export noise would: the default tolerance snaps them together.
+TEST(BoxSplit, FloatNoiseAtSharedFacesSplitsCleanly) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> noise(-1e-9, 1e-9);
+  std::vector<LabelledBox> boxes;
+  const glm::dvec3 cell(2, 1.5, 3);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 2; ++k) {
+        const glm::dvec3 lo = glm::dvec3(i, j, k) * cell;
+        const glm::dvec3 hi = lo + cell;
+        boxes.push_back(part(k == 1 ? "window" : "rect", lo + glm::dvec3(noise(rng), noise(rng), noise(rng)),
+                             hi + glm::dvec3(noise(rng), noise(rng), noise(rng)),
+                             static_cast<std::uint32_t>(boxes.size())));
+      }
+  const double tolerance = default_tolerance(test::example_of(boxes));
+  const SplitTree t = split(boxes, tolerance);
+  const SplitTreeStats s = split_tree_stats(t);
+  EXPECT_EQ(s.leaves, 24u);
+  EXPECT_EQ(s.empties, 0u);
+  EXPECT_EQ(s.unsplittable, 0u);
+  // Compared exactly, the same noise makes slivers of overlap.
+  EXPECT_TRUE(contains(split_error(boxes, 0.0), "overlap by"));
+}
+
+TEST(BoxSplit, FacadesFlatOnOneAxisSplitOnTheOthers) {
+  // The thesis's house with a garage as a 2-D facade: every part at y = 0.
+  const double third = 10.0 / 3.0, two_thirds = 20.0 / 3.0;
+  const std::vector<LabelledBox> boxes = test::numbered({part("rect", {0, 0, 0}, {two_thirds, 0, two_thirds}),
+                                                         part("triangle", {0, 0, two_thirds}, {two_thirds, 0, 10}),
+                                                         part("rect", {two_thirds, 0, 0}, {10, 0, third})});
+  const SplitTree t = split(boxes);
+  ASSERT_EQ(t.kind, Kind::Split);
+  EXPECT_EQ(t.axis, 0);
+  EXPECT_EQ(t.size().y, 0.0);
+  ASSERT_EQ(t.children.size(), 2u);
+  EXPECT_EQ(t.children[0].axis, 2);
+  EXPECT_EQ(t.children[1].axis, 2);
+  EXPECT_EQ(t.children[1].children[1].kind, Kind::Empty);
+  const SplitTreeStats s = split_tree_stats(t);
+  EXPECT_EQ(s.leaves, 3u);
+  EXPECT_EQ(s.empties, 1u);
+}
+
+TEST(BoxSplit, AFlatPartCannotBeCutOutOfAThickerSpace) {
+  // A panel at y = 0 beside a solid box 1 deep: cutting the panel out along
+  // y would make a part of zero length, which derivation skips.
+  const SplitTree t = split(test::numbered({part("panel", {0, 0, 0}, {2, 0, 2}), part("box", {3, 0, 0}, {5, 1, 2})}));
+  ASSERT_EQ(t.kind, Kind::Split);
+  ASSERT_EQ(t.children.size(), 3u);
+  EXPECT_EQ(t.children[0].kind, Kind::Unsplittable);
+  EXPECT_EQ(t.children[0].children.size(), 1u);
+  EXPECT_EQ(t.children[2].kind, Kind::Leaf);
+}
+
+// Relabels a tree's leaves through a permutation of the boxes.
+SplitTree renumbered(SplitTree t, const std::vector<std::uint32_t>& new_index) {
+  if (t.kind == Kind::Leaf) t.box = new_index[t.box];
+  for (SplitTree& c : t.children) c = renumbered(std::move(c), new_index);
+  return t;
+}
+
+TEST(BoxSplit, TheTreeDoesNotDependOnTheOrderOfTheParts) {
+  std::vector<LabelledBox> boxes = pinwheel();
+  boxes.push_back(part("tower", {4, 0, 0}, {5, 3, 4}, 5));
+  boxes.push_back(part("tower", {5, 0, 0}, {6, 3, 2}, 6));
+  boxes.push_back(part("door", {7, 1, 0}, {8, 2, 1}, 7));
+  const SplitTree t = split(boxes);
+  EXPECT_EQ(split(boxes), t);
+
+  std::vector<std::uint32_t> order(boxes.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::reverse(order.begin(), order.end());
+  std::vector<LabelledBox> reversed;
+  for (std::uint32_t i : order) reversed.push_back(boxes[i]);
+  // Unsplittable children come in box order, which reversal changes.
+  SplitTree r = renumbered(split(reversed), order);
+  std::function<void(SplitTree&)> sort_groups = [&](SplitTree& x) {
+    if (x.kind == Kind::Unsplittable) {
+      std::sort(x.children.begin(), x.children.end(),
+                [](const SplitTree& a, const SplitTree& b) { return a.box < b.box; });
+    }
+    for (SplitTree& c : x.children) sort_groups(c);
+  };
+  sort_groups(r);
+  EXPECT_EQ(r, t);
+}
+
+// Cuts [lo, hi] into `count` boxes by random guillotine cuts; about one in
+// ten boxes leaves some empty space beside it.
+void guillotine(glm::dvec3 lo, glm::dvec3 hi, std::uint32_t count, std::mt19937_64& rng,
+                std::vector<LabelledBox>& out) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  if (count == 1) {
+    if (unit(rng) < 0.1) {
+      const auto a = static_cast<glm::length_t>(rng() % 3);
+      const double keep = 0.5 + 0.4 * unit(rng);
+      if (rng() % 2 == 0) hi[a] = lo[a] + keep * (hi[a] - lo[a]);
+      else lo[a] = hi[a] - keep * (hi[a] - lo[a]);
+    }
+    out.push_back(part(rng() % 2 == 0 ? "rect" : "window", lo, hi, static_cast<std::uint32_t>(out.size())));
+    return;
+  }
+  // An axis in proportion to its length keeps the pieces near cubes.
+  const glm::dvec3 size = hi - lo;
+  double pick = unit(rng) * (size.x + size.y + size.z);
+  glm::length_t a = 0;
+  while (a < 2 && pick >= size[a]) pick -= size[a++];
+  const auto k = static_cast<std::uint32_t>(1 + rng() % (count - 1));
+  const double at = lo[a] + size[a] * static_cast<double>(k) / static_cast<double>(count);
+  glm::dvec3 mid_hi = hi, mid_lo = lo;
+  mid_hi[a] = at;
+  mid_lo[a] = at;
+  guillotine(lo, mid_hi, k, rng, out);
+  guillotine(mid_lo, hi, count - k, rng, out);
+}
+
+// Not a timing test: the algorithm is O(n log n + n m), and a quadratic one
+// would not finish 100,000 parts in a test's time.
+TEST(BoxSplit, HundredThousandGuillotineBoxesSplitIntoAsManyLeaves) {
+  constexpr std::uint32_t n = 100'000;
+  std::mt19937_64 rng(2024);
+  std::vector<LabelledBox> boxes;
+  boxes.reserve(n);
+  guillotine({0, 0, 0}, {1000, 800, 600}, n, rng, boxes);
+  std::shuffle(boxes.begin(), boxes.end(), rng);
+  ASSERT_EQ(boxes.size(), n);
+  const double tolerance = default_tolerance(test::example_of(boxes));
+  const SplitTree t = split_boxes(boxes, {tolerance});
+  const SplitTreeStats s = split_tree_stats(t);
+  EXPECT_EQ(s.leaves, n);
+  EXPECT_EQ(s.unsplittable, 0u);
+  EXPECT_GT(s.empties, 0u);
+  // Each box in exactly one leaf that fits it (one assertion, not 100,000).
+  std::vector<int> seen(n, 0);
+  std::size_t misfits = 0;
+  std::function<void(const SplitTree&)> visit = [&](const SplitTree& x) {
+    if (x.kind == Kind::Leaf) {
+      ++seen[x.box];
+      const LabelledBox& b = boxes[x.box];
+      for (int i = 0; i < 3; ++i) {
+        if (std::abs(x.min[i] - b.min[i]) > tolerance || std::abs(x.max[i] - b.max[i]) > tolerance) ++misfits;
+      }
+    }
+    for (const SplitTree& c : x.children) visit(c);
+  };
+  visit(t);
+  EXPECT_EQ(misfits, 0u);
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(n));
+}
+
+}  // namespace
+}  // namespace vern

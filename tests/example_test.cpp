@@ -1,0 +1,268 @@
+// Loading labelled examples: OBJ and glTF parts, Blender suffixes, folders,
+// and the errors a user sees for files inference cannot use.
+#include "inverse/example.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+
+#include "forward/gltf_writer.hpp"
+#include "forward/obj_writer.hpp"
+#include "graph/error.hpp"
+#include "graph/parser.hpp"
+#include "support/example_helpers.hpp"
+#include "support/run_command.hpp"
+
+namespace vern {
+namespace {
+
+using test::TempFolder;
+using test::write_text;
+
+// An axis-aligned box as an OBJ object (relative indices: position free).
+std::string box_obj(const std::string& name, glm::dvec3 a, glm::dvec3 b) {
+  std::string text = "o " + name + "\n";
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 p((i & 1) ? b.x : a.x, (i & 2) ? b.y : a.y, (i & 4) ? b.z : a.z);
+    text += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+  }
+  // Corners -8..-1 are vertices 0..7 above.
+  text += "f -8 -6 -5 -7\nf -4 -3 -1 -2\nf -8 -7 -3 -4\nf -6 -2 -1 -5\nf -8 -4 -2 -6\nf -7 -5 -1 -3\n";
+  return text;
+}
+
+// The message of the error that loading throws, checking its kind.
+std::string load_error(const std::filesystem::path& path, ErrorKind kind = ErrorKind::Input) {
+  try {
+    load_example(path);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), kind) << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << "no error loading " << path;
+  return {};
+}
+
+std::string files_error(const std::vector<std::string>& args, ErrorKind kind) {
+  try {
+    example_files(args);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), kind) << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << "no error";
+  return {};
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(Example, BlenderSuffixesAreStrippedFromLabels) {
+  EXPECT_EQ(strip_numeric_suffix("window.001"), "window");
+  EXPECT_EQ(strip_numeric_suffix("wall.12"), "wall");
+  EXPECT_EQ(strip_numeric_suffix("v1.5"), "v1");
+  EXPECT_EQ(strip_numeric_suffix("wall.001.002"), "wall.001");  // one suffix only
+  EXPECT_EQ(strip_numeric_suffix("roof"), "roof");
+  EXPECT_EQ(strip_numeric_suffix("door.left"), "door.left");
+  EXPECT_EQ(strip_numeric_suffix("door.1a"), "door.1a");
+  EXPECT_EQ(strip_numeric_suffix("door."), "door.");
+  EXPECT_EQ(strip_numeric_suffix(".001"), ".001");  // nothing would be left
+  EXPECT_EQ(strip_numeric_suffix("window_3"), "window_3");
+}
+
+TEST(Example, ObjObjectsArePartsWithBoxesLabelsAndLines) {
+  TempFolder dir;
+  write_text(dir / "house.obj", "# a wall with two windows\n" + box_obj("wall", {0, 0, 0}, {6, 0.5, 3}) +
+                                    box_obj("window.001", {1, -0.25, 1}, {2, 0, 2}) +
+                                    box_obj("window.002", {4, -0.25, 1}, {5, 0, 2}));
+  const Example ex = load_example(dir / "house.obj");
+  EXPECT_EQ(ex.source, (dir / "house.obj").string());
+  ASSERT_EQ(ex.boxes.size(), 3u);
+  ASSERT_EQ(ex.meshes.size(), 3u);
+  EXPECT_EQ(ex.boxes[0].label, "wall");
+  EXPECT_EQ(ex.boxes[1].label, "window");
+  EXPECT_EQ(ex.boxes[2].label, "window");
+  EXPECT_EQ(ex.boxes[1].object, "window.001");
+  EXPECT_EQ(ex.boxes[0].line, 2u);
+  EXPECT_EQ(ex.boxes[1].line, 17u);
+  EXPECT_EQ(ex.boxes[2].mesh, 2u);
+  EXPECT_EQ(ex.boxes[1].min, glm::dvec3(1, -0.25, 1));
+  EXPECT_EQ(ex.boxes[1].max, glm::dvec3(2, 0, 2));
+  // Meshes stay in world space, one per part.
+  EXPECT_EQ(ex.meshes[2].min_corner(), glm::dvec3(4, -0.25, 1));
+  EXPECT_EQ(ex.meshes[0].face_sizes.size(), 6u);
+  EXPECT_EQ(ex.min, glm::dvec3(0, -0.25, 0));
+  EXPECT_EQ(ex.max, glm::dvec3(6, 0.5, 3));
+  EXPECT_EQ(example_size(ex), glm::dvec3(6, 0.75, 3));
+  EXPECT_DOUBLE_EQ(default_tolerance(ex), 6e-6);
+  EXPECT_EQ(describe_object(ex.boxes[1]), "'window.001' (line 17)");
+}
+
+TEST(Example, FlatPartsAreAllowed) {
+  TempFolder dir;
+  // A 2-D facade as in the thesis's example files: every part at y = 0.
+  write_text(dir / "facade.obj",
+             "o rect\nv 0 0 0\nv 3.33333 0 0\nv 3.33333 0 6.66667\nv 0 0 6.66667\nf 1 2 3 4\n"
+             "o triangle.001\nv 0 0 6.66667\nv 3.33333 0 6.66667\nv 1.6 0 10\nf 5 6 7\n");
+  const Example ex = load_example(dir / "facade.obj");
+  ASSERT_EQ(ex.boxes.size(), 2u);
+  EXPECT_EQ(ex.boxes[1].label, "triangle");
+  EXPECT_EQ(example_size(ex).y, 0.0);
+}
+
+TEST(Example, EmptyFilesAndFilesWithoutObjectsAreErrors) {
+  TempFolder dir;
+  write_text(dir / "empty.obj", "");
+  std::string e = load_error(dir / "empty.obj");
+  EXPECT_TRUE(contains(e, "empty.obj: error: has no labelled objects; each part must be an OBJ object `o name`")) << e;
+
+  write_text(dir / "comments.obj", "# nothing here\nmtllib x.mtl\nv 0 0 0\n");
+  e = load_error(dir / "comments.obj");
+  EXPECT_TRUE(contains(e, "has no labelled objects")) << e;
+}
+
+TEST(Example, UnnamedGeometryIsAnErrorAtItsLine) {
+  TempFolder dir;
+  write_text(dir / "unnamed.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\n\nf 1 2 3\n" + box_obj("wall", {0, 0, 0}, {1, 1, 1}));
+  const std::string e = load_error(dir / "unnamed.obj");
+  EXPECT_TRUE(contains(e, "unnamed.obj:5:1: error: these faces have no name")) << e;
+  EXPECT_TRUE(contains(e, "hint: start each part with `o <label>`")) << e;
+}
+
+TEST(Example, APartThatIsASinglePointIsAnError) {
+  TempFolder dir;
+  write_text(dir / "point.obj", box_obj("wall", {0, 0, 0}, {4, 1, 3}) + "o speck.001\nv 2 2 2\nf -1 -1 -1\n");
+  const std::string e = load_error(dir / "point.obj");
+  EXPECT_TRUE(contains(e, "point.obj:16:1: error: object 'speck.001' (line 16) is a single point")) << e;
+}
+
+TEST(Example, BinaryFilesAreNotObj) {
+  TempFolder dir;
+  write_text(dir / "model.obj", std::string("\x7f" "ELF\x02\x01\x01\x00\x00\x00", 10) + "\x03\x00\x3e");
+  std::string e = load_error(dir / "model.obj");
+  EXPECT_TRUE(contains(e, "not an OBJ")) << e;
+
+  write_text(dir / "noise.obj", "\x89PNG\r\n\x1a\n garbage");
+  e = load_error(dir / "noise.obj");
+  EXPECT_TRUE(contains(e, "does not look like an OBJ file")) << e;
+}
+
+TEST(Example, MissingFilesFoldersAndOtherExtensions) {
+  TempFolder dir;
+  EXPECT_TRUE(contains(load_error(dir / "nope.obj", ErrorKind::Io), "no such file"));
+  EXPECT_TRUE(contains(load_error(dir.path(), ErrorKind::Io), "is a folder"));
+  write_text(dir / "house.stl", "solid x\n");
+  EXPECT_TRUE(contains(load_error(dir / "house.stl", ErrorKind::Usage), "examples are labelled .obj, .glb or .gltf"));
+}
+
+TEST(Example, FolderArgumentsExpandToTheirExampleFilesSorted) {
+  TempFolder dir;
+  std::filesystem::create_directories(dir / "set/sub");
+  for (const char* name : {"set/b.obj", "set/a.GLB", "set/c.gltf", "set/notes.txt", "set/sub/d.obj", "z.obj", "y.obj"})
+    write_text(dir / name, "");
+  const std::vector<std::filesystem::path> files =
+      example_files({(dir / "z.obj").string(), (dir / "set").string(), (dir / "y.obj").string()});
+  EXPECT_EQ(files, (std::vector<std::filesystem::path>{dir / "z.obj", dir / "set/a.GLB", dir / "set/b.obj",
+                                                       dir / "set/c.gltf", dir / "y.obj"}));
+
+  std::string e = files_error({(dir / "missing").string()}, ErrorKind::Io);
+  EXPECT_TRUE(contains(e, "missing: error: no such file or folder")) << e;
+  e = files_error({(dir / "set/sub/..").string(), (dir / "set/sub").string(), (dir / "set/notes.txt").string()},
+                  ErrorKind::Usage);
+  EXPECT_TRUE(contains(e, "notes.txt: error: is not an example file")) << e;
+  std::filesystem::create_directories(dir / "empty");
+  e = files_error({(dir / "empty").string()}, ErrorKind::Io);
+  EXPECT_TRUE(contains(e, "holds no example files")) << e;
+}
+
+// What the writers produce reads back as the same parts.
+TEST(Example, GltfAndObjWrittenByTheWritersReadBackToTheSameBoxes) {
+  const Grammar g = read_grammar_file(VERN_SOURCE_DIR "/data/grammars/better_roofs.grm");
+  DeriveOptions o;
+  o.seed = 4;
+  const Derivation d = derive(g, o);
+  ASSERT_GT(d.terminals.size(), 10u);
+  Scene scene;
+  scene.labels = d.labels;
+  const glm::dvec3 offset(5, -2, 1);
+  scene.variants.push_back({"house", offset, d.terminals});
+  const auto expected = test::translated(test::derived_parts(d), offset);
+
+  TempFolder dir;
+  const PrimitiveLibrary library = PrimitiveLibrary::builtin();
+  for (const std::string name : {"house.glb", "house.gltf", "house.obj"}) {
+    SCOPED_TRACE(name);
+    if (name.ends_with(".obj")) write_obj(scene, library, dir / name);
+    else write_gltf(scene, library, dir / name);
+    const Example ex = load_example(dir / name);
+    EXPECT_EQ(ex.boxes.size(), d.terminals.size());
+    EXPECT_EQ(ex.meshes.size(), d.terminals.size());
+    EXPECT_TRUE(test::same_boxes(expected, ex.boxes, 1e-6));
+    if (!name.ends_with(".obj")) {
+      EXPECT_EQ(ex.boxes[0].line, 0u);
+      EXPECT_EQ(ex.boxes[0].object, ex.boxes[0].label);
+    }
+  }
+}
+
+std::string base64(const std::string& bytes) {
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t got = std::min<std::size_t>(3, bytes.size() - i);
+    std::uint32_t chunk = 0;
+    for (std::size_t k = 0; k < 3; ++k) chunk = (chunk << 8) | (k < got ? static_cast<unsigned char>(bytes[i + k]) : 0u);
+    for (std::size_t k = 0; k < 4; ++k) out += k <= got ? digits[(chunk >> (18 - 6 * k)) & 63] : '=';
+  }
+  return out;
+}
+
+// One triangle (0,0,0) (1,0,0) (0,1,0) under a parent turned a quarter
+// about z; the child is moved and scaled: its world box is
+// (-2, 1, 0) - (0, 3, 0).
+std::string triangle_gltf(const std::string& child_name) {
+  const float v[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  std::string bytes(sizeof v, '\0');
+  std::memcpy(bytes.data(), v, sizeof v);
+  return R"({"asset": {"version": "2.0"},
+  "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,)" + base64(bytes) + R"("}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "nodes": [{"name": "group", "rotation": [0, 0, 0.7071067811865476, 0.7071067811865476], "children": [1]},
+            {)" + child_name + R"("mesh": 0, "translation": [1, 0, 0], "scale": [2, 2, 2]}],
+  "scenes": [{"nodes": [0]}], "scene": 0})";
+}
+
+TEST(Example, GltfNodesApplyTheirWorldTransform) {
+  TempFolder dir;
+  write_text(dir / "panel.gltf", triangle_gltf(R"("name": "panel.003", )"));
+  const Example ex = load_example(dir / "panel.gltf");
+  ASSERT_EQ(ex.boxes.size(), 1u);
+  EXPECT_EQ(ex.boxes[0].label, "panel");
+  EXPECT_EQ(ex.boxes[0].object, "panel.003");
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(ex.boxes[0].min[i], glm::dvec3(-2, 1, 0)[i], 1e-6);
+    EXPECT_NEAR(ex.boxes[0].max[i], glm::dvec3(0, 3, 0)[i], 1e-6);
+  }
+  EXPECT_EQ(ex.meshes[0].face_sizes, std::vector<std::uint32_t>{3});
+}
+
+TEST(Example, GltfErrors) {
+  TempFolder dir;
+  write_text(dir / "unnamed.gltf", triangle_gltf(""));
+  std::string e = load_error(dir / "unnamed.gltf");
+  EXPECT_TRUE(contains(e, "unnamed.gltf: error: node 1 has a mesh but no name")) << e;
+
+  write_text(dir / "broken.glb", "glTF not really");
+  e = load_error(dir / "broken.glb");
+  EXPECT_TRUE(contains(e, "broken.glb: error: is not a valid GLB file")) << e;
+
+  write_text(dir / "bare.gltf", R"({"asset": {"version": "2.0"}, "nodes": [{"name": "empty"}]})");
+  e = load_error(dir / "bare.gltf");
+  EXPECT_TRUE(contains(e, "has no labelled objects; each part must be a named glTF node with a mesh")) << e;
+}
+
+}  // namespace
+}  // namespace vern

@@ -1,0 +1,82 @@
+// infer and check as a user meets them: the bundled examples end to end,
+// and bad input refused with a clear message and nothing written.
+#include <gtest/gtest.h>
+
+#include "support/run_command.hpp"
+
+namespace vern {
+namespace {
+
+using test::list_folder;
+using test::read_file;
+using test::run_program;
+using test::TempFolder;
+using test::write_text;
+
+const std::string kExamples = VERN_SOURCE_DIR "/data/examples/";
+
+TEST(InferCli, GarageExamplesToGrammarToCheckToNewBuildings) {
+  TempFolder dir;
+  auto r = run_program("infer", {kExamples + "garage", "-o", "garage.grm"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("infer: 10 examples -> garage.grm"), std::string::npos) << r.err;
+  EXPECT_EQ(list_folder(dir.path()), (std::vector<std::string>{"garage.grm", "garage.prims.mtl", "garage.prims.obj"}));
+  const std::string grammar = read_file(dir / "garage.grm");
+  EXPECT_NE(grammar.find("@primitives \"garage.prims.obj\""), std::string::npos);
+  EXPECT_NE(grammar.find("@scope 10, 10, 10"), std::string::npos) << grammar;
+
+  r = run_program("check", {"garage.grm", kExamples + "garage"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("10 of 10 examples derivable"), std::string::npos) << r.out;
+
+  r = run_program("generate", {"garage.grm", "-n", "5", "-o", "new/"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;  // the meshes came with the grammar
+  EXPECT_NE(read_file(dir / "new/variant_004.obj").find("o triangle"), std::string::npos);
+}
+
+TEST(InferCli, CheckSaysWhenABuildingDoesNotFitAndWhere) {
+  TempFolder dir;
+  ASSERT_EQ(run_program("infer", {kExamples + "garage", "-o", "garage.grm", "-q"}, dir.path()).exit_code, 0);
+  const auto r = run_program("check", {"garage.grm", kExamples + "better_roofs/variant_000.obj"}, dir.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("variant_000.obj: NOT derivable: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("0 of 1 example derivable"), std::string::npos) << r.out;
+}
+
+TEST(InferCli, UsageErrors) {
+  auto r = run_program("infer", {kExamples + "garage"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no output grammar given"), std::string::npos);
+  r = run_program("infer", {"-o", "x.grm"});
+  EXPECT_EQ(r.exit_code, 2);
+  r = run_program("infer", {"--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("usage: infer EXAMPLES"), std::string::npos);
+  r = run_program("check", {"only.grm"});
+  EXPECT_EQ(r.exit_code, 2);
+}
+
+TEST(InferCli, BadExamplesAreRefusedAndNothingIsWritten) {
+  TempFolder dir;
+  write_text(dir / "empty.obj", "");
+  write_text(dir / "binary.obj", std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10));
+  write_text(dir / "overlap.obj",
+             "o wall\nv 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nv 0 0 1\nv 2 0 1\nv 2 1 1\nv 0 1 1\nf 1 2 3 4\nf 5 6 7 8\n"
+             "o door\nv 1 0 0\nv 3 0 0\nv 3 1 0\nv 1 1 0\nv 1 0 1\nv 3 0 1\nv 3 1 1\nv 1 1 1\nf 9 10 11 12\nf 13 14 15 16\n");
+  for (const std::string bad : {"empty.obj", "binary.obj", "overlap.obj", "missing.obj"}) {
+    SCOPED_TRACE(bad);
+    const auto r = run_program("infer", {bad, "-o", "style.grm"}, dir.path());
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.err.find(bad), std::string::npos) << r.err;  // the message names the file
+    EXPECT_FALSE(std::filesystem::exists(dir / "style.grm"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "style.prims.obj"));
+  }
+  const auto r = run_program("infer", {"overlap.obj", "-o", "style.grm"}, dir.path());
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("wall"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("door"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace vern

@@ -1,0 +1,119 @@
+// Inference end to end: derived examples -> infer -> derive again.
+#include "inverse/infer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "forward/derive.hpp"
+#include "graph/parser.hpp"
+#include "graph/structural.hpp"
+#include "graph/writer.hpp"
+#include "inverse/check.hpp"
+#include "support/derive_helpers.hpp"
+#include "support/example_helpers.hpp"
+
+namespace vern {
+namespace {
+
+// Do the two sets of parts match one to one, same label and corners within
+// tol (after moving `expected` by -offset)? Names the first part without a match.
+::testing::AssertionResult same_parts(const std::vector<vern::LabelledBox>& got,
+                                      const std::vector<vern::LabelledBox>& expected, glm::dvec3 offset, double tol) {
+  if (got.size() != expected.size())
+    return ::testing::AssertionFailure() << got.size() << " parts derived, " << expected.size() << " expected";
+  std::vector<bool> used(got.size(), false);
+  for (const auto& e : expected) {
+    bool found = false;
+    for (std::size_t i = 0; i < got.size() && !found; ++i) {
+      if (used[i] || got[i].label != e.label) continue;
+      const glm::dvec3 dmin = glm::abs(got[i].min - (e.min - offset));
+      const glm::dvec3 dmax = glm::abs(got[i].max - (e.max - offset));
+      if (std::max({dmin.x, dmin.y, dmin.z, dmax.x, dmax.y, dmax.z}) <= tol) used[i] = found = true;
+    }
+    if (!found)
+      return ::testing::AssertionFailure() << "no derived part matches " << e.label << " at (" << e.min.x - offset.x
+                                           << ", " << e.min.y - offset.y << ", " << e.min.z - offset.z << ")";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+Derivation derive_seed(const Grammar& g, std::uint64_t seed) {
+  DeriveOptions o;
+  o.seed = seed;
+  return derive(g, o);
+}
+
+// Grammars whose buildings have no overlapping parts (all bundled ones).
+std::vector<std::string> grammars() { return test::bundled_grammars(); }
+
+TEST(Infer, OneExampleComesBackExactlyForEveryBundledGrammar) {
+  for (const auto& file : grammars()) {
+    SCOPED_TRACE(file);
+    const Grammar source = read_grammar_file(file);
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      const Example example = test::example_of(test::derived_parts(derive_seed(source, seed)));
+      const Inference inferred = infer({example}, {});
+      // The grammar text parses back to the same graph.
+      const Grammar reread = parse_grammar(write_grammar(inferred.grammar));
+      ASSERT_TRUE(equal_grammars(reread, inferred.grammar));
+      // One example: nothing is random, any seed derives it.
+      DeriveOptions o;
+      o.seed = 99;
+      const Derivation again = derive(reread, o);
+      EXPECT_TRUE(same_parts(test::derived_parts(again), example.boxes, example.min, 2 * inferred.tolerance));
+    }
+  }
+}
+
+TEST(Infer, TwentyExamplesAreAllDerivableFromWhatIsInferredFromThem) {
+  for (const auto& file : grammars()) {
+    SCOPED_TRACE(file);
+    const Grammar source = read_grammar_file(file);
+    std::vector<Example> examples;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed)
+      examples.push_back(test::example_of(test::derived_parts(derive_seed(source, seed))));
+    const Inference inferred = infer(examples, {});
+    const Grammar reread = parse_grammar(write_grammar(inferred.grammar));
+    for (const auto& e : examples) {
+      std::vector<vern::LabelledBox> boxes = e.boxes;
+      for (auto& b : boxes) b.min -= e.min, b.max -= e.min;
+      CheckOptions o;
+      o.tolerance = 2 * inferred.tolerance;
+      const CheckResult r = check_example(reread, boxes, example_size(e), o);
+      EXPECT_TRUE(r.derivable) << r.mismatch;
+    }
+  }
+}
+
+TEST(Infer, GarageExamplesGiveAFewRulesWithTheHeightRangingOverTheExamples) {
+  const Grammar source = read_grammar_file(VERN_SOURCE_DIR "/data/grammars/garage_machine.grm");
+  std::vector<Example> examples;
+  double lowest = 1e9, highest = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    examples.push_back(test::example_of(test::derived_parts(derive_seed(source, seed))));
+    for (const auto& b : examples.back().boxes)
+      if (b.label == "rect" && b.max.z - b.min.z < 5) {
+        lowest = std::min(lowest, b.max.z - b.min.z);
+        highest = std::max(highest, b.max.z - b.min.z);
+      }
+  }
+  const Inference inferred = infer(examples, {});
+  EXPECT_LE(inferred.grammar.rules.size(), 6u) << write_grammar(inferred.grammar);
+  // Both garage sides stay alternatives; every derived garage is within the
+  // examples' own lowest and highest (to the tolerance the ranges round by).
+  bool left = false, right = false;
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {
+    const Derivation d = derive_seed(inferred.grammar, seed);
+    for (const auto& b : test::derived_parts(d)) {
+      if (b.label != "rect" || b.max.z - b.min.z >= 5) continue;
+      EXPECT_GE(b.max.z - b.min.z, lowest - 2 * inferred.tolerance);
+      EXPECT_LE(b.max.z - b.min.z, highest + 2 * inferred.tolerance);
+      (b.min.x < 1 ? left : right) = true;
+    }
+  }
+  EXPECT_TRUE(left);
+  EXPECT_TRUE(right);
+  EXPECT_LT(lowest, highest);
+}
+
+}  // namespace
+}  // namespace vern

@@ -1,0 +1,116 @@
+// Helpers for the inference tests: examples built by hand or from
+// derivations, and comparing sets of labelled boxes. (vern::LabelledBox is
+// spelled out: derive_helpers.hpp has a vern::test::LabelledBox of its own.)
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "forward/derive.hpp"
+#include "inverse/example.hpp"
+
+namespace vern::test {
+
+// A part as a file would give it: object "label.<index>" on line index + 1.
+inline vern::LabelledBox part(const std::string& label, glm::dvec3 min, glm::dvec3 max, std::uint32_t index = 0) {
+  vern::LabelledBox b;
+  b.label = label;
+  b.min = min;
+  b.max = max;
+  b.object = label + "." + std::to_string(index);
+  b.line = index + 1;
+  b.mesh = index;
+  return b;
+}
+
+// Numbers each part's object name and line by its position.
+inline std::vector<vern::LabelledBox> numbered(std::vector<vern::LabelledBox> boxes) {
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    boxes[i].object = boxes[i].label + "." + std::to_string(i);
+    boxes[i].line = i + 1;
+    boxes[i].mesh = i;
+  }
+  return boxes;
+}
+
+// An example of these boxes (without meshes), its bounds computed.
+inline Example example_of(std::vector<vern::LabelledBox> boxes, std::string source = "test.obj") {
+  Example ex;
+  ex.source = std::move(source);
+  ex.boxes = std::move(boxes);
+  update_bounds(ex);
+  return ex;
+}
+
+// The terminals of a derivation as the parts of an example.
+inline std::vector<vern::LabelledBox> derived_parts(const Derivation& d) {
+  std::vector<vern::LabelledBox> out;
+  out.reserve(d.terminals.size());
+  for (std::uint32_t i = 0; i < d.terminals.size(); ++i) {
+    const Bounds b = world_bounds(d.terminals[i].scope);
+    out.push_back(part(d.labels[d.terminals[i].label], b.min, b.max, i));
+  }
+  return out;
+}
+
+inline std::vector<vern::LabelledBox> translated(std::vector<vern::LabelledBox> boxes, glm::dvec3 by) {
+  for (vern::LabelledBox& b : boxes) {
+    b.min += by;
+    b.max += by;
+  }
+  return boxes;
+}
+
+inline std::string describe(const vern::LabelledBox& b) {
+  std::ostringstream s;
+  s.precision(17);
+  s << b.label << " [" << b.min.x << ", " << b.min.y << ", " << b.min.z << "] - [" << b.max.x << ", " << b.max.y
+    << ", " << b.max.z << "]";
+  return s.str();
+}
+
+// The two multisets of labelled boxes are equal, coordinates within eps.
+// Matching rather than sorting: float noise must not reorder equal keys.
+inline ::testing::AssertionResult same_boxes(const std::vector<vern::LabelledBox>& expected,
+                                             const std::vector<vern::LabelledBox>& actual, double eps) {
+  if (expected.size() != actual.size()) {
+    return ::testing::AssertionFailure() << "expected " << expected.size() << " boxes, got " << actual.size();
+  }
+  std::map<std::string, std::vector<const vern::LabelledBox*>> by_label;
+  for (const vern::LabelledBox& b : actual) by_label[b.label].push_back(&b);
+  for (auto& [label, list] : by_label) {
+    std::sort(list.begin(), list.end(), [](const vern::LabelledBox* p, const vern::LabelledBox* q) { return p->min.x < q->min.x; });
+  }
+  std::map<const vern::LabelledBox*, bool> used;
+  for (const vern::LabelledBox& e : expected) {
+    const auto found = by_label.find(e.label);
+    if (found == by_label.end()) return ::testing::AssertionFailure() << "no box labelled " << e.label;
+    const auto& list = found->second;
+    auto it = std::lower_bound(list.begin(), list.end(), e.min.x - eps,
+                               [](const vern::LabelledBox* p, double x) { return p->min.x < x; });
+    bool matched = false;
+    for (; it != list.end() && (*it)->min.x <= e.min.x + eps; ++it) {
+      const vern::LabelledBox& a = **it;
+      if (used[&a]) continue;
+      bool close = true;
+      for (int i = 0; i < 3; ++i) {
+        close = close && std::abs(a.min[i] - e.min[i]) <= eps && std::abs(a.max[i] - e.max[i]) <= eps;
+      }
+      if (close) {
+        used[&a] = true;
+        matched = true;
+        break;
+      }
+    }
+    if (!matched) return ::testing::AssertionFailure() << "no match within " << eps << " for " << describe(e);
+  }
+  return ::testing::AssertionSuccess();
+}
+
+}  // namespace vern::test
