@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <new>
 
 #include "forward/gltf_writer.hpp"
 #include "forward/obj_writer.hpp"
@@ -14,6 +13,7 @@
 #include "graph/atomic_file.hpp"
 #include "graph/parser.hpp"
 #include "support/command_line.hpp"
+#include "support/guarded_main.hpp"
 #include "support/primitive_sources.hpp"
 
 namespace fs = std::filesystem;
@@ -194,18 +194,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  install_interrupt_cleanup();
-  try {
-    return run(argc, argv);
-  } catch (const Error& e) {
-    std::cerr << e.what() << "\n";
-    return exit_code(e.kind());
-  } catch (const std::bad_alloc&) {
-    std::cerr << "generate: error: out of memory\n  hint: lower --count or --max-terminals\n";
-    return exit_code(ErrorKind::Limit);
-  } catch (const std::exception& e) {
-    std::cerr << "generate: internal error: " << e.what() << "\n";
-    return exit_code(ErrorKind::Internal);
-  }
-}
+int main(int argc, char** argv) { return guarded_main("generate", run, argc, argv); }

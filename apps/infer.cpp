@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <new>
 
 #include "forward/obj_writer.hpp"
 #include "forward/variants.hpp"
@@ -13,6 +12,7 @@
 #include "graph/writer.hpp"
 #include "inverse/infer.hpp"
 #include "support/command_line.hpp"
+#include "support/guarded_main.hpp"
 
 namespace fs = std::filesystem;
 using namespace vern;
@@ -141,18 +141,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  install_interrupt_cleanup();
-  try {
-    return run(argc, argv);
-  } catch (const Error& e) {
-    std::cerr << e.what() << "\n";
-    return exit_code(e.kind());
-  } catch (const std::bad_alloc&) {
-    std::cerr << "infer: error: out of memory\n";
-    return exit_code(ErrorKind::Limit);
-  } catch (const std::exception& e) {
-    std::cerr << "infer: internal error: " << e.what() << "\n";
-    return exit_code(ErrorKind::Internal);
-  }
-}
+int main(int argc, char** argv) { return guarded_main("infer", run, argc, argv); }

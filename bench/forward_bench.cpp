@@ -70,4 +70,3 @@ BENCHMARK(BM_WriteGlb)->Unit(benchmark::kMillisecond);
 }  // namespace
 }  // namespace vern
 
-BENCHMARK_MAIN();

@@ -93,6 +93,18 @@ TEST(Merge, WholeRunBecomesTheRepeatItself) {
   EXPECT_EQ(rep->count.literal(), 3.0);
 }
 
+TEST(Merge, NestedSplitsAlongOneAxisAreFlattened) {
+  Grammar g;
+  const auto roots = examples(g, {"split(x){ ~2 : I(a) | ~6 : split(x){ ~1 : I(b) | ~2 : I(c) } | 3 : split(y){ ~1 : I(d) | ~1 : I(e) } }"});
+  const auto& s = std::get<Split>(g.op(merge_examples(g, roots, {})));
+  ASSERT_EQ(s.parts.size(), 4u);
+  EXPECT_EQ(s.parts[1].size.value.literal(), 2.0);
+  EXPECT_EQ(s.parts[2].size.value.literal(), 4.0);
+  EXPECT_TRUE(s.parts[2].size.relative);
+  EXPECT_EQ(g.label(std::get<Primitive>(g.op(s.parts[2].child)).label), "c");
+  EXPECT_NE(std::get_if<Split>(&g.op(s.parts[3].child)), nullptr);  // along y: kept
+}
+
 TEST(Merge, SizesWithinToleranceAreOneSize) {
   Grammar g;
   const auto roots = examples(g, {right_garage(3), right_garage(3 + 1e-12)});

@@ -197,9 +197,34 @@ class Simplifier {
   // holding repeatN: on its own scope the tiles come out the same, since
   // repeatN cuts equal tiles. Only literal sizes qualify: tiles of a range
   // are equal to each other, but the parts of a split draw independently.
+  // A part holding a split along the same axis whose sizes are all
+  // relative literals is that split's parts, in place: part size s and
+  // inner sizes c_j give parts s * c_j / sum(c), relative or absolute as
+  // the outer part was, which derive the same lengths. Inner absolute
+  // sizes or ranges would not (they share space differently), so those stay.
+  void flatten_into(std::vector<SplitPart>& out, const SplitPart& part, const Expr& axis) {
+    const auto outer = part.size.value.literal();
+    const auto* inner = std::get_if<Split>(&g_.op(part.child));
+    if (outer && inner && inner->axis == axis) {
+      double total = 0;
+      bool literal_relative = true;
+      for (const auto& q : inner->parts) {
+        const auto v = q.size.value.literal();
+        literal_relative = literal_relative && q.size.relative && v;
+        if (v) total += *v;
+      }
+      if (literal_relative && total > 0) {
+        for (const auto& q : inner->parts)
+          flatten_into(out, {{Expr::number(*outer * *q.size.value.literal() / total), part.size.relative}, q.child}, axis);
+        return;
+      }
+    }
+    out.push_back(part);
+  }
+
   NodeId simplify_split(const Split& s) {
     std::vector<SplitPart> parts;
-    for (const auto& p : s.parts) parts.push_back({p.size, run(p.child)});
+    for (const auto& p : s.parts) flatten_into(parts, {p.size, run(p.child)}, s.axis);
     const Axis* axis = nullptr;
     Axis literal_axis{};
     if (s.axis.node(s.axis.root()).kind == ExprKind::Axis) {

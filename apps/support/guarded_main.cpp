@@ -1,0 +1,27 @@
+#include "support/guarded_main.hpp"
+
+#include <iostream>
+#include <new>
+
+#include "graph/atomic_file.hpp"
+#include "graph/error.hpp"
+
+namespace vern {
+
+int guarded_main(const char* program, int (*run)(int, char**), int argc, char** argv) {
+  install_interrupt_cleanup();
+  try {
+    return run(argc, argv);
+  } catch (const Error& e) {
+    std::cerr << e.what() << "\n";
+    return exit_code(e.kind());
+  } catch (const std::bad_alloc&) {
+    std::cerr << program << ": error: out of memory\n  hint: ask for less (fewer buildings, lower limits)\n";
+    return exit_code(ErrorKind::Limit);
+  } catch (const std::exception& e) {
+    std::cerr << program << ": internal error: " << e.what() << "\n  hint: please report it with the input\n";
+    return exit_code(ErrorKind::Internal);
+  }
+}
+
+}  // namespace vern

@@ -1,0 +1,12 @@
+// The shared outer shell of every command: interrupt clean-up, and every
+// failure printed once with its exit code (README, "Errors and exit codes").
+#pragma once
+
+namespace vern {
+
+// Runs run(argc, argv) and returns its exit code; a vern::Error prints its
+// message and returns its kind's code, running out of memory is a limit,
+// anything else an internal error.
+int guarded_main(const char* program, int (*run)(int, char**), int argc, char** argv);
+
+}  // namespace vern

@@ -1,0 +1,4 @@
+// One benchmark program for every bench/*.cpp: run scripts/bench.
+#include <benchmark/benchmark.h>
+
+BENCHMARK_MAIN();
