@@ -105,6 +105,48 @@ TEST(Merge, NestedSplitsAlongOneAxisAreFlattened) {
   EXPECT_NE(std::get_if<Split>(&g.op(s.parts[3].child)), nullptr);  // along y: kept
 }
 
+TEST(Merge, PlacesThatCombineFreelyBecomeChoicesAndCoupledOnesStay) {
+  // Rows of three cells over three examples: nine distinct fillings of
+  // cells holding a, b or c: free combination, each cell a choice.
+  Grammar g;
+  std::vector<std::string> rows;
+  const char* fill[][3] = {{"a", "b", "c"}, {"b", "a", "a"}, {"c", "c", "b"}, {"a", "a", "b"}, {"b", "c", "a"},
+                           {"c", "b", "b"}, {"a", "c", "c"}, {"b", "b", "c"}, {"c", "a", "a"}};
+  for (int e = 0; e < 3; ++e) {
+    std::string t = "split(y)";
+    t += "{";
+    for (int r = 0; r < 3; ++r) {
+      const auto* f = fill[3 * e + r];
+      t += std::string(r ? " | " : " ") + "~1 : split(x){ ~1 : I(" + f[0] + ") | ~1 : I(" + f[1] + ") | ~1 : I(" + f[2] + ") }";
+    }
+    rows.push_back(t + " }");
+  }
+  const NodeId free_rows = merge_examples(g, examples(g, rows), {});
+  // Each cell saw a, b and c: one choice, so a row is three of it, and the
+  // three equal rows are one repeated row: repeatN(y, 3){ repeatN(x, 3){ choice } }.
+  const auto* column = std::get_if<RepeatN>(&g.op(free_rows));
+  ASSERT_NE(column, nullptr);
+  const auto* row = std::get_if<RepeatN>(&g.op(column->child));
+  ASSERT_NE(row, nullptr);
+  const auto* cell = std::get_if<Choose>(&g.op(row->child));
+  ASSERT_NE(cell, nullptr);
+  ASSERT_EQ(cell->options.size(), 3u);
+  for (const auto& o : cell->options) EXPECT_EQ(o.priority.literal(), 9.0);
+
+  // A roof end is two gable halves or two hip corners: two fillings of two
+  // places with two alternatives each stay two alternatives, never mixed.
+  Grammar h;
+  const NodeId ends = merge_examples(
+      h, examples(h, {"split(y){ ~1 : I(half_gable) | ~1 : I(other_half) }", "split(y){ ~1 : I(corner) | ~1 : I(other_corner) }"}),
+      {});
+  const auto& choose = std::get<Choose>(h.op(ends));
+  ASSERT_EQ(choose.options.size(), 2u);
+  for (const auto& o : choose.options) {
+    const auto& s = std::get<Split>(h.op(o.child));
+    for (const auto& p : s.parts) EXPECT_NE(std::get_if<Primitive>(&h.op(p.child)), nullptr);
+  }
+}
+
 TEST(Merge, SizesWithinToleranceAreOneSize) {
   Grammar g;
   const auto roots = examples(g, {right_garage(3), right_garage(3 + 1e-12)});

@@ -1,5 +1,7 @@
 #include "inverse/merge.hpp"
 
+#include "inverse/generalise.hpp"
+
 #include <algorithm>
 #include <map>
 #include <unordered_map>
@@ -50,7 +52,35 @@ class Unifier {
     NodeId first;                     // a member: the operation's form
     std::vector<std::size_t> children;  // child groups, in order
     std::vector<Range> ranges;        // per split part, over the members
+    std::vector<double> weights;      // per child, for chooses: summed over the members
   };
+
+  // A choose without conditions and with literal priorities: what merging
+  // makes. Two of them over the same alternatives are one choice, whatever
+  // their weights; the weights add up.
+  static bool plain(const Choose& c) {
+    return std::all_of(c.options.begin(), c.options.end(),
+                       [](const ChooseOption& o) { return o.condition.empty() && o.priority.literal(); });
+  }
+
+  void visit_choose(NodeId id, const Choose& c, const std::vector<std::size_t>& children) {
+    std::map<std::size_t, double> weight;  // child group -> weight; ordered, so the key is canonical
+    for (std::size_t i = 0; i < children.size(); ++i) weight[children[i]] += *c.options[i].priority.literal();
+    std::string key = "choose";
+    for (const auto& [child, w] : weight) key += "," + std::to_string(child);
+    auto [it, fresh] = group_by_key_.emplace(std::move(key), groups_.size());
+    if (fresh) {
+      Group group{id, {}, {}, {}};
+      for (const auto& [child, w] : weight) {
+        group.children.push_back(child);
+        group.weights.push_back(0);
+      }
+      groups_.push_back(std::move(group));
+    }
+    Group& group = groups_[it->second];
+    for (std::size_t k = 0; k < group.children.size(); ++k) group.weights[k] += weight[group.children[k]];
+    group_of_.emplace(id, it->second);
+  }
 
   // Post-order: children's groups exist before their parents' keys.
   void visit(NodeId id) {
@@ -61,9 +91,13 @@ class Unifier {
       visit(c);
       children.push_back(group_of_.at(c));
     }
+    if (const auto* c = std::get_if<Choose>(&op); c && plain(*c)) {
+      visit_choose(id, *c, children);
+      return;
+    }
     std::string key = structure_key(op, children);
     auto [it, fresh] = group_by_key_.emplace(std::move(key), groups_.size());
-    if (fresh) groups_.push_back({id, children, {}});
+    if (fresh) groups_.push_back({id, children, {}, {}});
     Group& group = groups_[it->second];
     if (const auto* s = std::get_if<Split>(&op)) {
       // Each part's range starts at the first member's own value.
@@ -131,6 +165,13 @@ class Unifier {
   }
 
   NodeId build(const Group& group, const std::vector<NodeId>& built) {
+    if (!group.weights.empty()) {
+      Choose choose;
+      for (std::size_t k = 0; k < group.children.size(); ++k)
+        choose.options.push_back({Expr{}, Expr::number(group.weights[k]), built[group.children[k]]});
+      if (choose.options.size() == 1) return choose.options[0].child;
+      return g_.intern({std::move(choose), {}});
+    }
     Operation op = g_.op(group.first);
     auto slots = child_slots(op);
     for (std::size_t i = 0; i < slots.size(); ++i) *slots[i] = built[group.children[i]];
@@ -308,15 +349,26 @@ class Simplifier {
 }  // namespace
 
 NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeOptions& options) {
-  // Runs of equal parts are found while sizes are still exact numbers.
-  Simplifier exact(g, options);
   Choose all;
-  for (NodeId r : roots) all.options.push_back({Expr{}, Expr::number(1.0), exact.run(r)});
+  for (NodeId r : roots) all.options.push_back({Expr{}, Expr::number(1.0), r});
   const NodeId examples = g.intern({std::move(all), {}});
   // One example is reproduced as it is: ranges come only from variation
   // across examples, never from one building's own parts.
-  const NodeId unified = roots.size() > 1 ? Unifier(g, options).run(examples) : examples;
-  return Simplifier(g, options).run(unified);
+  if (roots.size() == 1) return Simplifier(g, options).run(examples);
+  // Repeats are found at the end, once alike parts line up: finding them in
+  // each example first would give rows of different fillings different
+  // shapes (a | a | b is a repeat and a part, a | b | a is three parts).
+  NodeId merged = Unifier(g, options).run(examples);
+  // Free combinations make parents alike, which unify, which may show more
+  // free combinations above: repeat until nothing changes (a few rounds:
+  // each round generalises at least one frame, and frames only merge).
+  for (int round = 0; round < 16; ++round) {
+    bool changed = false;
+    merged = generalise_free_parts(g, merged, options, changed);
+    if (!changed) break;
+    merged = Unifier(g, options).run(merged);
+  }
+  return Simplifier(g, options).run(merged);
 }
 
 }  // namespace vern

@@ -4,22 +4,25 @@
 //
 // The examples' graphs live in one Grammar, interned, so identical parts
 // are already one node (10.2). merge_examples
-//   1. turns runs of equal parts into repeats, in each example, while the
-//      sizes are still exact;
-//   2. puts the examples under one choose, one option each (10.1);
-//   3. unifies nodes of equal structure anywhere in the graph (the same
+//   1. puts the examples under one choose, one option each (10.1);
+//   2. unifies nodes of equal structure anywhere in the graph (the same
 //      operation, axis, relative flags, counts and children, whatever the
 //      sizes) into one node whose sizes are ranges over them (10.3), bottom
-//      up, so parents whose children coincide unify in turn;
-//   4. adds the priorities of alternatives that became one (10.4).
+//      up, so parents whose children coincide unify in turn; chooses over
+//      the same alternatives are one, their weights added;
+//   3. makes places that combine freely choices (generalise.hpp), which
+//      unifies more; 2 and 3 repeat until nothing changes;
+//   4. adds the priorities of alternatives that became one (10.4), turns
+//      runs of equal parts into repeats and flattens nested splits.
 //
-// Step 3 needs two examples or more: one example is reproduced exactly as
-// it is, since ranges should come from variation across examples, never
-// from one building's own parts (which only parameters could share
-// exactly). Every example stays derivable: each of its sizes lies in its range and
-// each of its parts was replaced by a node that covers it. Unifying equal
-// structures everywhere is the thesis's rule; it also joins parts that only
-// look alike (its balcony bars), which keeping parts apart must refine.
+// Steps 2 and 3 need two examples or more: one example is reproduced
+// exactly as it is, since ranges should come from variation across
+// examples, never from one building's own parts (which only parameters
+// could share exactly). Every example stays derivable: each of its sizes
+// lies in its range and each of its parts was replaced by a node that
+// covers it. Unifying equal structures everywhere is the thesis's rule; it
+// also joins parts that only look alike (its balcony bars), which keeping
+// parts apart must refine.
 #pragma once
 
 #include <vector>

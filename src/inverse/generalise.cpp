@@ -1,0 +1,160 @@
+#include "inverse/generalise.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include "graph/overload.hpp"
+
+namespace vern {
+
+namespace {
+
+// The middle of a size's range (a literal is its own middle).
+std::optional<double> middle(const Expr& e) {
+  if (auto r = literal_range(e)) return (r->lo + r->hi) / 2;
+  return std::nullopt;
+}
+
+struct Frame {
+  std::vector<NodeId> members;  // distinct split nodes, in discovery order
+};
+
+class Generaliser {
+ public:
+  Generaliser(Grammar& g, const MergeOptions& o) : g_(g), opt_(o) {}
+
+  NodeId run(NodeId root, bool& changed) {
+    collect(root);
+    std::unordered_map<NodeId, NodeId> replace;
+    for (auto& [key, frame] : frames_) {
+      if (frame.members.size() < 2) continue;
+      if (auto merged = generalise(frame)) {
+        for (NodeId m : frame.members) replace[m] = *merged;
+      }
+    }
+    changed = !replace.empty();
+    return changed ? substitute(root, replace) : root;
+  }
+
+ private:
+  // Every split below root, grouped by frame; references counted, since a
+  // part used in two places was seen twice.
+  void collect(NodeId id) {
+    if (references_[id]++ > 0) return;
+    const Operation& op = g_.op(id);
+    for (NodeId c : node_children(op)) collect(c);
+    const auto* s = std::get_if<Split>(&op);
+    if (!s || s->parts.size() < 2) return;
+    if (s->axis.node(s->axis.root()).kind != ExprKind::Axis) return;
+    double total = 0;
+    std::vector<double> mids;
+    for (const auto& p : s->parts) {
+      const auto m = middle(p.size.value);
+      if (!m) return;
+      mids.push_back(*m);
+      total += *m;
+    }
+    if (!(total > 0)) return;
+    std::string key = std::to_string(s->axis.node(s->axis.root()).op) + "/" + std::to_string(s->parts.size());
+    for (std::size_t i = 0; i < s->parts.size(); ++i)
+      key += (s->parts[i].size.relative ? "~" : "=") + std::to_string(std::lround(1000 * mids[i] / total));
+    frames_[key].members.push_back(id);
+  }
+
+  std::optional<NodeId> generalise(const Frame& frame) {
+    // A copy: interning below may grow the arena and move its nodes.
+    const Split first = std::get<Split>(g_.op(frame.members.front()));
+    const std::size_t n = first.parts.size();
+    // What each position held, with how often.
+    std::vector<std::vector<std::pair<NodeId, double>>> seen(n);
+    std::size_t busiest = 0;
+    for (NodeId m : frame.members) {
+      const auto& s = std::get<Split>(g_.op(m));
+      const double weight = references_.at(m);
+      for (std::size_t i = 0; i < n; ++i) {
+        auto& at = seen[i];
+        auto it = std::find_if(at.begin(), at.end(), [&](const auto& e) { return e.first == s.parts[i].child; });
+        if (it == at.end()) at.emplace_back(s.parts[i].child, weight);
+        else it->second += weight;
+      }
+    }
+    for (const auto& at : seen) busiest = std::max(busiest, at.size());
+    // Few fillings for the variety at each place: the places are coupled.
+    if (busiest < 2 || frame.members.size() < 2 * busiest) return std::nullopt;
+
+    Split merged;
+    merged.axis = first.axis;
+    for (std::size_t i = 0; i < n; ++i) {
+      Range range{0, 0};
+      bool has_range = false;
+      for (NodeId m : frame.members) {
+        if (auto r = literal_range(std::get<Split>(g_.op(m)).parts[i].size.value)) {
+          range = has_range ? Range{std::min(range.lo, r->lo), std::max(range.hi, r->hi)} : *r;
+          has_range = true;
+        }
+      }
+      SplitPart part;
+      part.size = {range_expr(range, opt_.tolerance), first.parts[i].size.relative};
+      if (seen[i].size() == 1) {
+        part.child = seen[i][0].first;
+      } else {
+        Choose choose;
+        for (const auto& [child, weight] : seen[i]) choose.options.push_back({Expr{}, Expr::number(weight), child});
+        part.child = g_.intern({std::move(choose), {}});
+      }
+      merged.parts.push_back(std::move(part));
+    }
+    return g_.intern({std::move(merged), {}});
+  }
+
+  // Rebuilds the graph below root with some nodes replaced.
+  NodeId substitute(NodeId id, const std::unordered_map<NodeId, NodeId>& replace) {
+    if (auto it = replace.find(id); it != replace.end()) return it->second;
+    if (auto it = rebuilt_.find(id); it != rebuilt_.end()) return it->second;
+    Operation op = g_.op(id);
+    bool any = false;
+    auto child = [&](NodeId& c) {
+      const NodeId n = substitute(c, replace);
+      any = any || n != c;
+      c = n;
+    };
+    std::visit(Overload{
+                   [&](Split& s) {
+                     for (auto& p : s.parts) child(p.child);
+                   },
+                   [&](Repeat& r) { child(r.child); },
+                   [&](RepeatN& r) { child(r.child); },
+                   [&](Choose& c) {
+                     for (auto& o : c.options) child(o.child);
+                   },
+                   [&](Translate& t) { child(t.child); },
+                   [&](Scale& s) { child(s.child); },
+                   [&](Rotate& r) { child(r.child); },
+                   [&](Comp& c) {
+                     for (auto& p : c.parts) child(p.child);
+                   },
+                   [](auto&) {},
+               },
+               op);
+    const NodeId out = any ? g_.intern({std::move(op), g_.node(id).loc}) : id;
+    rebuilt_.emplace(id, out);
+    return out;
+  }
+
+  Grammar& g_;
+  const MergeOptions& opt_;
+  std::unordered_map<NodeId, int> references_;
+  std::map<std::string, Frame> frames_;
+  std::unordered_map<NodeId, NodeId> rebuilt_;
+};
+
+}  // namespace
+
+NodeId generalise_free_parts(Grammar& g, NodeId root, const MergeOptions& options, bool& changed) {
+  return Generaliser(g, options).run(root, changed);
+}
+
+}  // namespace vern

@@ -1,0 +1,27 @@
+// Parts that combine freely: from "these combinations were seen" to "any
+// combination of what was seen at each place".
+//
+// Splits with the same axis, part count, relative flags and proportions
+// form a frame (a row of four equal cells, a storey of ground-floor parts).
+// When the examples show many distinct fillings of a frame, more than
+// twice the number of alternatives seen at its busiest position, its
+// positions are taken to vary independently: each position that varies
+// becomes a choice among what was seen there (weighted by how often), and
+// the frame's members become one split. A frame with few fillings keeps
+// them coupled: a roof end that is either two gable halves or two hip
+// corners (two fillings of two positions with two alternatives each) never
+// gets a half gable beside a corner.
+//
+// Every example stays derivable: its child at each position is one of that
+// position's alternatives, and each size lies in its position's range.
+#pragma once
+
+#include "graph/grammar.hpp"
+#include "inverse/merge.hpp"
+
+namespace vern {
+
+// Returns the new root, and whether anything was generalised.
+NodeId generalise_free_parts(Grammar& g, NodeId root, const MergeOptions& options, bool& changed);
+
+}  // namespace vern
