@@ -44,6 +44,16 @@ TEST(InferCli, CheckSaysWhenABuildingDoesNotFitAndWhere) {
   EXPECT_NE(r.out.find("0 of 1 example derivable"), std::string::npos) << r.out;
 }
 
+TEST(InferCli, CheckOnTheHandWrittenGrammarsPlot) {
+  // The city's towers stop below its 200 x 200 x 80 plot: on the examples'
+  // own extent the grammar cannot fit them, on its plot it does.
+  const std::string city = kExamples + "skyscraper_city/variant_000.glb";
+  const std::string grammar = VERN_SOURCE_DIR "/data/grammars/skyscraper_city.grm";
+  auto r = run_program("check", {grammar, city, "--brief", "--scope", "200", "200", "80"});
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 of 1 example derivable"), std::string::npos) << r.out;
+}
+
 TEST(InferCli, UsageErrors) {
   auto r = run_program("infer", {kExamples + "garage"});
   EXPECT_EQ(r.exit_code, 2);

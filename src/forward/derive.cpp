@@ -12,23 +12,6 @@ namespace vern {
 
 namespace {
 
-// The face scopes of comp(f): x along the face, y up the face, z the outward
-// normal, zero thickness; each frame is right-handed (see docs/grammar.md).
-Scope face_scope(const Scope& s, Face face) {
-  const glm::dvec3 X = s.frame[0], Y = s.frame[1], Z = s.frame[2];
-  const glm::dvec3 L = s.size;
-  Scope f;
-  switch (face) {
-    case Face::Front: f = {s.origin, glm::dmat3(X, Z, -Y), {L.x, L.z, 0}}; break;
-    case Face::Back: f = {s.origin + X * L.x + Y * L.y, glm::dmat3(-X, Z, Y), {L.x, L.z, 0}}; break;
-    case Face::Right: f = {s.origin + X * L.x, glm::dmat3(Y, Z, X), {L.y, L.z, 0}}; break;
-    case Face::Left: f = {s.origin + Y * L.y, glm::dmat3(-Y, Z, -X), {L.y, L.z, 0}}; break;
-    case Face::Top: f = {s.origin + Z * L.z, glm::dmat3(X, Y, Z), {L.x, L.y, 0}}; break;
-    case Face::Bottom: f = {s.origin + Y * L.y, glm::dmat3(X, -Y, -Z), {L.x, L.y, 0}}; break;
-  }
-  return f;
-}
-
 // The per-part numbers of one split or choose: on the stack for the usual
 // handful of parts, on the heap beyond that. (A shared scratch vector cost
 // a capacity check per part and a resize per node on the hot path.)

@@ -48,4 +48,18 @@ Scope rotated(const Scope& s, Axis axis, double angle) {
   return r;
 }
 
+Scope face_scope(const Scope& s, Face face) {
+  const glm::dvec3 X = s.frame[0], Y = s.frame[1], Z = s.frame[2];
+  const glm::dvec3 L = s.size;
+  switch (face) {
+    case Face::Front: return {s.origin, glm::dmat3(X, Z, -Y), {L.x, L.z, 0}};
+    case Face::Back: return {s.origin + X * L.x + Y * L.y, glm::dmat3(-X, Z, Y), {L.x, L.z, 0}};
+    case Face::Right: return {s.origin + X * L.x, glm::dmat3(Y, Z, X), {L.y, L.z, 0}};
+    case Face::Left: return {s.origin + Y * L.y, glm::dmat3(-Y, Z, -X), {L.y, L.z, 0}};
+    case Face::Top: return {s.origin + Z * L.z, glm::dmat3(X, Y, Z), {L.x, L.y, 0}};
+    case Face::Bottom: return {s.origin + Y * L.y, glm::dmat3(X, -Y, -Z), {L.x, L.y, 0}};
+  }
+  return s;
+}
+
 }  // namespace vern

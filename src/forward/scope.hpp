@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "graph/node.hpp"
 #include "graph/value.hpp"
 
 namespace vern {
@@ -44,5 +45,11 @@ Bounds world_bounds(const Scope& s);
 // snapped to exact quarter turns and swap the two other sizes on odd
 // multiples, so the child occupies exactly the parent's box.
 Scope rotated(const Scope& s, Axis axis, double angle);
+
+// The face scopes of comp(f): x along the face, y up the face, z the
+// outward normal, zero thickness, each frame right-handed (docs/grammar.md).
+// Front is the face at y = 0, back at y = max, left x = 0, right x = max,
+// bottom z = 0, top z = max.
+Scope face_scope(const Scope& s, Face face);
 
 }  // namespace vern

@@ -1,0 +1,96 @@
+// check: does a grammar derive these buildings exactly, and how?
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <iostream>
+
+#include "graph/atomic_file.hpp"
+#include "graph/parser.hpp"
+#include "inverse/check.hpp"
+#include "inverse/example.hpp"
+#include "support/command_line.hpp"
+#include "support/guarded_main.hpp"
+
+namespace fs = std::filesystem;
+using namespace vern;
+
+namespace {
+
+constexpr int kNotDerivable = 1;
+
+CommandLine make_command_line() {
+  CommandLine cl("check", "check STYLE.grm EXAMPLES... [options]",
+                 "For each example building, says whether the grammar derives it exactly (the\n"
+                 "same labelled parts, within the tolerance) on a plot of the example's own size\n"
+                 "(or --scope, with the example's lowest corner at the plot's),\n"
+                 "and prints the choices and values that reproduce it, or where the first\n"
+                 "mismatch is. EXAMPLES are .obj, .gltf or .glb files, or folders of them.");
+  cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the example)"});
+  cl.add({"--scope", "", 3, "X Y Z", "plot size to derive on (default: each example's own extent)"});
+  cl.add({"--brief", "-b", 0, "", "one line per example, without the choices"});
+  cl.add({"--max-steps", "", 1, "N", "give up after N matching steps per example (default 10000000)"});
+  cl.add({"--help", "-h", 0, "", "show this help"});
+  cl.set_epilog(
+      "examples:\n"
+      "  check garage.grm data/examples/garage/         # do all the examples fit the inferred style?\n"
+      "  check style.grm my_house.obj                    # does my house fit the style, and how?\n"
+      "\n"
+      "exit codes: 0 every example is derivable, 1 some example is not, 2 usage error,\n"
+      "            3 bad input (grammar or example file), 4 a limit was reached,\n"
+      "            5 a file could not be read, 70 internal error\n");
+  return cl;
+}
+
+int run(int argc, char** argv) {
+  const CommandLine cl = make_command_line();
+  const ParsedCommandLine args = cl.parse(argc, argv);
+  if (args.has("--help")) {
+    std::cout << cl.help();
+    return 0;
+  }
+  if (args.positional.size() < 2)
+    throw Error(ErrorKind::Usage, "check: error: give a grammar and at least one example\n"
+                                  "  hint: check style.grm examples/*.obj");
+  CheckOptions options;
+  if (args.has("--tolerance")) options.tolerance = CommandLine::number(args, "--tolerance");
+  if (args.has("--max-steps"))
+    options.max_steps = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-steps", 1, 1LL << 50));
+  const bool brief = args.has("--brief");
+  // A hand-written grammar's plot can be larger than what it built (the
+  // city's towers stop below its 80 m plot): --scope names the plot.
+  std::optional<glm::dvec3> scope;
+  if (args.has("--scope")) {
+    glm::dvec3 size;
+    for (int i = 0; i < 3; ++i) size[i] = CommandLine::number(args, "--scope", static_cast<std::size_t>(i));
+    scope = size;
+  }
+
+  const Grammar grammar = read_grammar_file(args.positional[0]);
+  const std::vector<fs::path> files =
+      example_files(std::vector<std::string>(args.positional.begin() + 1, args.positional.end()));
+  std::size_t fits = 0;
+  for (const auto& file : files) {
+    const Example example = load_example(file);
+    std::vector<LabelledBox> boxes = example.boxes;
+    for (auto& b : boxes) {
+      b.min -= example.min;
+      b.max -= example.min;
+    }
+    const CheckResult r = check_example(grammar, boxes, scope.value_or(example_size(example)), options);
+    if (r.derivable) {
+      ++fits;
+      std::cout << file.string() << ": derivable\n";
+      if (!brief)
+        for (const auto& line : r.witness) std::cout << "  " << line << "\n";
+    } else {
+      std::cout << file.string() << ": NOT derivable: " << r.mismatch << "\n";
+    }
+  }
+  std::cout << fits << " of " << files.size() << " example" << (files.size() == 1 ? "" : "s") << " derivable from "
+            << args.positional[0] << "\n";
+  return fits == files.size() ? 0 : kNotDerivable;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return guarded_main("check", run, argc, argv); }

@@ -1,0 +1,92 @@
+// Checking: does this grammar derive this example exactly, and how?
+//
+// The test oracle of inference (every example must be derivable from the
+// grammar inferred from it, DESIGN.md) and a tool in its own right: "does
+// this building fit the style?".
+//
+// The grammar derives the example when some sequence of choices (options
+// whose condition can hold and whose priority can be > 0) and random values
+// (each draw within its distribution's support) makes derive() produce
+// exactly the example's labelled boxes: the same multiset of (label, world
+// axis-aligned box) within the tolerance, nothing extra, nothing missing.
+// A terminal is compared by its scope's world bounds, which a quarter turn
+// leaves unchanged.
+//
+// How: a matcher walks the operation graph top-down with the boxes that lie
+// inside each scope. A split places its part boundaries on the positions
+// where no box crosses (the cuts of the ordered-box algorithm, snapped
+// within the tolerance) and accepts a placement when the part lengths can
+// come from the part sizes: absolute lengths within their size's support,
+// relative lengths with one common scale k (len_i = k * r_i), or the
+// overflow rule of GRAMMAR.md when the absolute parts alone exceed the
+// scope. Consecutive parts that receive no box form one stretch of empty
+// space whose inner boundaries may lie anywhere. A part may also end inside
+// the empty space after its last box (a skyscraper plot above its towers):
+// its child is asked which lengths it accepts, and the part's size must
+// agree. Repeats try the tile counts their size allows; choices try their
+// options in order; a random argument with few values (randint, choice) is
+// tried value by value, a continuous one is solved for, numerically, from
+// the first split whose sizes use it. Random constants with few values are
+// enumerated once per derivation; continuous ones are solved like arguments.
+// The search first keeps every boundary on a box face (enough for what
+// inference writes) and only then lets parts end in empty space.
+//
+// Exact: sizes whose random draws each appear once (interval arithmetic),
+// few-valued draws, one continuous value per split. Approximate (may accept
+// what derive() cannot produce, or miss a solution): a continuous value
+// used by several operations is pinned down by the first; inside a length
+// query a continuous value counts as independent draws; runs of two or more
+// empty parts treat non-nil children statically.
+//
+// What cannot be decided this way is reported in the mismatch as
+// "cannot check: ..." (random T/S/R values or axes, several continuous
+// random values in one split, splits of scopes turned by angles other than
+// quarter turns), never guessed. Not found: a boundary in empty space at
+// the start of a part, or one that moves repeat tiles starting at it, or a
+// comp's faces.
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "graph/grammar.hpp"
+#include "inverse/example.hpp"
+
+namespace vern {
+
+struct CheckOptions {
+  // Absolute, in metres: two coordinates this close are the same. 0 means
+  // 1e-6 times the example's largest extent (default_tolerance).
+  double tolerance = 0;
+  // Matching steps (operations tried, placements considered) before giving
+  // up with a vern::Error (Limit).
+  std::uint64_t max_steps = 10'000'000;
+};
+
+struct CheckResult {
+  bool derivable = false;
+  // When derivable: what was matched, then the choices and random values
+  // that reproduce the example, one line each, in derivation order, e.g.
+  //   "start: plot on x 0..10, y 0..10, z 0..10, 3 boxes"
+  //   "plot: alternative 2 of 2 (split(x) at 24:10)"
+  //   "garage, split(z) at 26:12, part 1: 1.04 (~rand(0.75, 1.25))"
+  //   "plot, floors at 53:10: numFloors = 3 (randint(minFloors, maxFloors))"
+  std::vector<std::string> witness;
+  // When not: where the deepest-reaching attempt failed and why, e.g.
+  //   "at house (25:1), split(z) at 25:10 on x 0..6.66667, y 0..10, z 0..10: no placement of the
+  //    parts on the cuts of the example's boxes fits sizes ~2 : ~1 (cuts at z = 0, 6.5, 10)"
+  // prefixed by "with N = 9, M = 8: " when random constants were tried
+  // value by value, and followed by notes on what could not be checked.
+  std::string mismatch;
+};
+
+// Checks whether `grammar`, started with its start rule on the axis-aligned
+// scope [0, scope_size], derives exactly `boxes` (already translated so the
+// scope starts at the origin). Throws vern::Error (Limit) when more than
+// options.max_steps steps are needed.
+CheckResult check_example(const Grammar& grammar, const std::vector<LabelledBox>& boxes, glm::dvec3 scope_size,
+                          const CheckOptions& options = {});
+
+}  // namespace vern
