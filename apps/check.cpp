@@ -29,7 +29,7 @@ CommandLine make_command_line() {
   cl.add({"--scope", "", 3, "X Y Z", "plot size to derive on (default: each example's own extent)"});
   cl.add({"--brief", "-b", 0, "", "one line per example, without the choices"});
   cl.add({"--max-steps", "", 1, "N", "give up after N matching steps per example (default 10000000)"});
-  cl.add({"--help", "-h", 0, "", "show this help"});
+  cl.add_standard_options(/*quiet=*/false);
   cl.set_epilog(
       "examples:\n"
       "  check garage.grm data/examples/garage/         # do all the examples fit the inferred style?\n"

@@ -39,8 +39,7 @@ CommandLine make_command_line() {
   cl.add({"--max-depth", "", 1, "N", "limit on nested rule calls (default 1000)"});
   cl.add({"--max-terminals", "", 1, "N", "limit on terminals per building (default 10000000)"});
   cl.add({"--max-operations", "", 1, "N", "limit on operations per building (default 200000000)"});
-  cl.add({"--quiet", "-q", 0, "", "print errors only"});
-  cl.add({"--help", "-h", 0, "", "show this help"});
+  cl.add_standard_options();
   cl.set_epilog(
       "examples:\n"
       "  generate data/grammars/garage.grm -n 10 -o garages/        # garages/variant_000.obj ...\n"

@@ -31,8 +31,7 @@ CommandLine make_command_line() {
   cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the largest example)"});
   cl.add({"--start", "", 1, "LABEL", "name of the start rule (default: building)"});
   cl.add({"--seed", "-s", 1, "S", "seed of the test derivations run on the result (default 1)"});
-  cl.add({"--quiet", "-q", 0, "", "print errors only"});
-  cl.add({"--help", "-h", 0, "", "show this help"});
+  cl.add_standard_options();
   cl.set_epilog(
       "examples:\n"
       "  infer data/examples/garage/*.obj -o garage.grm     # then: generate garage.grm -n 10 -o g.glb\n"

@@ -20,6 +20,11 @@ CommandLine::CommandLine(std::string program, std::string usage, std::string des
 
 void CommandLine::add(OptionSpec spec) { specs_.push_back(std::move(spec)); }
 
+void CommandLine::add_standard_options(bool quiet) {
+  if (quiet) add({"--quiet", "-q", 0, "", "print errors only"});
+  add({"--help", "-h", 0, "", "show this help"});
+}
+
 const OptionSpec* CommandLine::find(const std::string& arg) const {
   for (const auto& s : specs_)
     if (arg == s.name || (!s.short_name.empty() && arg == s.short_name)) return &s;

@@ -28,6 +28,8 @@ class CommandLine {
  public:
   CommandLine(std::string program, std::string usage, std::string description);
   void add(OptionSpec spec);
+  // --help, and --quiet where the command prints progress: every command's.
+  void add_standard_options(bool quiet = true);
   // Free text printed after the options in --help (examples, exit codes).
   void set_epilog(std::string text) { epilog_ = std::move(text); }
 
