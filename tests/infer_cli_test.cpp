@@ -35,6 +35,18 @@ TEST(InferCli, GarageExamplesToGrammarToCheckToNewBuildings) {
   EXPECT_NE(read_file(dir / "new/variant_004.obj").find("o triangle"), std::string::npos);
 }
 
+TEST(InferCli, EveryBundledExampleSetIsDerivableFromWhatIsInferredFromIt) {
+  for (const std::string set : {"better_roofs", "modern_houses", "skyscraper_city"}) {
+    SCOPED_TRACE(set);
+    TempFolder dir;
+    auto r = run_program("infer", {kExamples + set, "-o", "style.grm", "-q"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = run_program("check", {"style.grm", kExamples + set, "--brief"}, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_NE(r.out.find("10 of 10 examples derivable"), std::string::npos) << r.out;
+  }
+}
+
 TEST(InferCli, CheckSaysWhenABuildingDoesNotFitAndWhere) {
   TempFolder dir;
   ASSERT_EQ(run_program("infer", {kExamples + "garage", "-o", "garage.grm", "-q"}, dir.path()).exit_code, 0);

@@ -26,7 +26,12 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   MergeOptions merge;
   merge.tolerance = out.tolerance;
   NodeId root = merge_examples(graph, roots, merge);
-  root = tidy_numbers(graph, root, out.tolerance);
+  // Rounding may move a number by a quarter of the smallest example's
+  // tolerance: every example then still matches within its own tolerance
+  // (check's default), however the rounded numbers of one split add up.
+  double smallest = out.tolerance;
+  for (const auto& e : examples) smallest = std::min(smallest, options.tolerance > 0 ? options.tolerance : default_tolerance(e));
+  root = tidy_numbers(graph, root, smallest / 4);
   out.grammar = rules_for(graph, root, NamingOptions{options.start});
 
   // @scope: each axis's size, or the range the examples span.
@@ -36,7 +41,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
       r.lo = std::min(r.lo, example_size(e)[axis]);
       r.hi = std::max(r.hi, example_size(e)[axis]);
     }
-    r = {shortest_decimal(r.lo, out.tolerance, -1), shortest_decimal(r.hi, out.tolerance, +1)};
+    r = {shortest_decimal(r.lo, smallest / 4, -1), shortest_decimal(r.hi, smallest / 4, +1)};
     out.grammar.scope[axis] = range_expr(r, out.tolerance);
   }
 
