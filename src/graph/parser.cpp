@@ -34,7 +34,6 @@
 #include <fstream>
 #include <map>
 #include <numbers>
-#include <set>
 #include <sstream>
 
 #include "graph/lexer.hpp"
@@ -143,8 +142,9 @@ class Parser {
   // ---- pass 1: every rule label, so calls may name rules defined later ----
   void declare_rules() {
     std::size_t i = 0;
+    // The lexer reports newlines only outside ( ) and { }, so a Newline
+    // token always starts a new line of the file's structure.
     bool line_start = true;
-    int depth = 0;
     while (tokens_[i].kind != TokenKind::End) {
       const Token& t = tokens_[i];
       if (line_start && t.kind == TokenKind::Identifier && tokens_[i + 1].kind != TokenKind::Assign) {
@@ -167,8 +167,6 @@ class Parser {
           declared_params_.push_back(-1);
         }
       }
-      if (t.kind == TokenKind::LParen || t.kind == TokenKind::LBrace) ++depth;
-      if (t.kind == TokenKind::RParen || t.kind == TokenKind::RBrace) --depth;
       line_start = t.kind == TokenKind::Newline;
       ++i;
     }

@@ -103,7 +103,9 @@ class Tidier {
     for (auto& p : s.parts) {
       const auto v = p.size.value.literal();
       if (!v) {
+        // Past a range the cut positions are unknown: start again.
         p.size.value = tidy(p.size.value);
+        position = rounded_previous = 0;
         continue;
       }
       position += *v;
