@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "forward/gltf_summary.hpp"
 #include "forward/palette.hpp"
 #include "graph/error.hpp"
 #include "support/scene_helpers.hpp"
@@ -178,6 +179,63 @@ TEST(GltfWriter, WriteChoosesTheFormatByExtension) {
   }
   EXPECT_FALSE(fs::exists(dir / "street.obj"));
   fs::remove_all(dir);
+}
+
+// The instanced layout: per variant one node per mesh, whose instances are
+// the terminals of that mesh in order; each instance's T * R * S is the
+// plain layout's matrix (to float precision).
+TEST(GltfWriter, InstancingGroupsEachVariantsTerminalsByMesh) {
+  const PrimitiveLibrary lib = PrimitiveLibrary::builtin();
+  Scene scene = street();
+  scene.variants[0].terminals[1].scope.frame = kQuarterTurnZ * glm::dmat3(1, 0, 0, 0, 1, 0, 0, 0, -1);  // mirrored
+  const GltfSummary plain = summarize_gltf(glb_bytes(scene, lib));
+  const GltfSummary s = summarize_gltf(glb_bytes(scene, lib, {.instancing = true}));
+  EXPECT_EQ(s.extensions_required, (std::vector<std::string>{"EXT_mesh_gpu_instancing"}));
+  ASSERT_EQ(s.roots.size(), 2u);
+  const GltfSummary::Node& a = s.nodes.at(static_cast<std::size_t>(s.roots[0]));
+  const GltfSummary::Node& b = s.nodes.at(static_cast<std::size_t>(s.roots[1]));
+  EXPECT_EQ(a.name, "variant_000");
+  EXPECT_EQ(b.translation, (std::array<double, 3>{50, 0, 0}));
+  ASSERT_EQ(a.children.size(), 2u);  // rect, window
+  ASSERT_EQ(b.children.size(), 1u);  // rect
+  const GltfSummary::Node& walls = s.nodes.at(static_cast<std::size_t>(a.children[0]));
+  const GltfSummary::Node& window = s.nodes.at(static_cast<std::size_t>(a.children[1]));
+  EXPECT_EQ(walls.name, "rect");
+  EXPECT_EQ(window.name, "window");
+  ASSERT_EQ(walls.instances.size(), 3u);
+  ASSERT_EQ(window.instances.size(), 1u);
+  EXPECT_EQ(s.nodes.at(static_cast<std::size_t>(b.children[0])).instances.size(), 1u);
+
+  // Instances in terminal order: walls are terminals 0, 1 and 3.
+  const GltfSummary::Node& plain_root = plain.nodes.at(static_cast<std::size_t>(plain.roots[0]));
+  const auto plain_matrix = [&](std::size_t k) {
+    return plain.nodes.at(static_cast<std::size_t>(plain_root.children.at(k))).matrix;
+  };
+  const std::vector<std::pair<std::array<double, 16>, std::array<double, 16>>> pairs = {
+      {walls.instances[0], plain_matrix(0)}, {walls.instances[1], plain_matrix(1)},
+      {walls.instances[2], plain_matrix(3)}, {window.instances[0], plain_matrix(2)}};
+  for (const auto& [instance, matrix] : pairs) {
+    for (std::size_t i = 0; i < 16; ++i) EXPECT_NEAR(instance[i], matrix[i], 1e-6) << "element " << i;
+  }
+}
+
+TEST(GltfWriter, InstancedFilesAreSameBytesAndTextAgrees) {
+  const PrimitiveLibrary lib = PrimitiveLibrary::builtin();
+  const std::string glb = glb_bytes(street(), lib, {.instancing = true});
+  EXPECT_EQ(glb, glb_bytes(street(), lib, {.instancing = true}));
+  // Each further terminal costs 40 bytes of floats (the JSON grows only by
+  // longer offsets) instead of a JSON node.
+  Scene many = street();
+  for (int i = 0; i < 1000; ++i) many.variants[0].terminals.push_back(terminal(0, {0, 0, 7.0 + i}, {4, 0.3, 1}));
+  const std::size_t instanced = glb_bytes(many, lib, {.instancing = true}).size() - glb.size();
+  const std::size_t plain = glb_bytes(many, lib).size() - glb_bytes(street(), lib).size();
+  EXPECT_GE(instanced, 40'000u);
+  EXPECT_LT(instanced, 40'100u);
+  EXPECT_GT(plain, instanced * 3 / 2);
+  const GltfSummary a = summarize_gltf(glb);
+  const GltfSummary b = summarize_gltf(gltf_text(street(), lib, {.instancing = true}));
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) EXPECT_EQ(a.nodes[i].instances, b.nodes[i].instances);
 }
 
 TEST(GltfWriter, SummaryRejectsWhatIsNotGltf) {

@@ -5,22 +5,30 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <sstream>
+#include <span>
 #include <unordered_map>
 
-// tinygltf stays in this file. Debian's libtinygltf-dev ships the
-// implementation compiled as a shared library (TinyGLTF::TinyGLTF), so the
-// header is included for declarations only: defining TINYGLTF_IMPLEMENTATION
-// here would duplicate it, and clash with any other file that reads glTF.
-#include <tiny_gltf.h>
+#include <glm/gtc/quaternion.hpp>
 
+#include "forward/gltf_container.hpp"
+#include "forward/json_text.hpp"
 #include "forward/palette.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"
 
+// The document is written by hand (json_text.hpp) rather than through
+// tinygltf's model: for a thousand city blocks (two million nodes) the model
+// and its JSON serialisation took 25 s of a 28 s run. tinygltf still reads
+// files back (gltf_summary.cpp, example loading), so what we write is
+// checked by an independent parser in the tests, and by the Khronos
+// validator in CTest.
+
 namespace vern {
 
 namespace {
+
+constexpr int kFloat = 5126, kUnsignedShort = 5123, kUnsignedInt = 5125;
+constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963, kNoTarget = 0;
 
 // A primitive's mesh as glTF wants it: one vertex per distinct
 // (position, normal, uv) corner, triangles indexing them.
@@ -67,46 +75,87 @@ Triangles triangulate(const Mesh& mesh) {
   return out;
 }
 
-// Builds the one buffer, one view per accessor.
-class BufferBuilder {
+// The one binary buffer, its views and the accessors that read them.
+class BinaryBuffer {
  public:
-  explicit BufferBuilder(tinygltf::Model& model) : model_(model) {}
+  struct Accessor {
+    int view = -1;
+    std::size_t offset = 0;  // bytes into the view
+    int component = kFloat;
+    const char* type = "SCALAR";
+    std::size_t count = 0;
+    std::vector<double> min, max;  // written when not empty
+  };
 
+  // Appends the values as a new view, aligned to 4 bytes as accessors of
+  // 4-byte components need; returns the view's index.
   template <class T>
-  int add(const std::vector<T>& values, int component, int type, std::size_t count, int target) {
-    std::vector<unsigned char>& data = bytes_;
-    while (data.size() % 4 != 0) data.push_back(0);  // accessors align to their component size
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = data.size();
-    view.byteLength = values.size() * sizeof(T);
-    view.target = target;
-    const std::size_t at = data.size();
-    data.resize(at + view.byteLength);
-    std::memcpy(data.data() + at, values.data(), view.byteLength);  // little-endian hosts only, as glTF
-    model_.bufferViews.push_back(view);
-
-    tinygltf::Accessor accessor;
-    accessor.bufferView = static_cast<int>(model_.bufferViews.size() - 1);
-    accessor.byteOffset = 0;
-    accessor.componentType = component;
-    accessor.type = type;
-    accessor.count = count;
-    model_.accessors.push_back(accessor);
-    return static_cast<int>(model_.accessors.size() - 1);
+  int add_view(std::span<const T> values, int target) {
+    bytes_.resize((bytes_.size() + 3) & ~std::size_t{3}, '\0');
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + values.size_bytes());
+    if (!values.empty()) std::memcpy(bytes_.data() + at, values.data(), values.size_bytes());  // little-endian hosts
+    views_.push_back({at, values.size_bytes(), target});
+    return static_cast<int>(views_.size() - 1);
   }
 
-  void finish() {
-    if (bytes_.empty()) return;  // a buffer must not be empty
-    while (bytes_.size() % 4 != 0) bytes_.push_back(0);
-    tinygltf::Buffer buffer;
-    buffer.data = std::move(bytes_);
-    model_.buffers.push_back(std::move(buffer));
+  int add_accessor(Accessor a) {
+    accessors_.push_back(std::move(a));
+    return static_cast<int>(accessors_.size() - 1);
+  }
+
+  // A view holding exactly these values and one accessor over all of them.
+  template <class T>
+  int add(std::span<const T> values, int component, const char* type, std::size_t count, int target) {
+    return add_accessor({add_view(values, target), 0, component, type, count, {}, {}});
+  }
+
+  Accessor& accessor(int i) { return accessors_[static_cast<std::size_t>(i)]; }
+
+  // Pads the buffer to 4 bytes (the GLB chunk and data URI both want it).
+  const std::string& finish() {
+    bytes_.resize((bytes_.size() + 3) & ~std::size_t{3}, '\0');
+    return bytes_;
+  }
+
+  // "accessors", "bufferViews" and "buffers"; the buffer carries uri when
+  // given (the .gltf text form), else it is the GLB's BIN chunk.
+  void write(JsonText& json, const std::string* uri) const {
+    if (!accessors_.empty()) {
+      json.key("accessors").open_array();
+      for (const Accessor& a : accessors_) {
+        json.open_object().field("bufferView", a.view);
+        if (a.offset != 0) json.field("byteOffset", a.offset);
+        json.field("componentType", a.component).field("count", a.count).field("type", a.type);
+        if (!a.min.empty()) json.key("min").numbers(a.min).key("max").numbers(a.max);
+        json.close_object();
+      }
+      json.close_array();
+    }
+    if (!views_.empty()) {
+      json.key("bufferViews").open_array();
+      for (const View& v : views_) {
+        json.open_object().field("buffer", 0).field("byteOffset", v.offset).field("byteLength", v.length);
+        if (v.target != kNoTarget) json.field("target", v.target);
+        json.close_object();
+      }
+      json.close_array();
+    }
+    if (!bytes_.empty()) {  // a buffer must not be empty
+      json.key("buffers").open_array().open_object().field("byteLength", bytes_.size());
+      if (uri != nullptr) json.field("uri", *uri);
+      json.close_object().close_array();
+    }
   }
 
  private:
-  tinygltf::Model& model_;
-  std::vector<unsigned char> bytes_;
+  struct View {
+    std::size_t offset = 0, length = 0;
+    int target = kNoTarget;
+  };
+  std::string bytes_;
+  std::vector<View> views_;
+  std::vector<Accessor> accessors_;
 };
 
 // The accessors of one primitive's triangles, shared by its meshes.
@@ -114,12 +163,11 @@ struct Geometry {
   int position = -1, normal = -1, uv = -1, indices = -1;
 };
 
-Geometry add_geometry(const Mesh& mesh, BufferBuilder& buffer, tinygltf::Model& model) {
+Geometry add_geometry(const Mesh& mesh, BinaryBuffer& buffer) {
   const Triangles t = triangulate(mesh);
   const std::size_t vertices = t.positions.size() / 3;
   Geometry g;
-  g.position = buffer.add(t.positions, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertices,
-                          TINYGLTF_TARGET_ARRAY_BUFFER);
+  g.position = buffer.add(std::span(t.positions), kFloat, "VEC3", vertices, kArrayBuffer);
   // The spec requires POSITION bounds; they must be those of the floats stored.
   std::vector<double> lo(3, 0.0), hi(3, 0.0);
   for (std::size_t v = 0; v < vertices; ++v) {
@@ -129,38 +177,41 @@ Geometry add_geometry(const Mesh& mesh, BufferBuilder& buffer, tinygltf::Model& 
       hi[i] = v == 0 ? x : std::max(hi[i], x);
     }
   }
-  model.accessors[static_cast<std::size_t>(g.position)].minValues = lo;
-  model.accessors[static_cast<std::size_t>(g.position)].maxValues = hi;
-  g.normal = buffer.add(t.normals, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertices,
-                        TINYGLTF_TARGET_ARRAY_BUFFER);
-  if (t.has_uvs) {
-    g.uv = buffer.add(t.uvs, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, vertices,
-                      TINYGLTF_TARGET_ARRAY_BUFFER);
-  }
+  buffer.accessor(g.position).min = lo;
+  buffer.accessor(g.position).max = hi;
+  g.normal = buffer.add(std::span(t.normals), kFloat, "VEC3", vertices, kArrayBuffer);
+  if (t.has_uvs) g.uv = buffer.add(std::span(t.uvs), kFloat, "VEC2", vertices, kArrayBuffer);
   if (vertices <= 0xffff) {
-    std::vector<std::uint16_t> small(t.indices.begin(), t.indices.end());
-    g.indices = buffer.add(small, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, small.size(),
-                           TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    const std::vector<std::uint16_t> small(t.indices.begin(), t.indices.end());
+    g.indices = buffer.add(std::span(small), kUnsignedShort, "SCALAR", small.size(), kElementArrayBuffer);
   } else {
-    g.indices = buffer.add(t.indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
-                           t.indices.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    g.indices = buffer.add(std::span(t.indices), kUnsignedInt, "SCALAR", t.indices.size(), kElementArrayBuffer);
   }
   return g;
 }
 
-// The matrix mapping the unit box onto a scope, column-major. glTF requires
-// node matrices to decompose into translation, rotation and scale, which a
-// zero scale (a comp() face: a window on a zero-depth scope) does not, and
-// viewers would divide by it to transform normals. So a size that is 0, or
-// vanishing next to the scope's largest, becomes a millionth of that
-// largest size: invisible, and the flattened mesh still faces the right way.
-std::vector<double> scope_matrix(const Scope& s) {
+// A scope's sizes as glTF may store them. glTF requires transforms to
+// decompose into translation, rotation and scale, which a zero scale (a
+// comp() face: a window on a zero-depth scope) does not, and viewers would
+// divide by it to transform normals. So a size that is 0, or vanishing next
+// to the scope's largest, becomes a millionth of that largest size:
+// invisible, and the flattened mesh still faces the right way.
+glm::dvec3 drawable_size(const Scope& s) {
   const double largest = std::max({std::abs(s.size.x), std::abs(s.size.y), std::abs(s.size.z)});
   const double thinnest = largest > 0.0 ? largest * 1e-6 : 1e-6;
-  std::vector<double> m(16, 0.0);
+  glm::dvec3 size = s.size;
   for (int c = 0; c < 3; ++c) {
-    const double size = std::abs(s.size[c]) < thinnest ? thinnest : s.size[c];
-    const glm::dvec3 axis = s.frame[c] * size;
+    if (std::abs(size[c]) < thinnest) size[c] = thinnest;
+  }
+  return size;
+}
+
+// The matrix mapping the unit box onto a scope, column-major.
+std::array<double, 16> scope_matrix(const Scope& s) {
+  const glm::dvec3 size = drawable_size(s);
+  std::array<double, 16> m{};
+  for (int c = 0; c < 3; ++c) {
+    const glm::dvec3 axis = s.frame[c] * size[c];
     for (int r = 0; r < 3; ++r) m[static_cast<std::size_t>(4 * c + r)] = axis[r];
   }
   for (int r = 0; r < 3; ++r) m[static_cast<std::size_t>(12 + r)] = s.origin[r];
@@ -168,163 +219,263 @@ std::vector<double> scope_matrix(const Scope& s) {
   return m;
 }
 
-tinygltf::Model build_model(const Scene& scene, const PrimitiveLibrary& library) {
-  const MaterialTable materials(scene);  // also checks every terminal's label
-  tinygltf::Model model;
-  model.asset.version = "2.0";
-  model.asset.generator = "Vernacular";
+// One glTF mesh: a primitive's geometry with one material.
+struct MeshUse {
+  std::string name;
+  int geometry = -1;
+  std::uint32_t material = 0;
+};
 
-  for (const Material& m : materials.materials()) {
-    tinygltf::Material g;
-    g.name = m.name;
-    const std::array<double, 3> c = colour_components(m.colour);
-    g.pbrMetallicRoughness.baseColorFactor = {c[0], c[1], c[2], 1.0};
-    g.pbrMetallicRoughness.metallicFactor = 0.0;  // painted and built surfaces: matte, not metal
-    g.pbrMetallicRoughness.roughnessFactor = 0.9;
-    model.materials.push_back(std::move(g));
+// Per variant, in instancing mode: one node per mesh it uses, in order of
+// first use, with the accessors of its instances.
+struct InstanceGroup {
+  int mesh = -1;
+  int translation = -1, rotation = -1, scale = -1;
+};
+
+class Document {
+ public:
+  Document(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options)
+      : scene_(scene), library_(library), options_(options), materials_(scene) {
+    assign_meshes();
+    if (options_.instancing) gather_instances();
   }
 
-  BufferBuilder buffer(model);
-  std::vector<const Mesh*> mesh_of_label(scene.labels.size(), nullptr);
-  std::unordered_map<const Mesh*, Geometry> geometry;           // per primitive mesh
-  std::map<std::pair<LabelId, std::uint32_t>, int> mesh_index;  // per (label, material)
-
-  tinygltf::Scene root_scene;
-  for (const Variant& variant : scene.variants) {
-    const auto root = static_cast<int>(model.nodes.size());
-    root_scene.nodes.push_back(root);
-    {
-      tinygltf::Node node;
-      node.name = variant.name;
-      if (variant.offset != glm::dvec3(0.0)) node.translation = {variant.offset.x, variant.offset.y, variant.offset.z};
-      model.nodes.push_back(std::move(node));
-    }
-    for (const Terminal& t : variant.terminals) {
-      const std::uint32_t material = materials.index_of(t);
-      auto [it, fresh] = mesh_index.try_emplace({t.label, material}, static_cast<int>(model.meshes.size()));
-      if (fresh) {
-        const std::string& label = scene.labels[t.label];
-        const Mesh*& primitive = mesh_of_label[t.label];
-        if (primitive == nullptr) {
-          primitive = library.find(label);
-          if (primitive == nullptr) primitive = &library.box();
-        }
-        auto [g, new_geometry] = geometry.try_emplace(primitive);
-        if (new_geometry) g->second = add_geometry(*primitive, buffer, model);
-
-        tinygltf::Primitive p;
-        p.attributes["POSITION"] = g->second.position;
-        p.attributes["NORMAL"] = g->second.normal;
-        if (g->second.uv >= 0) p.attributes["TEXCOORD_0"] = g->second.uv;
-        p.indices = g->second.indices;
-        p.material = static_cast<int>(material);
-        p.mode = TINYGLTF_MODE_TRIANGLES;
-        tinygltf::Mesh mesh;
-        mesh.name = t.coloured ? label + " " + materials.materials()[material].name : label;
-        mesh.primitives.push_back(std::move(p));
-        model.meshes.push_back(std::move(mesh));
+  // The JSON document after `prefix` bytes of room; the buffer is referred
+  // to by uri when given.
+  std::string json(const std::string* uri, std::size_t prefix = 0) {
+    JsonText json(prefix);
+    std::size_t terminals = 0;
+    for (const Variant& v : scene_.variants) terminals += v.terminals.size();
+    json.reserve(4096 + (options_.instancing ? 200 * groups_.size() : 130 * terminals));
+    json.open_object();
+    json.key("asset").open_object().field("generator", "Vernacular").field("version", "2.0").close_object();
+    if (options_.instancing) {
+      for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
+        json.key(list).open_array().string("EXT_mesh_gpu_instancing").close_array();
       }
-      tinygltf::Node node;
-      node.name = scene.labels[t.label];
-      node.mesh = it->second;
-      node.matrix = scope_matrix(t.scope);
-      model.nodes[static_cast<std::size_t>(root)].children.push_back(static_cast<int>(model.nodes.size()));
-      model.nodes.push_back(std::move(node));
+    }
+    write_scene_list(json);
+    write_meshes(json);
+    write_materials(json);
+    buffer_.write(json, uri);
+    write_nodes(json);  // last: the bulk of the text, written in one pass
+    json.close_object();
+    return json.take();
+  }
+
+  const std::string& binary() { return buffer_.finish(); }
+
+ private:
+  // The mesh of each terminal, meshes and geometry in order of first use.
+  void assign_meshes() {
+    std::vector<const Mesh*> primitive_of_label(scene_.labels.size(), nullptr);
+    std::unordered_map<const Mesh*, int> geometry_of;
+    std::unordered_map<std::uint64_t, int> mesh_of;  // label << 32 | material
+    for (const Variant& variant : scene_.variants) {
+      for (const Terminal& t : variant.terminals) {
+        const std::uint32_t material = materials_.index_of(t);  // also checks the label
+        const std::uint64_t key = std::uint64_t{t.label} << 32 | material;
+        auto [it, fresh] = mesh_of.try_emplace(key, static_cast<int>(meshes_.size()));
+        if (fresh) {
+          const std::string& label = scene_.labels[t.label];
+          const Mesh*& primitive = primitive_of_label[t.label];
+          if (primitive == nullptr) {
+            primitive = library_.find(label);
+            if (primitive == nullptr) primitive = &library_.box();
+          }
+          auto [g, new_geometry] = geometry_of.try_emplace(primitive, static_cast<int>(geometries_.size()));
+          if (new_geometry) geometries_.push_back(add_geometry(*primitive, buffer_));
+          meshes_.push_back({t.coloured ? label + " " + materials_.materials()[material].name : label, g->second,
+                             material});
+        }
+        mesh_of_terminal_.push_back(it->second);
+      }
     }
   }
-  buffer.finish();
-  model.scenes.push_back(std::move(root_scene));
-  model.defaultScene = 0;
-  return model;
-}
 
-std::string serialise(const tinygltf::Model& model, bool binary) {
-  tinygltf::TinyGLTF writer;
-  std::ostringstream out;
-  if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/!binary, binary)) {
-    throw Error(ErrorKind::Internal, "error: tinygltf could not serialise the scene");
+  // Instancing: each variant's terminals sorted (stably) by mesh in order of
+  // first use, their transforms in three views (T, R, S) that every group's
+  // accessors slice.
+  void gather_instances() {
+    std::vector<float> translations, rotations, scales;
+    struct Slice {
+      std::size_t first = 0, count = 0;
+    };
+    std::vector<Slice> slices;
+    std::vector<int> group_of_mesh(meshes_.size(), -1);
+    std::size_t next = 0;  // index into mesh_of_terminal_
+    for (const Variant& variant : scene_.variants) {
+      const std::size_t first_group = groups_.size();
+      std::vector<std::vector<std::uint32_t>> members;
+      for (std::size_t i = 0; i < variant.terminals.size(); ++i) {
+        const int mesh = mesh_of_terminal_[next + i];
+        int& group = group_of_mesh[static_cast<std::size_t>(mesh)];
+        if (group < static_cast<int>(first_group)) {
+          group = static_cast<int>(groups_.size());
+          groups_.push_back({mesh, -1, -1, -1});
+          members.emplace_back();
+        }
+        members[static_cast<std::size_t>(group) - first_group].push_back(static_cast<std::uint32_t>(i));
+      }
+      for (const std::vector<std::uint32_t>& group : members) {
+        slices.push_back({translations.size() / 3, group.size()});
+        for (const std::uint32_t i : group) append_instance(variant.terminals[i].scope, translations, rotations, scales);
+      }
+      groups_per_variant_.push_back(groups_.size() - first_group);
+      next += variant.terminals.size();
+    }
+    if (groups_.empty()) return;
+    const int t = buffer_.add_view(std::span<const float>(translations), kNoTarget);
+    const int r = buffer_.add_view(std::span<const float>(rotations), kNoTarget);
+    const int s = buffer_.add_view(std::span<const float>(scales), kNoTarget);
+    for (std::size_t g = 0; g < groups_.size(); ++g) {
+      const Slice& slice = slices[g];
+      groups_[g].translation = buffer_.add_accessor({t, slice.first * 12, kFloat, "VEC3", slice.count, {}, {}});
+      groups_[g].rotation = buffer_.add_accessor({r, slice.first * 16, kFloat, "VEC4", slice.count, {}, {}});
+      groups_[g].scale = buffer_.add_accessor({s, slice.first * 12, kFloat, "VEC3", slice.count, {}, {}});
+    }
   }
-  return std::move(out).str();
-}
+
+  // T, R, S of a scope: frame * diag(size) = rotation * diag(scale). A
+  // mirrored frame (determinant -1) moves its mirror into the x scale.
+  static void append_instance(const Scope& scope, std::vector<float>& translations, std::vector<float>& rotations,
+                              std::vector<float>& scales) {
+    glm::dmat3 frame = scope.frame;
+    glm::dvec3 size = drawable_size(scope);
+    if (glm::determinant(frame) < 0.0) {
+      frame[0] = -frame[0];
+      size.x = -size.x;
+    }
+    const glm::dquat q = glm::normalize(glm::quat_cast(frame));
+    for (int i = 0; i < 3; ++i) translations.push_back(static_cast<float>(scope.origin[i]));
+    for (const double c : {q.x, q.y, q.z, q.w}) rotations.push_back(static_cast<float>(c));
+    for (int i = 0; i < 3; ++i) scales.push_back(static_cast<float>(size[i]));
+  }
+
+  void write_scene_list(JsonText& json) const {
+    json.field("scene", 0).key("scenes").open_array().open_object();
+    if (!scene_.variants.empty()) {  // a scene's node list must not be empty
+      json.key("nodes").open_array();
+      for (std::size_t v = 0, node = 0; v < scene_.variants.size(); ++v) {
+        json.integer(static_cast<std::int64_t>(node));
+        node += 1 + children(v);
+      }
+      json.close_array();
+    }
+    json.close_object().close_array();
+  }
+
+  std::size_t children(std::size_t variant) const {
+    return options_.instancing ? groups_per_variant_[variant] : scene_.variants[variant].terminals.size();
+  }
+
+  void write_meshes(JsonText& json) const {
+    if (meshes_.empty()) return;
+    json.key("meshes").open_array();
+    for (const MeshUse& m : meshes_) {
+      const Geometry& g = geometries_[static_cast<std::size_t>(m.geometry)];
+      json.open_object().field("name", m.name).key("primitives").open_array().open_object();
+      json.key("attributes").open_object().field("NORMAL", g.normal).field("POSITION", g.position);
+      if (g.uv >= 0) json.field("TEXCOORD_0", g.uv);
+      json.close_object();
+      json.field("indices", g.indices).field("material", static_cast<int>(m.material)).field("mode", 4);
+      json.close_object().close_array().close_object();
+    }
+    json.close_array();
+  }
+
+  void write_materials(JsonText& json) const {
+    if (materials_.materials().empty()) return;
+    json.key("materials").open_array();
+    for (const Material& m : materials_.materials()) {
+      const std::array<double, 3> c = colour_components(m.colour);
+      json.open_object().field("name", m.name).key("pbrMetallicRoughness").open_object();
+      json.key("baseColorFactor").numbers(std::array<double, 4>{c[0], c[1], c[2], 1.0});
+      // Painted and built surfaces: matte, not metal.
+      json.field("metallicFactor", 0.0).field("roughnessFactor", 0.9);
+      json.close_object().close_object();
+    }
+    json.close_array();
+  }
+
+  void write_nodes(JsonText& json) const {
+    if (scene_.variants.empty()) return;
+    json.key("nodes").open_array();
+    std::size_t node = 0, terminal = 0, group = 0;
+    for (std::size_t v = 0; v < scene_.variants.size(); ++v) {
+      const Variant& variant = scene_.variants[v];
+      json.open_object().field("name", variant.name);
+      if (variant.offset != glm::dvec3(0.0)) {
+        json.key("translation").numbers(std::array<double, 3>{variant.offset.x, variant.offset.y, variant.offset.z});
+      }
+      const std::size_t n = children(v);
+      if (n > 0) {  // a node's children list must not be empty
+        json.key("children").open_array();
+        for (std::size_t c = 1; c <= n; ++c) json.integer(static_cast<std::int64_t>(node + c));
+        json.close_array();
+      }
+      json.close_object();
+      if (options_.instancing) {
+        for (std::size_t g = 0; g < n; ++g, ++group) write_instanced_node(json, groups_[group]);
+      } else {
+        for (const Terminal& t : variant.terminals) {
+          json.open_object().field("name", scene_.labels[t.label]).field("mesh", mesh_of_terminal_[terminal++]);
+          json.key("matrix").numbers(scope_matrix(t.scope)).close_object();
+        }
+      }
+      node += 1 + n;
+    }
+    json.close_array();
+  }
+
+  void write_instanced_node(JsonText& json, const InstanceGroup& g) const {
+    json.open_object().field("name", meshes_[static_cast<std::size_t>(g.mesh)].name).field("mesh", g.mesh);
+    json.key("extensions").open_object().key("EXT_mesh_gpu_instancing").open_object();
+    json.key("attributes").open_object();
+    json.field("ROTATION", g.rotation).field("SCALE", g.scale).field("TRANSLATION", g.translation);
+    json.close_object().close_object().close_object().close_object();
+  }
+
+  const Scene& scene_;
+  const PrimitiveLibrary& library_;
+  GltfOptions options_;
+  MaterialTable materials_;
+  BinaryBuffer buffer_;
+  std::vector<Geometry> geometries_;
+  std::vector<MeshUse> meshes_;
+  std::vector<int> mesh_of_terminal_;  // all variants' terminals in order
+  std::vector<InstanceGroup> groups_;  // instancing: all variants' groups in order
+  std::vector<std::size_t> groups_per_variant_;
+};
 
 }  // namespace
 
-std::string glb_bytes(const Scene& scene, const PrimitiveLibrary& library) {
-  return serialise(build_model(scene, library), true);
+std::string glb_bytes(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options) {
+  Document document(scene, library, options);
+  const std::string& bin = document.binary();
+  return glb_file(document.json(nullptr, kGlbJsonOffset), bin);
 }
 
-std::string gltf_text(const Scene& scene, const PrimitiveLibrary& library) {
-  return serialise(build_model(scene, library), false);
+std::string gltf_text(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options) {
+  Document document(scene, library, options);
+  const std::string uri = "data:application/octet-stream;base64," + base64(document.binary());
+  std::string text = document.json(&uri);
+  text += '\n';
+  return text;
 }
 
-void write_gltf(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& path) {
+void write_gltf(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& path,
+                GltfOptions options) {
   const std::string ext = path.extension().string();
   if (ext == ".glb" || ext == ".GLB") {
-    write_file_atomically(path, glb_bytes(scene, library));
+    write_file_atomically(path, glb_bytes(scene, library, options));
   } else if (ext == ".gltf" || ext == ".GLTF") {
-    write_file_atomically(path, gltf_text(scene, library));
+    write_file_atomically(path, gltf_text(scene, library, options));
   } else {
     fail(ErrorKind::Usage, path.string(), {}, "a glTF file ends in .glb (binary) or .gltf (text)",
          "name the output file.glb or file.gltf");
   }
-}
-
-GltfSummary summarize_gltf(std::string_view bytes) {
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string err, warn;
-  const bool binary = bytes.starts_with("glTF");
-  const bool ok =
-      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                           static_cast<unsigned int>(bytes.size()))
-             : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()),
-                                          "");
-  if (!ok) fail(ErrorKind::Input, "glTF data", {}, "not valid glTF: " + err, "check the file with scripts/validate-gltf");
-
-  GltfSummary s;
-  s.generator = model.asset.generator;
-  if (!model.scenes.empty()) {
-    const auto scene = static_cast<std::size_t>(model.defaultScene >= 0 ? model.defaultScene : 0);
-    s.roots = model.scenes.at(scene).nodes;
-  }
-  for (const tinygltf::Node& n : model.nodes) {
-    GltfSummary::Node node;
-    node.name = n.name;
-    node.mesh = n.mesh;
-    node.children = n.children;
-    for (std::size_t i = 0; i < 16; ++i) node.matrix[i] = n.matrix.size() == 16 ? n.matrix[i] : (i % 5 == 0 ? 1.0 : 0.0);
-    for (std::size_t i = 0; i < 3 && n.translation.size() == 3; ++i) node.translation[i] = n.translation[i];
-    s.nodes.push_back(std::move(node));
-  }
-  for (const tinygltf::Mesh& m : model.meshes) {
-    GltfSummary::MeshInfo info;
-    info.name = m.name;
-    if (!m.primitives.empty()) {
-      const tinygltf::Primitive& p = m.primitives.front();
-      info.material = p.material;
-      const auto pos = p.attributes.find("POSITION");
-      if (pos != p.attributes.end()) {
-        info.position_accessor = pos->second;
-        const tinygltf::Accessor& a = model.accessors.at(static_cast<std::size_t>(pos->second));
-        info.vertices = a.count;
-        for (std::size_t i = 0; i < 3 && a.minValues.size() == 3 && a.maxValues.size() == 3; ++i) {
-          info.min[i] = a.minValues[i];
-          info.max[i] = a.maxValues[i];
-        }
-      }
-      if (p.indices >= 0) info.indices = model.accessors.at(static_cast<std::size_t>(p.indices)).count;
-    }
-    s.meshes.push_back(std::move(info));
-  }
-  for (const tinygltf::Material& m : model.materials) {
-    GltfSummary::MaterialInfo info;
-    info.name = m.name;
-    for (std::size_t i = 0; i < 4 && m.pbrMetallicRoughness.baseColorFactor.size() == 4; ++i) {
-      info.colour[i] = m.pbrMetallicRoughness.baseColorFactor[i];
-    }
-    s.materials.push_back(std::move(info));
-  }
-  return s;
 }
 
 }  // namespace vern

@@ -1,0 +1,78 @@
+#include "forward/gltf_container.hpp"
+
+#include <cstdint>
+#include <cstring>
+
+#include "graph/error.hpp"
+
+namespace vern {
+
+namespace {
+
+void put_u32(std::string& out, std::uint32_t v) {
+  // GLB is little-endian, whatever the host.
+  const char bytes[4] = {static_cast<char>(v & 0xff), static_cast<char>((v >> 8) & 0xff),
+                         static_cast<char>((v >> 16) & 0xff), static_cast<char>((v >> 24) & 0xff)};
+  out.append(bytes, 4);
+}
+
+std::size_t padded(std::size_t n) { return (n + 3) & ~std::size_t{3}; }
+
+}  // namespace
+
+std::string glb_file(std::string file, std::string_view bin) {
+  if (file.size() < kGlbJsonOffset) throw Error(ErrorKind::Internal, "error: GLB text without room for its header");
+  const std::size_t json = file.size() - kGlbJsonOffset;
+  const std::size_t json_length = padded(json);
+  const std::size_t bin_length = padded(bin.size());
+  const std::size_t total = kGlbJsonOffset + json_length + (bin.empty() ? 0 : 8 + bin_length);
+  if (total > 0xffffffffu) {
+    fail(ErrorKind::Limit, "glTF output", {}, "the scene needs " + std::to_string(total >> 20) +
+                                                  " MiB, more than a GLB file can hold (4 GiB)",
+         "write fewer variants per file (-o a folder), or use --instancing to store terminals compactly");
+  }
+  file.reserve(total);
+  file.append(json_length - json, ' ');
+  if (!bin.empty()) {
+    put_u32(file, static_cast<std::uint32_t>(bin_length));
+    file.append("BIN\0", 4);
+    file.append(bin);
+    file.append(bin_length - bin.size(), '\0');
+  }
+  std::string header;
+  header.append("glTF", 4);
+  put_u32(header, 2);
+  put_u32(header, static_cast<std::uint32_t>(total));
+  put_u32(header, static_cast<std::uint32_t>(json_length));
+  header.append("JSON", 4);
+  file.replace(0, kGlbJsonOffset, header);
+  return file;
+}
+
+std::string base64(std::string_view bytes) {
+  static constexpr char kDigits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 3 <= bytes.size(); i += 3) {
+    const std::uint32_t v = static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << 16 |
+                            static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8 |
+                            static_cast<unsigned char>(bytes[i + 2]);
+    out += kDigits[v >> 18];
+    out += kDigits[(v >> 12) & 63];
+    out += kDigits[(v >> 6) & 63];
+    out += kDigits[v & 63];
+  }
+  const std::size_t rest = bytes.size() - i;
+  if (rest > 0) {
+    std::uint32_t v = static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << 16;
+    if (rest == 2) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i + 1])) << 8;
+    out += kDigits[v >> 18];
+    out += kDigits[(v >> 12) & 63];
+    out += rest == 2 ? kDigits[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+}  // namespace vern
