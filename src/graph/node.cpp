@@ -63,4 +63,33 @@ std::vector<NodeId> node_children(const Operation& op) {
   return out;
 }
 
+std::vector<const Expr*> node_expressions(const Operation& op) {
+  std::vector<const Expr*> out;
+  std::visit(Overload{
+                 [&](const Split& s) {
+                   out.push_back(&s.axis);
+                   for (const auto& p : s.parts) out.push_back(&p.size.value);
+                 },
+                 [&](const Repeat& r) { out.insert(out.end(), {&r.axis, &r.size}); },
+                 [&](const RepeatN& r) { out.insert(out.end(), {&r.axis, &r.count}); },
+                 [&](const Choose& c) {
+                   for (const auto& o : c.options) out.insert(out.end(), {&o.condition, &o.priority});
+                 },
+                 [&](const Call& c) {
+                   for (const auto& a : c.args) out.push_back(&a);
+                 },
+                 [&](const Translate& t) {
+                   for (const auto& s : t.offset) out.push_back(&s.value);
+                 },
+                 [&](const Scale& s) {
+                   for (const auto& z : s.size) out.push_back(&z.value);
+                 },
+                 [&](const Rotate& r) { out.insert(out.end(), {&r.axis, &r.angle}); },
+                 [&](const Colour& c) { out.insert(out.end(), {&c.red, &c.green, &c.blue}); },
+                 [](const auto&) {},
+             },
+             op);
+  return out;
+}
+
 }  // namespace vern

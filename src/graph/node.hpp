@@ -148,4 +148,8 @@ struct Node {
 // The node's children in order (split parts, choose options, ...).
 std::vector<NodeId> node_children(const Operation& op);
 
+// The node's own expressions in order (axes, sizes, conditions,
+// priorities, arguments, ...); empty ones (an absent condition) included.
+std::vector<const Expr*> node_expressions(const Operation& op);
+
 }  // namespace vern

@@ -1,0 +1,89 @@
+#include "inverse/orientation.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+#include "forward/scope.hpp"
+
+namespace vern {
+
+namespace {
+
+// Every sequence of at most two quarter turns, fewest first.
+const std::vector<Orientation>& candidates() {
+  static const std::vector<Orientation> all = [] {
+    std::vector<Orientation> out{{}};
+    std::vector<QuarterTurn> single;
+    for (const Axis a : {Axis::Z, Axis::X, Axis::Y}) {
+      for (int q = 1; q <= 3; ++q) single.push_back({a, q});
+    }
+    for (const QuarterTurn& t : single) out.push_back({t});
+    for (const QuarterTurn& t : single) {
+      for (const QuarterTurn& u : single) {
+        if (u.axis != t.axis) out.push_back({t, u});
+      }
+    }
+    return out;
+  }();
+  return all;
+}
+
+bool before(const glm::dvec3& a, const glm::dvec3& b) {
+  return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
+}
+
+// Is every point of `points` within tolerance of one of `sorted` (sorted
+// by x first)?
+bool covered(const std::vector<glm::dvec3>& points, const std::vector<glm::dvec3>& sorted, double tolerance) {
+  for (const glm::dvec3& p : points) {
+    auto it = std::lower_bound(sorted.begin(), sorted.end(), p.x - tolerance,
+                               [](const glm::dvec3& q, double x) { return q.x < x; });
+    bool found = false;
+    for (; it != sorted.end() && it->x <= p.x + tolerance && !found; ++it) {
+      found = std::abs(it->y - p.y) <= tolerance && std::abs(it->z - p.z) <= tolerance;
+    }
+    if (!found) return false;
+  }
+  return true;
+}
+
+Expr quarter_angle(int quarters) {
+  const Expr pi = Expr::number(std::numbers::pi);
+  switch (quarters) {
+    case 2: return pi;
+    case 3: return Expr::binary(BinaryOp::Div, Expr::binary(BinaryOp::Mul, Expr::number(3), pi), Expr::number(2));
+    default: return Expr::binary(BinaryOp::Div, pi, Expr::number(2));
+  }
+}
+
+}  // namespace
+
+std::optional<Orientation> find_orientation(const Mesh& canonical, const Mesh& placed, glm::dvec3 box_min,
+                                            glm::dvec3 box_max, double tolerance) {
+  std::vector<glm::dvec3> target = placed.positions;
+  std::sort(target.begin(), target.end(), before);
+  Scope box;
+  box.origin = box_min;
+  box.size = box_max - box_min;
+  std::vector<glm::dvec3> moved(canonical.positions.size());
+  for (const Orientation& turns : candidates()) {
+    Scope s = box;
+    for (const QuarterTurn& t : turns) s = rotated(s, t.axis, t.quarters * (std::numbers::pi / 2));
+    for (std::size_t i = 0; i < moved.size(); ++i) moved[i] = s.to_world(canonical.positions[i]);
+    if (!covered(moved, target, tolerance)) continue;
+    std::vector<glm::dvec3> sorted = moved;
+    std::sort(sorted.begin(), sorted.end(), before);
+    if (covered(placed.positions, sorted, tolerance)) return turns;
+  }
+  return std::nullopt;
+}
+
+NodeId turned_primitive(Grammar& g, LabelId label, const Orientation& turns) {
+  NodeId node = g.intern(Node{Primitive{label}, {}});
+  for (auto t = turns.rbegin(); t != turns.rend(); ++t) {
+    node = g.intern(Node{Rotate{Expr::axis(t->axis), quarter_angle(t->quarters), node}, {}});
+  }
+  return node;
+}
+
+}  // namespace vern
