@@ -1,0 +1,168 @@
+#include "inverse/fit_distribution.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+// Ceres stays in this translation unit (compile time).
+#include <ceres/autodiff_first_order_function.h>
+#include <ceres/gradient_problem.h>
+#include <ceres/gradient_problem_solver.h>
+
+#include "graph/error.hpp"
+
+namespace vern {
+
+namespace {
+
+// Negative log-likelihood of a normal(mu, exp(log_sigma)) truncated to
+// [lo, hi], over weighted observations, without the constant terms.
+struct TruncatedNormalCost {
+  const std::vector<Observation>* data;
+  double lo, hi;
+
+  template <class T>
+  bool operator()(const T* p, T* cost) const {
+    using std::erf, std::log, std::exp, std::sqrt;
+    const T mu = p[0];
+    const T sigma = exp(p[1]);
+    const T inv = T(1) / (sigma * T(std::numbers::sqrt2));
+    const T mass = (erf((T(hi) - mu) * inv) - erf((T(lo) - mu) * inv)) * T(0.5);
+    T total = T(0), n = T(0);
+    for (const Observation& o : *data) {
+      const T z = (T(o.value) - mu) / sigma;
+      total += T(o.count) * (T(0.5) * z * z);
+      n += T(o.count);
+    }
+    *cost = total + n * (log(sigma) + log(mass + T(1e-300)));
+    return true;
+  }
+};
+
+double total_count(const std::vector<Observation>& data) {
+  double n = 0;
+  for (const Observation& o : data) n += o.count;
+  return n;
+}
+
+// Distinct values: sorted observations joined while a cluster spans at
+// most the resolution; each cluster's middle stands for it.
+std::vector<Observation> distinct(std::vector<Observation> data, double resolution) {
+  std::sort(data.begin(), data.end(), [](const Observation& a, const Observation& b) { return a.value < b.value; });
+  std::vector<Observation> out;
+  double first = 0;
+  for (const Observation& o : data) {
+    if (!out.empty() && o.value - first <= resolution) {
+      out.back().count += o.count;
+      out.back().value = (first + o.value) / 2;
+    } else {
+      out.push_back(o);
+      first = o.value;
+    }
+  }
+  return out;
+}
+
+double normal_log_density(double z) { return -0.5 * z * z - 0.5 * std::log(2 * std::numbers::pi); }
+
+double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::numbers::sqrt2); }
+
+}  // namespace
+
+Distribution fit_distribution(const std::vector<Observation>& observations, const FitOptions& options) {
+  if (observations.empty()) throw Error(ErrorKind::Internal, "error: a distribution fitted to no observations");
+  double lo_seen = observations[0].value, hi_seen = lo_seen;
+  for (const Observation& o : observations) {
+    lo_seen = std::min(lo_seen, o.value);
+    hi_seen = std::max(hi_seen, o.value);
+  }
+  Distribution best;
+  if (hi_seen - lo_seen <= options.resolution) {
+    best.values = {(lo_seen + hi_seen) / 2};
+    return best;
+  }
+  const double n = total_count(observations);
+  if (options.uniform_only || n < 2) {
+    best.kind = DistributionKind::Uniform;
+    best.lo = lo_seen;
+    best.hi = hi_seen;
+    return best;
+  }
+
+  // Every model's probabilities are per resolution-wide bin.
+  const double log_bin = std::log(options.resolution);
+  const double widen = (hi_seen - lo_seen) / (n - 1);
+  const double lo = std::max(options.floor, lo_seen - widen), hi = hi_seen + widen;
+
+  // rand(lo, hi).
+  best.kind = DistributionKind::Uniform;
+  best.lo = lo;
+  best.hi = hi;
+  best.bic = 2 * std::log(n) - 2 * n * (log_bin - std::log(hi - lo));
+
+  // choice(...) of the values seen, when they repeat.
+  const std::vector<Observation> values = distinct(observations, options.resolution);
+  const auto m = static_cast<double>(values.size());
+  if (m <= n / 2) {
+    const double bic = m * std::log(n) - 2 * n * std::log(1 / m);
+    if (bic < best.bic) {
+      best = {};
+      best.kind = DistributionKind::Choice;
+      for (const Observation& o : values) best.values.push_back(o.value);
+      best.bic = bic;
+    }
+  }
+
+  // tnormal(mu, sigma, lo, hi), started from the sample's mean and spread.
+  double mean = 0;
+  for (const Observation& o : observations) mean += o.count * o.value;
+  mean /= n;
+  double variance = 0;
+  for (const Observation& o : observations) variance += o.count * (o.value - mean) * (o.value - mean);
+  variance /= n;
+  double p[2] = {mean, std::log(std::max(std::sqrt(variance), options.resolution))};
+  ceres::GradientProblem problem(
+      new ceres::AutoDiffFirstOrderFunction<TruncatedNormalCost, 2>(new TruncatedNormalCost{&observations, lo, hi}));
+  ceres::GradientProblemSolver::Options solver;
+  solver.max_num_iterations = 200;
+  solver.logging_type = ceres::SILENT;
+  ceres::GradientProblemSolver::Summary summary;
+  ceres::Solve(solver, problem, p, &summary);
+  const double mu = p[0], sigma = std::exp(p[1]);
+  if (std::isfinite(mu) && std::isfinite(sigma) && sigma > 0) {
+    const double mass = normal_cdf((hi - mu) / sigma) - normal_cdf((lo - mu) / sigma);
+    double log_l = 0;
+    for (const Observation& o : observations) {
+      log_l += o.count * (normal_log_density((o.value - mu) / sigma) - std::log(sigma) - std::log(mass) + log_bin);
+    }
+    const double bic = 4 * std::log(n) - 2 * log_l;
+    if (mass > 0 && bic < best.bic) {
+      best = {};
+      best.kind = DistributionKind::TruncatedNormal;
+      best.mu = mu;
+      best.sigma = sigma;
+      best.lo = lo;
+      best.hi = hi;
+      best.bic = bic;
+    }
+  }
+  return best;
+}
+
+Expr distribution_expr(const Distribution& d) {
+  switch (d.kind) {
+    case DistributionKind::Constant: return Expr::number(d.values.at(0));
+    case DistributionKind::Choice: {
+      std::vector<Expr> args;
+      for (const double v : d.values) args.push_back(Expr::number(v));
+      return Expr::call(Function::Choice, std::move(args));
+    }
+    case DistributionKind::Uniform: return Expr::call(Function::Rand, {Expr::number(d.lo), Expr::number(d.hi)});
+    case DistributionKind::TruncatedNormal:
+      return Expr::call(Function::TNormal,
+                        {Expr::number(d.mu), Expr::number(d.sigma), Expr::number(d.lo), Expr::number(d.hi)});
+  }
+  return Expr::number(0);
+}
+
+}  // namespace vern

@@ -1,0 +1,59 @@
+// Which distribution did the examples' values come from? (issue 4,
+// "Fitted distributions"). The thesis wrote every varying size as a
+// uniform range between the smallest and largest value seen; a person
+// would write a constant, a choice among the few values used, a uniform
+// range, or a bell curve, whichever the data supports.
+//
+// Candidates, compared by BIC (k ln n - 2 ln L, n the number of
+// observations), each a model whose support holds every value seen, so
+// every example stays derivable:
+//   - constant: all values within the resolution (no fitting needed);
+//   - choice(v1, ..., vm) of the distinct values, when values repeat
+//     (m <= n / 2): a discrete style, m parameters;
+//   - rand(lo, hi), 2 parameters;
+//   - tnormal(mu, sigma, lo, hi), 4 parameters, mu and sigma fitted by
+//     maximum likelihood (Ceres' gradient solver);
+// Continuous densities are turned into probabilities over the resolution
+// (the examples' tolerance), so discrete and continuous models compare on
+// one footing. The continuous supports widen the range seen by the
+// unbiased estimate for a uniform sample ((max - min) / (n - 1) each side;
+// never below `floor`): ten examples say the style reaches a little
+// beyond their own extremes.
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "graph/expr.hpp"
+
+namespace vern {
+
+struct Observation {
+  double value = 0;
+  double count = 1;  // how many examples show it
+};
+
+enum class DistributionKind { Constant, Choice, Uniform, TruncatedNormal };
+
+struct Distribution {
+  DistributionKind kind = DistributionKind::Constant;
+  std::vector<double> values;  // Constant: one; Choice: the distinct values, ascending
+  double lo = 0, hi = 0;       // Uniform, TruncatedNormal: the support
+  double mu = 0, sigma = 0;    // TruncatedNormal
+  double bic = 0;              // of the chosen model (0 for a constant)
+};
+
+struct FitOptions {
+  double resolution = 1e-9;  // values this close are one value (the examples' tolerance)
+  double floor = -std::numeric_limits<double>::infinity();  // sizes: 0
+  bool uniform_only = false;  // `--distributions uniform`: min-max ranges, as the thesis
+};
+
+// observations must not be empty.
+Distribution fit_distribution(const std::vector<Observation>& observations, const FitOptions& options);
+
+// The distribution as the grammar writes it: a literal, choice(...),
+// rand(lo, hi) or tnormal(mu, sigma, lo, hi).
+Expr distribution_expr(const Distribution& d);
+
+}  // namespace vern

@@ -1,0 +1,94 @@
+// Fitting distributions to the examples' values: the model BIC prefers,
+// a support that holds every value seen, and the expression written.
+#include "inverse/fit_distribution.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace vern {
+namespace {
+
+std::vector<Observation> observations(const std::vector<double>& values) {
+  std::vector<Observation> out;
+  for (const double v : values) out.push_back({v, 1});
+  return out;
+}
+
+void expect_support_holds(const Distribution& d, const std::vector<double>& values) {
+  for (const double v : values) {
+    if (d.kind == DistributionKind::Choice || d.kind == DistributionKind::Constant) {
+      const bool found = std::any_of(d.values.begin(), d.values.end(), [&](double x) { return std::abs(x - v) <= 1e-6; });
+      EXPECT_TRUE(found) << v;
+    } else {
+      EXPECT_LE(d.lo, v);
+      EXPECT_GE(d.hi, v);
+    }
+  }
+}
+
+TEST(FitDistribution, ValuesWithinTheResolutionAreAConstant) {
+  const Distribution d = fit_distribution(observations({2.0, 2.0 + 1e-7, 2.0 - 1e-7}), {.resolution = 1e-6});
+  EXPECT_EQ(d.kind, DistributionKind::Constant);
+  EXPECT_NEAR(d.values.at(0), 2.0, 1e-7);
+}
+
+TEST(FitDistribution, RepeatedValuesAreAChoice) {
+  const std::vector<double> v = {3, 4.5, 3, 6, 4.5, 3, 6, 4.5, 3, 6};
+  const Distribution d = fit_distribution(observations(v), {.resolution = 1e-6});
+  EXPECT_EQ(d.kind, DistributionKind::Choice);
+  EXPECT_EQ(d.values, (std::vector<double>{3, 4.5, 6}));
+  expect_support_holds(d, v);
+}
+
+TEST(FitDistribution, EvenlySpreadValuesAreUniformAndReachBeyondTheExtremes) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(2.0, 3.0);
+  std::vector<double> v;
+  for (int i = 0; i < 40; ++i) v.push_back(u(rng));
+  const Distribution d = fit_distribution(observations(v), {.resolution = 1e-6});
+  EXPECT_EQ(d.kind, DistributionKind::Uniform);
+  expect_support_holds(d, v);
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  EXPECT_LT(d.lo, *lo);
+  EXPECT_GT(d.hi, *hi);
+  EXPECT_NEAR(d.lo, 2.0, 0.05);
+  EXPECT_NEAR(d.hi, 3.0, 0.05);
+}
+
+TEST(FitDistribution, ConcentratedValuesAreATruncatedNormal) {
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> normal(10.0, 0.5);
+  std::vector<double> v;
+  for (int i = 0; i < 60; ++i) v.push_back(normal(rng));
+  const Distribution d = fit_distribution(observations(v), {.resolution = 1e-6});
+  ASSERT_EQ(d.kind, DistributionKind::TruncatedNormal);
+  EXPECT_NEAR(d.mu, 10.0, 0.2);
+  EXPECT_NEAR(d.sigma, 0.5, 0.15);
+  expect_support_holds(d, v);
+}
+
+TEST(FitDistribution, UniformOnlyGivesTheThesissMinMaxRange) {
+  const std::vector<double> v = {3, 4.5, 3, 6, 4.5};
+  const Distribution d = fit_distribution(observations(v), {.resolution = 1e-6, .uniform_only = true});
+  EXPECT_EQ(d.kind, DistributionKind::Uniform);
+  EXPECT_EQ(d.lo, 3);
+  EXPECT_EQ(d.hi, 6);
+}
+
+TEST(FitDistribution, TheSupportNeverPassesTheFloor) {
+  const Distribution d = fit_distribution(observations({0.1, 0.5, 0.9, 0.3, 0.7}), {.resolution = 1e-6, .floor = 0});
+  EXPECT_GE(d.lo, 0.0);
+}
+
+TEST(FitDistribution, ExpressionsNameTheModel) {
+  Distribution d;
+  d.kind = DistributionKind::TruncatedNormal;
+  d.mu = 1, d.sigma = 0.5, d.lo = 0, d.hi = 2;
+  const Expr e = distribution_expr(d);
+  EXPECT_EQ(static_cast<Function>(e.node(e.root()).op), Function::TNormal);
+  EXPECT_EQ(e.node(e.root()).argc, 4);
+}
+
+}  // namespace
+}  // namespace vern
