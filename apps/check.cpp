@@ -29,6 +29,7 @@ CommandLine make_command_line() {
   cl.add({"--scope", "", 3, "X Y Z", "plot size to derive on (default: each example's own extent)"});
   cl.add({"--brief", "-b", 0, "", "one line per example, without the choices"});
   cl.add({"--max-steps", "", 1, "N", "give up after N matching steps per example (default 10000000)"});
+  cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
   cl.add_standard_options(/*quiet=*/false);
   cl.set_epilog(
       "examples:\n"
@@ -52,16 +53,30 @@ int run(int argc, char** argv) {
     throw Error(ErrorKind::Usage, "check: error: give a grammar and at least one example\n"
                                   "  hint: check style.grm examples/*.obj");
   CheckOptions options;
-  if (args.has("--tolerance")) options.tolerance = CommandLine::number(args, "--tolerance");
+  if (args.has("--tolerance")) {
+    options.tolerance = CommandLine::number(args, "--tolerance");
+    if (!(options.tolerance > 0))
+      throw Error(ErrorKind::Usage, "check: error: --tolerance must be > 0, got " + args.value("--tolerance") +
+                                        "\n  hint: for example --tolerance 0.001");
+  }
   if (args.has("--max-steps"))
     options.max_steps = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-steps", 1, 1LL << 50));
   const bool brief = args.has("--brief");
+  ExampleLimits limits;
+  if (args.has("--max-parts"))
+    limits.max_parts = static_cast<std::size_t>(CommandLine::integer(args, "--max-parts", 1, 100'000'000));
   // A hand-written grammar's plot can be larger than what it built (the
   // city's towers stop below its 80 m plot): --scope names the plot.
   std::optional<glm::dvec3> scope;
   if (args.has("--scope")) {
-    glm::dvec3 size;
-    for (int i = 0; i < 3; ++i) size[i] = CommandLine::number(args, "--scope", static_cast<std::size_t>(i));
+    glm::dvec3 size(0.0);
+    for (int i = 0; i < 3; ++i) {
+      size[i] = CommandLine::number(args, "--scope", static_cast<std::size_t>(i));
+      if (size[i] < 0)
+        throw Error(ErrorKind::Usage, "check: error: --scope sizes must be >= 0, got " +
+                                          args.value("--scope", static_cast<std::size_t>(i)) +
+                                          "\n  hint: for example --scope 12 8 9 (metres along x, y, z)");
+    }
     scope = size;
   }
 
@@ -70,13 +85,20 @@ int run(int argc, char** argv) {
       example_files(std::vector<std::string>(args.positional.begin() + 1, args.positional.end()));
   std::size_t fits = 0;
   for (const auto& file : files) {
-    const Example example = load_example(file);
+    const Example example = load_example(file, limits);
     std::vector<LabelledBox> boxes = example.boxes;
     for (auto& b : boxes) {
       b.min -= example.min;
       b.max -= example.min;
     }
-    const CheckResult r = check_example(grammar, boxes, scope.value_or(example_size(example)), options);
+    CheckResult r;
+    try {
+      r = check_example(grammar, boxes, scope.value_or(example_size(example)), options);
+    } catch (const Error& e) {
+      // A limit reached while matching: say on which example.
+      if (e.kind() != ErrorKind::Limit) throw;
+      throw Error(e.kind(), file.string() + ": " + e.what());
+    }
     if (r.derivable) {
       ++fits;
       std::cout << file.string() << ": derivable\n";

@@ -12,8 +12,10 @@
 #include "forward/variants.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/parser.hpp"
+#include "graph/suggest.hpp"
 #include "support/command_line.hpp"
 #include "support/guarded_main.hpp"
+#include "support/output_paths.hpp"
 #include "support/primitive_sources.hpp"
 
 namespace fs = std::filesystem;
@@ -34,10 +36,13 @@ CommandLine make_command_line() {
   cl.add({"--start", "", 1, "LABEL", "start rule (default: @start, else the first rule)"});
   cl.add({"--spacing", "", 1, "METRES", "gap between buildings in a one-file layout (default 5)"});
   cl.add({"--primitives", "", 1, "PATH", "primitive meshes: a folder of .obj files or one .obj of named objects"});
+  cl.add({"--instancing", "", 0, "",
+          "glTF/GLB: each part's copies as GPU instances (EXT_mesh_gpu_instancing):\n"
+          "smaller, faster files for large scenes; the viewer must support the extension"});
   cl.add({"--strict", "", 0, "", "treat warnings (no rule applies, unknown primitive) as errors"});
   cl.add({"--threads", "-j", 1, "N", "derive with N threads (default: all cores; output is the same)"});
   cl.add({"--max-depth", "", 1, "N", "limit on nested rule calls (default 1000)"});
-  cl.add({"--max-terminals", "", 1, "N", "limit on terminals per building (default 10000000)"});
+  cl.add({"--max-terminals", "", 1, "N", "limit on terminals per building (default 1000000, ~200 MB)"});
   cl.add({"--max-operations", "", 1, "N", "limit on operations per building (default 200000000)"});
   cl.add_standard_options();
   cl.set_epilog(
@@ -63,11 +68,12 @@ std::optional<Format> format_of_extension(const fs::path& p) {
 
 const char* extension(Format f) { return f == Format::Obj ? ".obj" : f == Format::Gltf ? ".gltf" : ".glb"; }
 
-void write_scene(const Scene& scene, const PrimitiveLibrary& library, const fs::path& path, Format format) {
+void write_scene(const Scene& scene, const PrimitiveLibrary& library, const fs::path& path, Format format,
+                 GltfOptions gltf) {
   if (format == Format::Obj)
     write_obj(scene, library, path);
   else
-    write_gltf(scene, library, path);
+    write_gltf(scene, library, path, gltf);
 }
 
 [[noreturn]] void usage(const std::string& message, const std::string& hint = {}) {
@@ -102,7 +108,8 @@ int run(int argc, char** argv) {
     glm::dvec3 size;
     for (int i = 0; i < 3; ++i) {
       size[i] = CommandLine::number(args, "--scope", static_cast<std::size_t>(i));
-      if (size[i] < 0) usage("--scope sizes must be >= 0");
+      if (size[i] < 0) usage("--scope sizes must be >= 0, got " + args.value("--scope", static_cast<std::size_t>(i)),
+                             "for example --scope 12 8 9 (metres along x, y, z)");
     }
     options.derive.size = size;
   }
@@ -123,31 +130,66 @@ int run(int argc, char** argv) {
   const std::optional<Format> file_format = format_of_extension(output);
   const bool one_file = file_format.has_value();
   if (one_file && folder_format && *folder_format != *file_format)
-    usage("--format " + args.value("--format") + " contradicts the output file " + output.string());
+    usage("--format " + args.value("--format") + " contradicts the output file " + output.string(),
+          "leave out --format when writing one file: its extension says the format");
+  GltfOptions gltf;
+  gltf.instancing = args.has("--instancing");
+  if (gltf.instancing && (one_file ? *file_format : folder_format.value_or(Format::Obj)) == Format::Obj)
+    usage("--instancing applies to glTF output only", "write a .glb or .gltf file, or add --format glb");
   if (!one_file && output.has_extension() && !fs::is_directory(output))
     usage("cannot tell what to write to '" + output.string() + "'",
           "name a folder (ending in /) or a file ending in .obj, .gltf or .glb");
-  if (one_file) {
-    // Say so now, naming the path as given, rather than after deriving.
-    const fs::path folder = output.has_parent_path() ? output.parent_path() : fs::path(".");
-    if (!fs::is_directory(folder, ec))
-      throw Error(ErrorKind::Io, output.string() + ": error: cannot write here: " + folder.string() +
-                                     " is not an existing folder\n  hint: create the folder first, or choose another path");
-  }
+  // Say so now, naming the path as given, rather than after deriving.
+  if (one_file) check_output_file("generate", output, {grammar_path}, "the grammar file");
+  if (!one_file && fs::exists(output, ec) && !fs::is_directory(output, ec))
+    throw Error(ErrorKind::Io, output.string() + ": error: cannot write the buildings into this folder: it is a file" +
+                                   "\n  hint: name a folder (ending in /) or a file ending in .obj, .gltf or .glb");
 
   Grammar grammar = read_grammar_file(grammar_path);
   if (args.has("--start")) {
     const std::string label = args.value("--start");
     const auto rule = grammar.find_rule(label);
-    if (!rule) usage("--start names '" + label + "', which is not a rule of " + grammar_path.string());
-    if (!grammar.rules[*rule].params.empty()) usage("--start '" + label + "' takes parameters; the start rule takes none");
+    if (!rule) {
+      std::vector<std::string> names;
+      for (const auto& r : grammar.rules) names.push_back(r.label);
+      usage("--start names '" + label + "', which is not a rule of " + grammar_path.string(),
+            suggest(label, names, "the rules"));
+    }
+    if (!grammar.rules[*rule].params.empty())
+      usage("--start '" + label + "' takes parameters; the start rule takes none",
+            "start from a rule without parameters, or add one such as 'plot --> " + label + "(...)'");
     grammar.start_rule = *rule;
   }
   const std::optional<fs::path> primitives_path =
       args.has("--primitives") ? std::optional<fs::path>(args.value("--primitives")) : std::nullopt;
+  // The primitive meshes are inputs too: never written over.
+  std::vector<fs::path> primitive_inputs;
+  if (!grammar.primitives.empty()) primitive_inputs.push_back(grammar_path.parent_path() / grammar.primitives);
+  if (primitives_path) primitive_inputs.push_back(*primitives_path);
+  if (one_file) {
+    check_output_file("generate", output, primitive_inputs, "a primitives file");
+  } else {
+    const std::string ext = extension(folder_format.value_or(Format::Obj));
+    for (const fs::path& input : primitive_inputs) {
+      // Only variant_NNN files are written into the folder.
+      const std::string name = input.filename().string();
+      const fs::path folder = input.parent_path().empty() ? fs::path(".") : input.parent_path();
+      if (!name.starts_with("variant_") || !name.ends_with(ext) || !same_file(folder, output)) continue;
+      for (std::uint32_t i = 0; i < options.count; ++i)
+        if (name == variant_name(i) + ext)
+          usage("the output " + (output / name).string() + " is a primitives file itself",
+                "choose another output folder; inputs are never overwritten");
+    }
+  }
   const PrimitiveLibrary library = primitives_for(grammar, grammar_path, primitives_path);
   for (const auto& w : unknown_primitive_warnings(grammar, library)) {
-    if (options.derive.strict) throw Error(ErrorKind::Input, w + "\n  hint: --strict turns this warning into an error");
+    if (options.derive.strict) {
+      // The warning's text, reported as the error --strict makes it.
+      std::string message = w;
+      if (const auto at = message.find(": warning: "); at != std::string::npos) message.replace(at, 11, ": error: ");
+      throw Error(ErrorKind::Input, message + "\n  hint: --strict turns this warning into an error; add the primitive "
+                                              "with --primitives or @primitives, or run without --strict");
+    }
     if (!quiet) std::cerr << w << "\n";
   }
 
@@ -173,14 +215,17 @@ int run(int argc, char** argv) {
 
   std::string where;
   if (one_file) {
-    write_scene(lay_out(std::move(derivations), spacing), library, output, *file_format);
+    write_scene(lay_out(std::move(derivations), spacing), library, output, *file_format, gltf);
     where = output.string();
   } else {
     const Format format = folder_format.value_or(Format::Obj);
     fs::create_directories(output, ec);
-    if (ec) throw Error(ErrorKind::Io, output.string() + ": error: cannot create the folder: " + ec.message());
+    if (ec)
+      throw Error(ErrorKind::Io, output.string() + ": error: cannot create the folder: " + ec.message() +
+                                     "\n  hint: check that its parent folder exists and is writable, or choose another path");
     for (std::uint32_t i = 0; i < derivations.size(); ++i)
-      write_scene(single(std::move(derivations[i]), i), library, output / (variant_name(i) + extension(format)), format);
+      write_scene(single(std::move(derivations[i]), i), library, output / (variant_name(i) + extension(format)), format,
+                  gltf);
     where = (output / ("variant_000" + std::string(extension(format)))).string();
     if (options.count > 1) where += " ... " + variant_name(options.count - 1) + extension(format);
   }

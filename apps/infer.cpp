@@ -9,10 +9,12 @@
 #include "forward/obj_writer.hpp"
 #include "forward/variants.hpp"
 #include "graph/atomic_file.hpp"
+#include "graph/reserved_words.hpp"
 #include "graph/writer.hpp"
 #include "inverse/infer.hpp"
 #include "support/command_line.hpp"
 #include "support/guarded_main.hpp"
+#include "support/output_paths.hpp"
 
 namespace fs = std::filesystem;
 using namespace vern;
@@ -31,6 +33,7 @@ CommandLine make_command_line() {
   cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the largest example)"});
   cl.add({"--start", "", 1, "LABEL", "name of the start rule (default: building)"});
   cl.add({"--seed", "-s", 1, "S", "seed of the test derivations run on the result (default 1)"});
+  cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
   cl.add_standard_options();
   cl.set_epilog(
       "examples:\n"
@@ -44,6 +47,15 @@ CommandLine make_command_line() {
 
 [[noreturn]] void usage(const std::string& message, const std::string& hint = {}) {
   throw Error(ErrorKind::Usage, "infer: error: " + message + (hint.empty() ? "" : "\n  hint: " + hint));
+}
+
+// A label the written grammar can hold: a name, not an operation word.
+bool is_rule_name(const std::string& s) {
+  auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  if (s.empty() || !letter(s[0]) || is_operation_word(s)) return false;
+  for (char c : s)
+    if (!letter(c) && !(c >= '0' && c <= '9')) return false;
+  return true;
 }
 
 // A path for the grammar to name: relative to the grammar's folder when
@@ -68,32 +80,36 @@ int run(int argc, char** argv) {
   const fs::path output = args.value("--output");
   const fs::path prims = args.has("--primitives-out") ? fs::path(args.value("--primitives-out"))
                                                       : fs::path(output).replace_extension(".prims.obj");
-  if (prims.extension() != ".obj") usage("--primitives-out must name an .obj file, got " + prims.string());
+  if (prims.extension() != ".obj")
+    usage("--primitives-out must name an .obj file, got " + prims.string(), "for example --primitives-out style.prims.obj");
   InferOptions options;
   if (args.has("--tolerance")) {
     options.tolerance = CommandLine::number(args, "--tolerance");
-    if (!(options.tolerance > 0)) usage("--tolerance must be > 0");
+    if (!(options.tolerance > 0)) usage("--tolerance must be > 0, got " + args.value("--tolerance"), "for example --tolerance 0.001");
   }
-  if (args.has("--start")) options.start = args.value("--start");
+  if (args.has("--start")) {
+    options.start = args.value("--start");
+    if (!is_rule_name(options.start))
+      usage("--start '" + options.start + "' cannot be a rule label",
+            "a label is a letter or '_' followed by letters, digits and '_', and not an operation word such as split");
+  }
+  ExampleLimits limits;
+  if (args.has("--max-parts"))
+    limits.max_parts = static_cast<std::size_t>(CommandLine::integer(args, "--max-parts", 1, 100'000'000));
   const std::uint64_t seed =
       args.has("--seed") ? static_cast<std::uint64_t>(CommandLine::integer(args, "--seed", 0, 1LL << 53)) : 1;
 
   const auto started = std::chrono::steady_clock::now();
   const std::vector<fs::path> files = example_files(args.positional);
-  std::error_code ec;
-  for (const auto& f : files)
-    if (fs::equivalent(f, output, ec) || fs::equivalent(f, prims, ec))
-      usage("the output " + (fs::equivalent(f, output, ec) ? output : prims).string() + " is one of the examples",
-            "choose another output path");
-  const fs::path folder = output.has_parent_path() ? output.parent_path() : fs::path(".");
-  if (!fs::is_directory(folder, ec))
-    throw Error(ErrorKind::Io, output.string() + ": error: cannot write here: " + folder.string() +
-                                   " is not an existing folder\n  hint: create the folder first, or choose another path");
+  // Three files are written: the grammar, the meshes and their materials.
+  const fs::path prims_mtl = fs::path(prims).replace_extension(".mtl");
+  for (const fs::path& out : {output, prims, prims_mtl}) check_output_file("infer", out, files, "an example");
+  check_distinct_outputs("infer", {output, prims, prims_mtl});
 
   const bool show_progress = !quiet && files.size() >= 20 && isatty(STDERR_FILENO);
   std::vector<Example> examples;
   for (std::size_t i = 0; i < files.size(); ++i) {
-    examples.push_back(load_example(files[i]));
+    examples.push_back(load_example(files[i], limits));
     if (show_progress && (i % 10 == 9 || i + 1 == files.size()))
       std::fprintf(stderr, "\rreading examples %zu/%zu", i + 1, files.size());
   }

@@ -146,9 +146,11 @@ TEST(Parser, RulesMayContinueInsideBracketsAndTheLastLineNeedsNoNewline) {
 
 TEST(Parser, ReportsSyntaxErrorsWithLineAndColumn) {
   EXPECT_EQ(parse_error("p --> split(x){ ~1 : I(a) ~1 : I(b) }"),
-            "g.grm:1:27: error: expected '}' or '|' after a split part, found '~'");
+            "g.grm:1:27: error: expected '}' or '|' after a split part, found '~'\n"
+            "  hint: write split(axis){ size : operation | size : operation }");
   EXPECT_EQ(parse_error("p --> split(x{ ~1 : nil }"),
-            "g.grm:1:14: error: expected ')' after the axis of split, found '{'");
+            "g.grm:1:14: error: expected ')' after the axis of split, found '{'\n"
+            "  hint: write split(axis){ size : operation | size : operation }");
   EXPECT_NE(parse_error("p split(x){ ~1 : nil }").find("g.grm:1:3: error: expected '-->'"), std::string::npos);
   EXPECT_NE(parse_error("p --> nil\n  $").find("g.grm:2:3: error: unexpected character '$'"), std::string::npos);
   EXPECT_NE(parse_error("p --> I()").find("g.grm:1:9: error: expected a primitive name"), std::string::npos);

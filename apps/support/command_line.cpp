@@ -33,6 +33,7 @@ const OptionSpec* CommandLine::find(const std::string& arg) const {
 
 ParsedCommandLine CommandLine::parse(int argc, const char* const* argv) const {
   ParsedCommandLine out;
+  out.program = program_;
   bool only_positional = false;
   for (int i = 1; i < argc; ++i) {
     std::string arg = argv[i];
@@ -63,7 +64,10 @@ ParsedCommandLine CommandLine::parse(int argc, const char* const* argv) const {
     auto& values = out.options[spec->name];
     values.clear();
     if (has_inline) {
-      if (spec->values != 1) usage_error(program_, spec->name + " takes " + std::to_string(spec->values) + " values", "");
+      if (spec->values != 1)
+        usage_error(program_, spec->name + " takes " + std::to_string(spec->values) + " values, not '=" + inline_value + "'",
+                    "write " + spec->name + (spec->value_names.empty() ? "" : " " + spec->value_names) +
+                        " with spaces, without '='");
       values.push_back(inline_value);
       continue;
     }
@@ -96,7 +100,7 @@ double CommandLine::number(const ParsedCommandLine& cl, const std::string& name,
   double v = 0;
   auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
-    usage_error("", name + " expects a number, got '" + text + "'", "for example: " + name + " 10");
+    usage_error(cl.program, name + " expects a number, got '" + text + "'", "for example: " + name + " 10");
   return v;
 }
 
@@ -105,10 +109,11 @@ long long CommandLine::integer(const ParsedCommandLine& cl, const std::string& n
   long long v = 0;
   auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc() || end != text.data() + text.size())
-    usage_error("", name + " expects a whole number, got '" + text + "'", "");
+    usage_error(cl.program, name + " expects a whole number, got '" + text + "'",
+                "give a whole number from " + std::to_string(min) + " to " + std::to_string(max));
   if (v < min || v > max)
-    usage_error("", name + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " + text,
-                "");
+    usage_error(cl.program, name + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " + text,
+                "give a whole number from " + std::to_string(min) + " to " + std::to_string(max));
   return v;
 }
 

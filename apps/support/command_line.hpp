@@ -17,6 +17,7 @@ struct OptionSpec {
 };
 
 struct ParsedCommandLine {
+  std::string program;  // for messages about the values
   std::vector<std::string> positional;
   std::map<std::string, std::vector<std::string>> options;  // by long name
 

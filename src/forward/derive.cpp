@@ -6,6 +6,7 @@
 
 #include "forward/evaluate.hpp"
 #include "forward/random_stream.hpp"
+#include "forward/stack_guard.hpp"
 #include "graph/number_format.hpp"
 
 namespace vern {
@@ -104,7 +105,8 @@ class Deriver {
         fail(ErrorKind::Input, g_.source_name, e.loc, e.message, e.hint);
       }
       if (size[i] < 0)
-        fail(ErrorKind::Input, g_.source_name, g_.scope[i].loc(), "@scope size " + format_number(size[i]) + " is negative");
+        fail(ErrorKind::Input, g_.source_name, g_.scope[i].loc(), "@scope size " + format_number(size[i]) + " is negative",
+             "sizes are lengths in metres and must be >= 0");
     }
     return size;
   }
@@ -252,6 +254,13 @@ class Deriver {
     if (chain_.size() >= opt_.limits.max_depth)
       fail_here(ErrorKind::Limit, n.loc, "rule calls nested deeper than " + std::to_string(opt_.limits.max_depth),
                 "raise the limit with --max-depth, or check for recursion that never stops");
+    // --max-depth counts calls; the stack holds bytes (stack_guard.hpp).
+    if (stack_.exhausted())
+      fail_here(ErrorKind::Limit, n.loc,
+                "rule calls nested " + std::to_string(chain_.size()) + " deep fill this thread's " +
+                    std::to_string(stack_.size() >> 20) + " MB stack (below --max-depth " +
+                    std::to_string(opt_.limits.max_depth) + ")",
+                "check for recursion that never stops; a grammar this deep needs a larger stack (ulimit -s)");
     // Arguments are evaluated in the caller's scope before the callee's frame exists.
     const std::size_t base = params_.size();
     for (const auto& a : op.args) {
@@ -304,6 +313,7 @@ class Deriver {
   std::vector<Frame> chain_;
   std::vector<bool> warned_;
   std::uint64_t operations_ = 0;
+  const StackGuard& stack_ = StackGuard::for_this_thread();
 };
 
 void Deriver::node(NodeId id, const Scope& s, std::uint64_t slot, std::uint64_t parent_key) {
@@ -321,7 +331,8 @@ void Deriver::node(NodeId id, const Scope& s, std::uint64_t slot, std::uint64_t 
       const Axis a = axis(op.axis, rng, "the axis of repeat");
       const double tile = number(op.size, rng, "the tile size of repeat");
       if (!(tile > 0))
-        fail_here(ErrorKind::Input, op.size.loc(), "the tile size of repeat is " + format_number(tile) + "; it must be > 0", "");
+        fail_here(ErrorKind::Input, op.size.loc(), "the tile size of repeat is " + format_number(tile) + "; it must be > 0",
+                  "give a tile length in metres, or use repeatN(axis, count) for a number of tiles");
       const double q = s.size[static_cast<int>(a)] / tile;
       // ceil, forgiving float noise: 0.7 / 0.1 is 7.000000000000001 and means 7.
       const double count = std::max(1.0, std::ceil(q - 1e-9 * std::max(1.0, q)));

@@ -18,7 +18,9 @@ namespace vern {
 
 struct DeriveLimits {
   std::uint32_t max_depth = 1000;            // nested rule calls (--max-depth)
-  std::uint64_t max_terminals = 10'000'000;  // terminals per derivation (--max-terminals)
+  // Terminals per derivation (--max-terminals). Each takes about 170 bytes
+  // while held for writing: a million is some 200 MB per building.
+  std::uint64_t max_terminals = 1'000'000;
   std::uint64_t max_operations = 200'000'000;  // operations run, tiles included (--max-operations)
 };
 

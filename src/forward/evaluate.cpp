@@ -97,10 +97,12 @@ struct Evaluator {
       case BinaryOp::Sub: return a - b;
       case BinaryOp::Mul: return a * b;
       case BinaryOp::Div:
-        if (b == 0.0) fail_at(i, "division by zero (" + format_number(a) + " / 0)");
+        if (b == 0.0)
+          fail_at(i, "division by zero (" + format_number(a) + " / 0)", "guard the divisor, e.g. a / max(b, 0.001)");
         return a / b;
       case BinaryOp::Mod:
-        if (b == 0.0) fail_at(i, "remainder by zero (" + format_number(a) + " % 0)");
+        if (b == 0.0)
+          fail_at(i, "remainder by zero (" + format_number(a) + " % 0)", "guard the divisor, e.g. a % max(b, 1)");
         return std::fmod(a, b);
       case BinaryOp::Lt: return a < b ? 1.0 : 0.0;
       case BinaryOp::Le: return a <= b ? 1.0 : 0.0;
@@ -134,7 +136,7 @@ struct Evaluator {
         case Function::Ceil: return std::ceil(v);
         case Function::Round: return std::round(v);
         case Function::Sqrt:
-          if (v < 0) fail_at(i, "sqrt of a negative number (" + format_number(v) + ")");
+          if (v < 0) fail_at(i, "sqrt of a negative number (" + format_number(v) + ")", "write sqrt(max(0, v)) or sqrt(abs(v))");
           return std::sqrt(v);
         case Function::Sin: return std::sin(v);
         case Function::Cos: return std::cos(v);
@@ -165,13 +167,14 @@ struct Evaluator {
         const double a = std::ceil(num(r[0]));
         const double b = std::floor(num(r[1]));
         if (b < a)
-          fail_at(i, "randint(" + format_number(a) + ", " + format_number(b) + ") has no whole number in range");
+          fail_at(i, "randint(" + format_number(a) + ", " + format_number(b) + ") has no whole number in range",
+                  "randint(a, b) needs a whole number between a and b; for any number use rand(a, b)");
         return std::min(a + std::floor(ctx.random->uniform() * (b - a + 1)), b);
       }
       case Function::Normal: {
         const double mu = num(r[0]);
         const double sigma = num(r[1]);
-        if (sigma < 0) fail_at(i, "normal() needs sigma >= 0, got " + format_number(sigma));
+        if (sigma < 0) fail_at(i, "normal() needs sigma >= 0, got " + format_number(sigma), "write normal(mu, abs(sigma))");
         return mu + sigma * ctx.random->normal();
       }
       case Function::TNormal: {
@@ -179,8 +182,11 @@ struct Evaluator {
         const double sigma = num(r[1]);
         const double lo = num(r[2]);
         const double hi = num(r[3]);
-        if (sigma < 0) fail_at(i, "tnormal() needs sigma >= 0, got " + format_number(sigma));
-        if (hi < lo) fail_at(i, "tnormal() needs lo <= hi, got " + format_number(lo) + " > " + format_number(hi));
+        if (sigma < 0)
+          fail_at(i, "tnormal() needs sigma >= 0, got " + format_number(sigma), "write tnormal(mu, abs(sigma), lo, hi)");
+        if (hi < lo)
+          fail_at(i, "tnormal() needs lo <= hi, got " + format_number(lo) + " > " + format_number(hi),
+                  "swap the bounds: tnormal(mu, sigma, lo, hi)");
         return ctx.random->truncated_normal(mu, sigma, lo, hi);
       }
       default: return 0.0;  // one-argument functions were answered above
@@ -206,11 +212,16 @@ double evaluate_number_slow(const Expr& e, const EvalContext& ctx, const char* w
   } else {
     const Value value = evaluate(e, ctx);
     if (!value.is_number())
-      throw EvaluationError{e.loc(), std::string(what) + " must be a number, found " + value.describe(), {}};
+      throw EvaluationError{e.loc(), std::string(what) + " must be a number, found " + value.describe(),
+                            "axes can only be compared with == and !="};
     v = value.number();
   }
   if (!std::isfinite(v))
-    throw EvaluationError{e.loc(), std::string(what) + " is " + format_number(v) + ", not a finite number", {}};
+    throw EvaluationError{e.loc(),
+                          std::string(what) + " is " + (std::isnan(v) ? std::string("NaN") : format_number(v)) +
+                              ", not a finite number",
+                          "an operation overflowed (inf) or had no result (NaN, e.g. inf - inf): check the values "
+                          "in the chain above"};
   return v;
 }
 

@@ -3,11 +3,13 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <string_view>
 
 #include "graph/error.hpp"
+#include "graph/utf8.hpp"
 
 namespace vern {
 
@@ -62,7 +64,7 @@ struct Segment {
 
 class Reader {
  public:
-  explicit Reader(const std::string& source) : source_(source) {
+  Reader(const std::string& source, const ObjLimits& limits) : source_(source), limits_(limits) {
     objects_.push_back({});  // faces before any `o`
     groups_.push_back({});   // faces before any `g`
   }
@@ -78,6 +80,7 @@ class Reader {
     const std::string_view key = tokens_[0].text;
     if (key == "v") {
       positions_.push_back(read_vector(3, 3, "vertex", kXyz));
+      check_magnitude(positions_.back());
     } else if (key == "vn") {
       normals_.push_back(read_vector(3, 3, "normal", kXyz));
     } else if (key == "vt") {
@@ -87,13 +90,23 @@ class Reader {
       read_face();
     } else if (key == "o") {
       any_object_ = true;
-      objects_.push_back({std::string(rest_of_line(line, tokens_[0])), number});
+      objects_.push_back({name_after(line, tokens_[0]), number});
     } else if (key == "g") {
-      groups_.push_back({std::string(rest_of_line(line, tokens_[0])), number});
+      groups_.push_back({name_after(line, tokens_[0]), number});
     } else if (!is_ignored(key)) {
       if (!recognised_) {
-        error(tokens_[0].column,
-              "'" + std::string(key) + "' is not an OBJ statement: this does not look like an OBJ file",
+        // Binary data is named by its first byte, not echoed to the terminal.
+        std::string shown = "'" + std::string(key.substr(0, 40)) + "'";
+        for (const char c : key.substr(0, 40)) {
+          const auto u = static_cast<unsigned char>(c);
+          if (u < 0x20 || u >= 0x7F) {
+            char byte[24];
+            std::snprintf(byte, sizeof byte, "byte 0x%02X", static_cast<unsigned char>(key[0]));
+            shown = byte;
+            break;
+          }
+        }
+        error(tokens_[0].column, shown + " is not an OBJ statement: this does not look like an OBJ file",
               "give a Wavefront OBJ text file: its lines start with v, vt, vn, f, o, g or #");
       }
       return;  // an extension some exporter added: nothing we need
@@ -161,8 +174,37 @@ class Reader {
   }
 
  private:
-  [[noreturn]] void error(std::size_t column, const std::string& message, const std::string& hint = {}) const {
+  [[noreturn]] void error(std::size_t column, const std::string& message, const std::string& hint) const {
     fail(ErrorKind::Input, source_, {line_, static_cast<std::uint32_t>(column)}, message, hint);
+  }
+
+  // An `o`/`g` name: it becomes a label in grammars and written files, so
+  // it must be UTF-8 (see graph/utf8.hpp).
+  std::string name_after(std::string_view line, const Token& keyword) const {
+    const std::string_view name = rest_of_line(line, keyword);
+    if (const std::size_t bad = invalid_utf8_offset(name); bad != std::string_view::npos) {
+      const std::size_t column = static_cast<std::size_t>(name.data() - line.data()) + bad + 1;
+      char shown[8];
+      std::snprintf(shown, sizeof shown, "0x%02X", static_cast<unsigned char>(name[bad]));
+      error(column, std::string("the name is not UTF-8 text (byte ") + shown + ")",
+            "export with UTF-8 names (Latin-1 and other code pages are not read), or rename the object in ASCII");
+    }
+    return std::string(name);
+  }
+
+  // Coordinates far beyond any building (often a float-overflow artefact
+  // of the exporter) would turn extents into inf further on.
+  void check_magnitude(const glm::dvec3& v) const {
+    for (int i = 0; i < 3; ++i) {
+      if (std::abs(v[i]) > kMaxObjCoordinate) {
+        const Token& t = tokens_[static_cast<std::size_t>(i) + 1];
+        error(t.column,
+              "the " + std::string(kXyz[i]) + " '" + std::string(t.text) + "' is too large: coordinates beyond 1e12 " +
+                  "cannot hold a millimetre",
+              "the exporter wrote broken geometry, or the model is far from the origin: fix that vertex, or move the "
+              "model near the origin in metres");
+      }
+    }
   }
 
   static bool is_ignored(std::string_view key) {
@@ -178,11 +220,13 @@ class Reader {
     double value = 0.0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec == std::errc::result_out_of_range) {
-      error(token.column, std::string(what) + " '" + std::string(token.text) + "' is too large");
+      error(token.column, "the " + std::string(what) + " '" + std::string(token.text) + "' is out of range for a number",
+            "the exporter wrote broken geometry: fix or delete that element");
     }
     if (ec != std::errc() || end != text.data() + text.size()) {
       error(token.column, "expected a number for the " + std::string(what) + ", found '" +
-                              std::string(token.text) + "'");
+                              std::string(token.text) + "'",
+            "write numbers like 1, -0.5 or 2.5e-3 (a '.' for the decimal point, no thousands separators)");
     }
     if (!std::isfinite(value)) {
       error(token.column, "the " + std::string(what) + " '" + std::string(token.text) + "' is not a finite number",
@@ -195,8 +239,10 @@ class Reader {
   glm::dvec3 read_vector(std::size_t required, std::size_t used, const char* what,
                          const char* const (&names)[3]) const {
     if (tokens_.size() - 1 < required) {
-      error(tokens_[0].column, "a " + std::string(what) + " needs " + std::to_string(required) +
-                                   " numbers, found " + std::to_string(tokens_.size() - 1));
+      error(tokens_[0].column,
+            "a " + std::string(what) + " needs " + std::to_string(required) + " numbers, found " +
+                std::to_string(tokens_.size() - 1),
+            "write `" + std::string(tokens_[0].text) + "` followed by " + std::to_string(required) + " numbers on one line");
     }
     glm::dvec3 v(0.0);
     for (std::size_t i = 0; i < used && i + 1 < tokens_.size(); ++i) {
@@ -210,8 +256,13 @@ class Reader {
                            const char* plural) const {
     long long i = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), i);
+    if (ec == std::errc::result_out_of_range) {
+      error(column, "the " + std::string(what) + " index '" + std::string(text) + "' is out of range",
+            "a face may only use elements written before it; check the exporter's index offsets");
+    }
     if (ec != std::errc() || end != text.data() + text.size()) {
-      error(column, "expected a " + std::string(what) + " index, found '" + std::string(text) + "'");
+      error(column, "expected a " + std::string(what) + " index, found '" + std::string(text) + "'",
+            "face corners are v, v/vt, v//vn or v/vt/vn, with whole numbers counting from 1");
     }
     if (i == 0) {
       error(column, "a " + std::string(what) + " index of 0 is not valid",
@@ -250,10 +301,21 @@ class Reader {
       }
       corners_.push_back(c);
     }
+    const auto object = static_cast<std::uint32_t>(objects_.size() - 1);
+    const auto group = static_cast<std::uint32_t>(groups_.size() - 1);
+    // A segment's faces are consecutive, so a new segment shows as a change.
+    if (face_object_.empty() || face_object_.back() != object) ++objects_with_faces_;
+    if (face_group_.empty() || face_group_.back() != group) ++groups_with_faces_;
     face_sizes_.push_back(static_cast<std::uint32_t>(n));
-    face_object_.push_back(static_cast<std::uint32_t>(objects_.size() - 1));
-    face_group_.push_back(static_cast<std::uint32_t>(groups_.size() - 1));
+    face_object_.push_back(object);
+    face_group_.push_back(group);
     face_line_.push_back(line_);
+    const std::size_t parts = any_object_ ? objects_with_faces_ : groups_with_faces_;
+    if (limits_.max_objects != 0 && parts > limits_.max_objects) {
+      fail(ErrorKind::Limit, source_, {line_, 1},
+           "more than " + std::to_string(limits_.max_objects) + " objects with faces: reading stopped here",
+           limits_.too_many_hint.empty() ? "split the file into smaller ones" : limits_.too_many_hint);
+    }
   }
 
   template <class V>
@@ -268,10 +330,13 @@ class Reader {
   }
 
   const std::string& source_;
+  const ObjLimits& limits_;
   std::uint32_t line_ = 0;
   std::vector<Token> tokens_;
   bool recognised_ = false;
   bool any_object_ = false;
+  std::size_t objects_with_faces_ = 0;
+  std::size_t groups_with_faces_ = 0;
 
   std::vector<glm::dvec3> positions_;
   std::vector<glm::dvec3> normals_;
@@ -287,36 +352,50 @@ class Reader {
 
 }  // namespace
 
-std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name) {
-  Reader reader(source_name);
-  std::string line;
+std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits) {
+  Reader reader(source_name, limits);
+  // Lines are read into one fixed buffer: a file without line breaks (or
+  // binary data) costs kMaxObjLine bytes, not its own size.
+  std::vector<char> buffer(kMaxObjLine + 1);
   std::string joined;  // a statement continued over lines with a trailing '\'
   std::uint32_t number = 0;
   std::uint32_t statement_line = 0;
-  while (std::getline(in, line)) {
+  while (true) {
+    in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (in.bad()) break;
+    // A full buffer without a line break: the line is longer than allowed.
+    const bool too_long = in.fail() && !in.eof();
+    if (got == 0 && in.eof()) break;
     ++number;
-    if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);  // UTF-8 byte order mark
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (too_long || joined.size() + got > kMaxObjLine) {
+      fail(ErrorKind::Input, source_name, {joined.empty() ? number : statement_line, 1},
+           "a line longer than " + std::to_string(kMaxObjLine) + " bytes: this does not look like an OBJ text file",
+           "give a Wavefront OBJ text file (for glTF or GLB examples use a .gltf/.glb path)");
+    }
+    const bool last = in.eof();  // no line break was consumed
+    std::string_view line(buffer.data(), got - (last ? 0 : 1));
+    if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);  // UTF-8 byte order mark
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (joined.empty()) statement_line = number;
     if (!line.empty() && line.back() == '\\') {
-      line.back() = ' ';
-      joined += line;
-      continue;
-    }
-    if (!joined.empty()) {
-      joined += line;
+      joined.append(line.substr(0, line.size() - 1));
+      joined += ' ';
+    } else if (!joined.empty()) {
+      joined.append(line);
       reader.read_line(joined, statement_line);
       joined.clear();
     } else {
       reader.read_line(line, number);
     }
+    if (last) break;
   }
   if (!joined.empty()) reader.read_line(joined, statement_line);
   if (in.bad()) fail(ErrorKind::Io, source_name, {}, "cannot read: the stream failed", "check the file");
   return reader.finish();
 }
 
-std::vector<ObjObject> read_obj_file(const std::filesystem::path& path) {
+std::vector<ObjObject> read_obj_file(const std::filesystem::path& path, const ObjLimits& limits) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
@@ -328,7 +407,7 @@ std::vector<ObjObject> read_obj_file(const std::filesystem::path& path) {
     fail(ErrorKind::Io, path.string(), {}, std::string("cannot open: ") + std::strerror(err),
          "check the path and the file's permissions");
   }
-  return read_obj(in, path.string());
+  return read_obj(in, path.string(), limits);
 }
 
 }  // namespace vern

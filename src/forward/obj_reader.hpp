@@ -3,7 +3,10 @@
 // A labelled OBJ names each part of a building with an `o name` statement
 // (or `g name` in files that have no `o` at all): what the OBJ writer
 // produces and what inference reads. The reader streams the text line by
-// line, so a file is never held whole in memory.
+// line through a fixed buffer, so a file is never held whole in memory:
+// memory grows with the geometry kept, not with the file's size, and a
+// line longer than kMaxObjLine (binary data, a file without line breaks) is
+// an error rather than a string as long as the file.
 //
 // Read: v (x y z, extra w or colour values ignored), vt (u [v [w]]), vn,
 // f with corners v, v/vt, v//vn or v/vt/vn, indices from 1 or negative
@@ -34,16 +37,34 @@ struct ObjObject {
   Mesh mesh;
 };
 
+// The longest line (or `\`-continued statement) read, in bytes.
+inline constexpr std::size_t kMaxObjLine = std::size_t{1} << 20;
+
+// Vertex coordinates beyond this magnitude are refused: a double there no
+// longer holds a millimetre, and sums and differences of such coordinates
+// (extents, scopes) would overflow to inf.
+inline constexpr double kMaxObjCoordinate = 1e12;
+
+struct ObjLimits {
+  // Objects with faces beyond which reading stops with a Limit error,
+  // before the rest of the file is read (0: no limit)...
+  std::size_t max_objects = 0;
+  // ...and what that error tells the user to do (the caller's flag).
+  std::string too_many_hint;
+};
+
 // The objects of an OBJ text in file order, one per `o` (or `g`) statement
 // even when names repeat. Objects without faces are left out.
 // Throws vern::Error (Input) naming source_name:line:column for a face index
-// that is 0 or out of range, a coordinate that is not a finite number, a
-// face with fewer than 3 corners, or text that is not OBJ (a NUL byte, an
-// unknown statement before any OBJ statement).
-std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name);
+// that is 0 or out of range, a coordinate that is not a finite number or
+// beyond kMaxObjCoordinate, a face with fewer than 3 corners, a name that
+// is not UTF-8, or text that is not OBJ (a NUL byte, an unknown statement
+// before any OBJ statement, a line longer than kMaxObjLine); (Limit) past
+// limits.max_objects.
+std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits = {});
 
 // The same for a file; throws vern::Error (Io) when it is missing, a folder
 // or unreadable.
-std::vector<ObjObject> read_obj_file(const std::filesystem::path& path);
+std::vector<ObjObject> read_obj_file(const std::filesystem::path& path, const ObjLimits& limits = {});
 
 }  // namespace vern

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "graph/utf8.hpp"
+
 namespace vern {
 
 const char* token_kind_name(TokenKind k) {
@@ -82,7 +84,8 @@ class Lexer {
         while (!at_end() && is_ident_char(text_[pos_])) advance();
         t.kind = TokenKind::Directive;
         t.value = std::string(text_.substr(start + 1, pos_ - start - 1));
-        if (t.value.empty()) error(loc, "'@' must start a directive (@start, @scope or @primitives)");
+        if (t.value.empty())
+          error(loc, "'@' must start a directive (@start, @scope or @primitives)", "write @scope 12, 8, 9 (no space after '@')");
       } else {
         t.kind = read_symbol(loc);
       }
@@ -157,6 +160,9 @@ class Lexer {
       const char c = text_[pos_];
       if (c == '"') {
         advance();
+        // Strings name primitives and files: text, never stray bytes.
+        if (const std::size_t bad = invalid_utf8_offset(value); bad != std::string::npos)
+          error(loc, "this string is not UTF-8 text", "save the grammar file as UTF-8");
         return value;
       }
       if (c == '\\' && pos_ + 1 < text_.size() && (text_[pos_ + 1] == '"' || text_[pos_ + 1] == '\\')) {
@@ -198,13 +204,21 @@ class Lexer {
       }
     }
     const unsigned char c = static_cast<unsigned char>(text_[pos_]);
-    char shown[16];
-    if (c < 0x20 || c >= 0x7F)
-      std::snprintf(shown, sizeof shown, "byte 0x%02X", c);
-    else
-      std::snprintf(shown, sizeof shown, "'%c'", c);
-    error(loc, std::string("unexpected character ") + shown,
-          c == 0 ? "this does not look like a text file" : "grammar files use ASCII operators (and → ≤ ≥ ≠)");
+    // A whole UTF-8 character is shown as itself ('≈'), anything else as a byte.
+    std::size_t length = c < 0x80 ? 1 : c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : 2;
+    if (pos_ + length > text_.size() || invalid_utf8_offset(text_.substr(pos_, length)) != std::string_view::npos)
+      length = 0;
+    std::string shown;
+    if (c < 0x20 || c == 0x7F || length == 0) {
+      char byte[16];
+      std::snprintf(byte, sizeof byte, "byte 0x%02X", c);
+      shown = byte;
+    } else {
+      shown = "'" + std::string(text_.substr(pos_, length)) + "'";
+    }
+    error(loc, "unexpected character " + shown,
+          c == 0 || length == 0 ? "this does not look like a UTF-8 text file: give a grammar (.grm) text file"
+                                : "grammar files use ASCII operators (and → ≤ ≥ ≠); quote paths: @primitives \"a.obj\"");
   }
 
   [[noreturn]] void error(SourceLoc loc, const std::string& message, const std::string& hint = {}) {

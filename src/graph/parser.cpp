@@ -107,10 +107,12 @@ class Parser {
     ++pos_;
     return true;
   }
-  const Token& expect(TokenKind k, const std::string& context) {
+  // `hint` shows the construct being read as it is written: most of these
+  // errors are a missing bracket, comma or ':', which that makes plain.
+  const Token& expect(TokenKind k, const std::string& context, const std::string& hint) {
     if (peek().kind != k) {
-      error(peek().loc,
-            "expected " + std::string(token_kind_name(k)) + " " + context + ", found " + describe(peek()));
+      error(peek().loc, "expected " + std::string(token_kind_name(k)) + " " + context + ", found " + describe(peek()),
+            hint);
     }
     return next();
   }
@@ -135,8 +137,43 @@ class Parser {
     while (accept(TokenKind::Newline)) {
     }
   }
-  [[noreturn]] void error(SourceLoc loc, const std::string& message, const std::string& hint = {}) const {
+  [[noreturn]] void error(SourceLoc loc, const std::string& message, const std::string& hint) const {
     fail(ErrorKind::Input, source_, loc, message, hint);
+  }
+
+  // Operations and expressions are read by recursive descent, and every
+  // later pass (derivation, evaluation, writing, checking) walks them
+  // recursively too: a bound on nesting keeps a hostile file from running
+  // any of them out of stack. No grammar a person writes comes near it.
+  static constexpr int kMaxNesting = 256;
+  // An expression node counts its arguments in 16 bits (graph/expr.hpp).
+  static constexpr std::size_t kMaxArguments = 65535;
+
+  class Nesting {
+   public:
+    Nesting(Parser& p, SourceLoc loc) : p_(p) {
+      if (++p_.nesting_ > kMaxNesting)
+        p_.error(loc, "operations or expressions nested more than " + std::to_string(kMaxNesting) + " deep",
+                 "give the inner part a name: a rule for an operation, a constant for a value");
+    }
+    ~Nesting() { --p_.nesting_; }
+    Nesting(const Nesting&) = delete;
+    Nesting& operator=(const Nesting&) = delete;
+
+   private:
+    Parser& p_;
+  };
+
+  // The same bound on an expression tree's depth: a long chain such as
+  // 1 + 1 + ... + 1 nests without nesting the text.
+  void check_depth(const Expr& e) const {
+    std::vector<std::uint32_t> depth(e.nodes().size(), 1);
+    for (std::size_t i = 0; i < e.nodes().size(); ++i) {
+      for (std::size_t c : e.children(i)) depth[i] = std::max(depth[i], depth[c] + 1);
+      if (depth[i] > static_cast<std::uint32_t>(kMaxNesting))
+        error(e.loc(i), "an expression nested more than " + std::to_string(kMaxNesting) + " deep",
+              "split it into constants, or into rule parameters");
+    }
   }
 
   // ---- pass 1: every rule label, so calls may name rules defined later ----
@@ -178,16 +215,17 @@ class Parser {
   void directive() {
     const Token& d = next();
     if (d.value == "start") {
-      const Token& name = expect(TokenKind::Identifier, "after @start (the start rule's label)");
+      const Token& name = expect(TokenKind::Identifier, "after @start (the start rule's label)", "write @start plot");
       start_label_ = std::string(name.text);
       start_loc_ = name.loc;
     } else if (d.value == "scope") {
       for (int i = 0; i < 3; ++i) {
-        if (i) expect(TokenKind::Comma, "between the three @scope sizes (x, y, z)");
+        if (i) expect(TokenKind::Comma, "between the three @scope sizes (x, y, z)", "write @scope 12, 8, 9");
         g_.scope[i] = expression();
       }
     } else if (d.value == "primitives") {
-      g_.primitives = expect(TokenKind::String, "after @primitives (a quoted path)").value;
+      g_.primitives =
+          expect(TokenKind::String, "after @primitives (a quoted path)", "write @primitives \"style.prims.obj\"").value;
     } else {
       error(d.loc, "unknown directive '@" + d.value + "'", "directives are @start, @scope and @primitives");
     }
@@ -197,7 +235,8 @@ class Parser {
     const Token& name = next();
     const std::string n(name.text);
     check_free_name(name, "a constant");
-    if (g_.find_constant(n)) error(name.loc, "the constant '" + n + "' is defined twice");
+    if (g_.find_constant(n))
+      error(name.loc, "the constant '" + n + "' is defined twice", "a constant has one value: rename or delete one of them");
     next();  // '='
     skip_newlines();
     params_ = nullptr;
@@ -212,7 +251,8 @@ class Parser {
   }
 
   void rule() {
-    const Token& name = expect(TokenKind::Identifier, "at the start of a rule");
+    const Token& name = expect(TokenKind::Identifier, "at the start of a rule",
+                               "a line is a rule (label --> operation), a constant (name = value) or a directive (@scope ...)");
     const std::string label(name.text);
     if (is_operation_word(label))
       error(name.loc, "'" + label + "' is an operation and cannot be a rule label", "choose another label");
@@ -220,13 +260,14 @@ class Parser {
     if (accept(TokenKind::LParen)) {
       if (!accept(TokenKind::RParen)) {
         do {
-          const Token& p = expect(TokenKind::Identifier, "(a parameter name)");
+          const Token& p = expect(TokenKind::Identifier, "(a parameter name)",
+                                  "parameters are names: floors(n, height) --> ...; values go in calls");
           check_free_name(p, "a parameter");
           for (const auto& q : params)
-            if (q == p.text) error(p.loc, "the parameter '" + q + "' is listed twice");
+            if (q == p.text) error(p.loc, "the parameter '" + q + "' is listed twice", "give each parameter its own name");
           params.emplace_back(p.text);
         } while (accept(TokenKind::Comma));
-        expect(TokenKind::RParen, "to close the parameter list");
+        expect(TokenKind::RParen, "to close the parameter list", "write floors(n, height) --> ...");
       }
     }
     const auto declared = labels_.find(label);
@@ -302,14 +343,14 @@ class Parser {
   // ---- operations ----
   NodeId add(Operation op, SourceLoc loc) { return g_.add({std::move(op), loc}); }
 
-  void open_brace(const std::string& what) {
-    expect(TokenKind::LBrace, "to open the body of " + what);
+  void open_brace(const std::string& what, const std::string& form) {
+    expect(TokenKind::LBrace, "to open the body of " + what, form);
   }
 
-  NodeId child_block(const std::string& what) {
-    open_brace(what);
+  NodeId child_block(const std::string& what, const std::string& form) {
+    open_brace(what, form);
     NodeId child = operation();
-    expect(TokenKind::RBrace, "to close the body of " + what);
+    expect(TokenKind::RBrace, "to close the body of " + what, form);
     return child;
   }
 
@@ -329,6 +370,7 @@ class Parser {
 
   NodeId operation() {
     const Token& t = peek();
+    const Nesting nesting(*this, t.loc);
     if (t.kind != TokenKind::Identifier) {
       error(t.loc, "expected an operation, found " + describe(t),
             "operations are split, repeat, repeatN, I(name), nil, T, S, R, comp, colour or a rule label");
@@ -337,53 +379,56 @@ class Parser {
     const SourceLoc loc = t.loc;
     next();
     if (word == "split") {
-      expect(TokenKind::LParen, "after split");
+      const std::string form = "write split(axis){ size : operation | size : operation }";
+      expect(TokenKind::LParen, "after split", form);
       Split s;
       s.axis = axis_argument("split");
-      expect(TokenKind::RParen, "after the axis of split");
-      open_brace("split");
+      expect(TokenKind::RParen, "after the axis of split", form);
+      open_brace("split", form);
       do {
         SplitPart part;
         part.size = size();
-        expect(TokenKind::Colon, "between a split size and its operation");
+        expect(TokenKind::Colon, "between a split size and its operation", form);
         part.child = operation();
         s.parts.push_back(std::move(part));
       } while (accept(TokenKind::Pipe));
-      expect(TokenKind::RBrace, "or '|' after a split part");
+      expect(TokenKind::RBrace, "or '|' after a split part", form);
       return add(std::move(s), loc);
     }
     if (word == "repeat") {
-      expect(TokenKind::LParen, "after repeat");
+      const std::string form = "write repeat(axis, size){ operation }";
+      expect(TokenKind::LParen, "after repeat", form);
       Repeat r;
       r.axis = axis_argument("repeat");
       if (accept(TokenKind::Comma)) {
         r.size = expression();
-        expect(TokenKind::RParen, "after the tile size of repeat");
-        r.child = child_block("repeat");
+        expect(TokenKind::RParen, "after the tile size of repeat", form);
+        r.child = child_block("repeat", form);
       } else {
-        expect(TokenKind::RParen, "after the axis of repeat");
-        open_brace("repeat");
+        expect(TokenKind::RParen, "after the axis of repeat", form);
+        open_brace("repeat", form);
         if (accept(TokenKind::Tilde))
           error(peek().loc, "a repeat's tile size is absolute", "write repeat(x, 2){ op } without '~'");
         r.size = expression();
-        expect(TokenKind::Colon, "between the tile size and the operation of repeat");
+        expect(TokenKind::Colon, "between the tile size and the operation of repeat", form);
         r.child = operation();
-        expect(TokenKind::RBrace, "to close the body of repeat");
+        expect(TokenKind::RBrace, "to close the body of repeat", form);
       }
       return add(std::move(r), loc);
     }
     if (word == "repeatN") {
-      expect(TokenKind::LParen, "after repeatN");
+      const std::string form = "write repeatN(axis, count){ operation }";
+      expect(TokenKind::LParen, "after repeatN", form);
       RepeatN r;
       r.axis = axis_argument("repeatN");
-      expect(TokenKind::Comma, "between the axis and the count of repeatN");
+      expect(TokenKind::Comma, "between the axis and the count of repeatN", form);
       r.count = expression();
-      expect(TokenKind::RParen, "after the count of repeatN");
-      r.child = child_block("repeatN");
+      expect(TokenKind::RParen, "after the count of repeatN", form);
+      r.child = child_block("repeatN", form);
       return add(std::move(r), loc);
     }
     if (word == "I") {
-      expect(TokenKind::LParen, "after I");
+      expect(TokenKind::LParen, "after I", "write I(name), for example I(rect)");
       const Token& name = next();
       std::string label;
       if (name.kind == TokenKind::Identifier)
@@ -392,51 +437,57 @@ class Parser {
         label = name.value;
       else
         error(name.loc, "expected a primitive name in I(...), found " + describe(name), "for example I(rect)");
-      expect(TokenKind::RParen, "after the primitive name");
+      expect(TokenKind::RParen, "after the primitive name", "write I(name), for example I(rect)");
       return add(Primitive{g_.label_id(label)}, loc);
     }
     if (word == "nil") return add(Nil{}, loc);
     if (word == "T" || word == "S") {
-      expect(TokenKind::LParen, std::string("after ") + std::string(word));
+      const std::string form = word == "T" ? "write T(dx, dy, dz){ operation }" : "write S(sx, sy, sz){ operation }";
+      expect(TokenKind::LParen, std::string("after ") + std::string(word), form);
       std::array<Size, 3> sizes;
       for (int i = 0; i < 3; ++i) {
-        if (i) expect(TokenKind::Comma, "between the three values of " + std::string(word));
+        if (i) expect(TokenKind::Comma, "between the three values of " + std::string(word), form);
         sizes[i] = size();
       }
-      expect(TokenKind::RParen, "after the three values of " + std::string(word));
-      const NodeId child = child_block(std::string(word));
+      expect(TokenKind::RParen, "after the three values of " + std::string(word), form);
+      const NodeId child = child_block(std::string(word), form);
       if (word == "T") return add(Translate{sizes, child}, loc);
       return add(Scale{sizes, child}, loc);
     }
     if (word == "R") {
-      expect(TokenKind::LParen, "after R");
+      const std::string form = "write R(axis, angle){ operation }, the angle in radians";
+      expect(TokenKind::LParen, "after R", form);
       Rotate r;
       r.axis = axis_argument("R");
-      expect(TokenKind::Comma, "between the axis and the angle of R");
+      expect(TokenKind::Comma, "between the axis and the angle of R", form);
       r.angle = expression();
-      expect(TokenKind::RParen, "after the angle of R");
-      r.child = child_block("R");
+      expect(TokenKind::RParen, "after the angle of R", form);
+      r.child = child_block("R", form);
       return add(std::move(r), loc);
     }
     if (word == "comp") {
-      expect(TokenKind::LParen, "after comp");
-      const Token& f = expect(TokenKind::Identifier, "in comp(f)");
-      if (f.text != "f") error(f.loc, "comp splits into faces: write comp(f)");
-      expect(TokenKind::RParen, "after comp(f");
-      open_brace("comp");
+      const std::string form = "write comp(f){ face : operation | face : operation }";
+      expect(TokenKind::LParen, "after comp", form);
+      const Token& f = expect(TokenKind::Identifier, "in comp(f)", form);
+      if (f.text != "f") error(f.loc, "comp splits into faces: write comp(f)", form);
+      expect(TokenKind::RParen, "after comp(f", form);
+      open_brace("comp", form);
       Comp c;
       do {
-        const Token& face = expect(TokenKind::Identifier, "(a face: top, bottom, front, back, left or right)");
+        const Token& face =
+            expect(TokenKind::Identifier, "(a face: top, bottom, front, back, left or right)", form);
         CompPart part;
         if (!find_face(face.text, part.face))
           error(face.loc, "'" + std::string(face.text) + "' is not a face", "faces are top, bottom, front, back, left, right");
         for (const auto& p : c.parts)
-          if (p.face == part.face) error(face.loc, "the face '" + std::string(face.text) + "' is listed twice");
-        expect(TokenKind::Colon, "between a face and its operation");
+          if (p.face == part.face)
+            error(face.loc, "the face '" + std::string(face.text) + "' is listed twice",
+                  "give each face one operation (split or call a rule there to do more)");
+        expect(TokenKind::Colon, "between a face and its operation", form);
         part.child = operation();
         c.parts.push_back(part);
       } while (accept(TokenKind::Pipe));
-      expect(TokenKind::RBrace, "or '|' after a comp part");
+      expect(TokenKind::RBrace, "or '|' after a comp part", form);
       return add(std::move(c), loc);
     }
     if (word == "colour" || word == "color") return colour(loc);
@@ -444,7 +495,8 @@ class Parser {
   }
 
   NodeId colour(SourceLoc loc) {
-    expect(TokenKind::LParen, "after colour");
+    const std::string form = "write colour(red), colour(\"#rrggbb\") or colour(r, g, b) with r, g, b from 0 to 1";
+    expect(TokenKind::LParen, "after colour", form);
     Colour c;
     const Token& first = peek();
     double rgb[3];
@@ -463,12 +515,12 @@ class Parser {
       error(first.loc, "unknown colour '" + std::string(first.text) + "'", suggest(first.text, names, "the colours"));
     } else {
       c.red = expression();
-      expect(TokenKind::Comma, "between colour components (r, g, b from 0 to 1)");
+      expect(TokenKind::Comma, "between colour components (r, g, b from 0 to 1)", form);
       c.green = expression();
-      expect(TokenKind::Comma, "between colour components (r, g, b from 0 to 1)");
+      expect(TokenKind::Comma, "between colour components (r, g, b from 0 to 1)", form);
       c.blue = expression();
     }
-    expect(TokenKind::RParen, "after the colour");
+    expect(TokenKind::RParen, "after the colour", form);
     return add(std::move(c), loc);
   }
 
@@ -509,7 +561,8 @@ class Parser {
       if (!accept(TokenKind::RParen)) {
         do c.args.push_back(expression());
         while (accept(TokenKind::Comma));
-        expect(TokenKind::RParen, "to close the arguments of '" + label + "'");
+        expect(TokenKind::RParen, "to close the arguments of '" + label + "'",
+               "write " + label + "(a, b), the arguments separated by commas");
       }
     }
     pending_calls_.push_back({c.rule, c.args.size(), name.loc});
@@ -542,7 +595,11 @@ class Parser {
   }
 
   // ---- expressions ----
-  Expr expression() { return binary_level(0); }
+  Expr expression() {
+    Expr e = binary_level(0);
+    check_depth(e);
+    return e;
+  }
 
   struct Level {
     TokenKind token;
@@ -593,11 +650,13 @@ class Parser {
 
   Expr unary() {
     const Token& t = peek();
+    const Nesting nesting(*this, t.loc);
     if (t.kind == TokenKind::Minus || t.kind == TokenKind::Bang) {
       next();
       Expr operand = unary();
       if (operand.node(operand.root()).kind == ExprKind::Axis)
-        error(operand.loc(), std::string("'") + std::string(t.text) + "' expects a number, found an axis");
+        error(operand.loc(), std::string("'") + std::string(t.text) + "' expects a number, found an axis",
+              "axes can only be compared with == and !=");
       return Expr::unary(t.kind == TokenKind::Minus ? UnaryOp::Neg : UnaryOp::Not, std::move(operand), t.loc);
     }
     if (t.kind == TokenKind::Tilde)
@@ -610,7 +669,8 @@ class Parser {
     if (t.kind == TokenKind::Number) return Expr::number(t.number, t.loc);
     if (t.kind == TokenKind::LParen) {
       Expr e = expression();
-      expect(TokenKind::RParen, "to close '(' at " + std::to_string(t.loc.line) + ":" + std::to_string(t.loc.column));
+      expect(TokenKind::RParen, "to close '(' at " + std::to_string(t.loc.line) + ":" + std::to_string(t.loc.column),
+             "add the missing ')' (or remove the extra '(')");
       return e;
     }
     if (t.kind != TokenKind::Identifier) {
@@ -629,12 +689,16 @@ class Parser {
       if (!accept(TokenKind::RParen)) {
         do args.push_back(expression());
         while (accept(TokenKind::Comma));
-        expect(TokenKind::RParen, "to close the arguments of " + std::string(n));
+        expect(TokenKind::RParen, "to close the arguments of " + std::string(n), "write " + call_form(*f));
       }
       check_arity(*f, args.size(), t);
+      if (args.size() > kMaxArguments)
+        error(t.loc, std::string(n) + " is given " + std::to_string(args.size()) + " arguments, more than " +
+                         std::to_string(kMaxArguments),
+              "split the list: choice(choice(a, b), choice(c, d)) draws as evenly when the halves are equal");
       for (const auto& a : args)
         if (a.node(a.root()).kind == ExprKind::Axis)
-          error(a.loc(), std::string(n) + " expects numbers, found an axis");
+          error(a.loc(), std::string(n) + " expects numbers, found an axis", "axes can only be compared with == and !=");
       return Expr::call(*f, std::move(args), t.loc);
     }
     if (params_) {
@@ -647,12 +711,14 @@ class Parser {
     if (n == "z") return Expr::axis(Axis::Z, t.loc);
     if (n == "pi") return Expr::number(std::numbers::pi, t.loc);
     if (n == "rand") return Expr::call(Function::Rand, {}, t.loc);
-    if (find_function(n))
-      error(t.loc, "the function '" + std::string(n) + "' needs its arguments", "for example " + std::string(n) + "(1, 2)");
+    if (auto f = find_function(n))
+      error(t.loc, "the function '" + std::string(n) + "' needs its arguments", "write " + call_form(*f));
     std::vector<std::string> known;
     if (params_) known = *params_;
     for (const auto& c : g_.constants) known.push_back(c.name);
-    std::string hint = suggest(n, known, "the names in scope here");
+    std::string hint = known.empty() ? "no constants or parameters are defined here: define it above as '" +
+                                           std::string(n) + " = value', or make it a parameter of the rule"
+                                     : suggest(n, known, "the names in scope here");
     if (labels_.count(std::string(n))) hint += " ('" + std::string(n) + "' is a rule, not a value)";
     if (!params_) hint += "; a constant can use only the constants defined above it";
     error(t.loc, "unknown name '" + std::string(n) + "'", hint);
@@ -667,7 +733,18 @@ class Parser {
     if (f == Function::Rand) expected = "0 or 2 arguments";
     else if (info.max_args < 0) expected = "at least " + std::to_string(info.min_args) + " argument" + (info.min_args == 1 ? "" : "s");
     else expected = std::to_string(info.min_args) + " argument" + (info.min_args == 1 ? "" : "s");
-    error(t.loc, std::string(info.name) + " takes " + expected + ", given " + std::to_string(n));
+    error(t.loc, std::string(info.name) + " takes " + expected + ", given " + std::to_string(n), "write " + call_form(f));
+  }
+
+  // How a function is called, for hints: "min(a, ...)", "rand() or rand(a, b)".
+  static std::string call_form(Function f) {
+    const FunctionInfo& info = function_info(f);
+    const std::string name(info.name);
+    if (f == Function::Rand) return "rand() or rand(a, b)";
+    std::string args;
+    for (int i = 0; i < info.min_args; ++i) args += std::string(i ? ", " : "") + static_cast<char>('a' + i);
+    if (info.max_args < 0) args += ", ...";
+    return name + "(" + args + ")";
   }
 
   const std::string& source_;
@@ -682,6 +759,7 @@ class Parser {
   const std::vector<std::string>* params_ = nullptr;
   std::string start_label_;
   SourceLoc start_loc_;
+  int nesting_ = 0;
 
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <utility>
 
@@ -14,6 +15,7 @@
 
 #include "forward/obj_reader.hpp"
 #include "graph/error.hpp"
+#include "graph/number_format.hpp"
 
 namespace vern {
 
@@ -53,8 +55,13 @@ LabelledBox box_of(const std::string& name, std::uint32_t line, const Mesh& mesh
   return b;
 }
 
-Example load_obj_example(const fs::path& path) {
-  std::vector<ObjObject> objects = read_obj_file(path);
+std::string too_many_parts_hint(const ExampleLimits& limits) {
+  return "raise the limit with --max-parts (now " + std::to_string(limits.max_parts) +
+         "), or split the example into smaller buildings";
+}
+
+Example load_obj_example(const fs::path& path, const ExampleLimits& limits) {
+  std::vector<ObjObject> objects = read_obj_file(path, {limits.max_parts, too_many_parts_hint(limits)});
   Example ex;
   ex.source = path.string();
   for (ObjObject& o : objects) {
@@ -67,8 +74,9 @@ Example load_obj_example(const fs::path& path) {
     ex.meshes.push_back(std::move(o.mesh));
   }
   if (ex.boxes.empty()) {
-    fail(ErrorKind::Input, ex.source, {}, "has no labelled objects; each part must be an OBJ object `o name`",
-         "write `o <label>` before each part's faces (e.g. `o window.001`), one object per primitive");
+    fail(ErrorKind::Input, ex.source, {},
+         "has no labelled objects; each part must be an OBJ object `o name` with its faces",
+         "write `o <label>` before each part's vertices and faces (e.g. `o window.001`), one object per primitive");
   }
   return ex;
 }
@@ -188,6 +196,14 @@ glm::dmat4 local_matrix(const tinygltf::Node& n) {
   return m;
 }
 
+// OBJ refuses such numbers where it reads them (obj_reader.hpp); so does glTF.
+[[noreturn]] void not_finite(const std::string& source, const std::string& who, const char* attribute, std::size_t i) {
+  fail(ErrorKind::Input, source, {},
+       who + ": its " + attribute + " accessor holds a value that is not a finite number (element " + std::to_string(i) +
+           ")",
+       "export the file again, or check it with scripts/validate-gltf");
+}
+
 // Appends one glTF mesh, transformed to world space, to `out`.
 void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, const glm::dmat4& world,
                  const std::string& source, const std::string& who, Mesh& out) {
@@ -205,18 +221,40 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
     const auto base = static_cast<std::uint32_t>(out.positions.size());
     for (std::size_t i = 0; i < positions.count(); ++i) {
       const glm::dvec4 v(positions.get(i, 0), positions.get(i, 1), positions.get(i, 2), 1.0);
-      out.positions.push_back(glm::dvec3(world * v));
+      const glm::dvec3 w = glm::dvec3(world * v);
+      // As in OBJ (obj_reader.hpp): such coordinates would make extents inf.
+      for (int k = 0; k < 3; ++k) {
+        if (!(std::abs(w[k]) <= kMaxObjCoordinate)) {
+          fail(ErrorKind::Input, source, {},
+               who + ": vertex " + std::to_string(i) + " lies at (" + format_number(w.x) + ", " + format_number(w.y) +
+                   ", " + format_number(w.z) + ") after the node transforms: not finite, or beyond 1e12",
+               "check the node's matrix, scale and translation and its parents', or export the file again");
+        }
+      }
+      out.positions.push_back(w);
     }
 
     std::uint32_t normal_base = Mesh::kNone;
     if (const auto nrm = p.attributes.find("NORMAL"); nrm != p.attributes.end()) {
       const AccessorReader normals(model, nrm->second, source, who + ": its NORMAL accessor");
       if (normals.components() == 3 && normals.count() == positions.count()) {
-        normal_base = static_cast<std::uint32_t>(out.normals.size());
+        std::vector<glm::dvec3> turned;
         for (std::size_t i = 0; i < normals.count(); ++i) {
-          const glm::dvec3 n = normal_matrix * glm::dvec3(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
+          const glm::dvec3 stored(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
+          if (!std::isfinite(stored.x) || !std::isfinite(stored.y) || !std::isfinite(stored.z))
+            not_finite(source, who, "NORMAL", i);
+          const glm::dvec3 n = normal_matrix * stored;
           const double len = glm::length(n);
-          out.normals.push_back(len > 0.0 ? n / len : n);
+          turned.push_back(len > 0.0 ? n / len : n);
+        }
+        // A node scaled flat (a panel made from a cube) has no normal
+        // matrix: its normals are dropped, not made up.
+        const bool usable = std::all_of(turned.begin(), turned.end(), [](const glm::dvec3& n) {
+          return std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z);
+        });
+        if (usable) {
+          normal_base = static_cast<std::uint32_t>(out.normals.size());
+          out.normals.insert(out.normals.end(), turned.begin(), turned.end());
         }
       }
     }
@@ -226,7 +264,11 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
       if (uvs.components() == 2 && uvs.count() == positions.count()) {
         uv_base = static_cast<std::uint32_t>(out.uvs.size());
         // glTF's v points down, OBJ's (and Mesh's) up.
-        for (std::size_t i = 0; i < uvs.count(); ++i) out.uvs.emplace_back(uvs.get(i, 0), 1.0 - uvs.get(i, 1));
+        for (std::size_t i = 0; i < uvs.count(); ++i) {
+          const glm::dvec2 uv(uvs.get(i, 0), 1.0 - uvs.get(i, 1));
+          if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) not_finite(source, who, "TEXCOORD_0", i);
+          out.uvs.push_back(uv);
+        }
       }
     }
 
@@ -276,7 +318,7 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
   }
 }
 
-Example load_gltf_example(const fs::path& path, bool binary) {
+Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits& limits) {
   Example ex;
   ex.source = path.string();
   tinygltf::TinyGLTF loader;
@@ -315,14 +357,31 @@ Example load_gltf_example(const fs::path& path, bool binary) {
     const auto [index, parent] = stack.back();
     stack.pop_back();
     if (index < 0 || static_cast<std::size_t>(index) >= model.nodes.size()) continue;
-    if (visited[static_cast<std::size_t>(index)]) continue;
-    visited[static_cast<std::size_t>(index)] = true;
     const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(index)];
+    const std::string who = "node " + std::to_string(index) + (node.name.empty() ? "" : " '" + node.name + "'");
+    // glTF nodes form trees: a node reached twice is a cycle or a node with
+    // two parents, and its part would be counted twice.
+    if (visited[static_cast<std::size_t>(index)]) {
+      fail(ErrorKind::Input, ex.source, {},
+           who + " is reached twice from the scene: it is its own ancestor or the child of two nodes",
+           "glTF nodes must form trees; export the file again");
+    }
+    visited[static_cast<std::size_t>(index)] = true;
     const glm::dmat4 world = parent * local_matrix(node);
     for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.emplace_back(*it, world);
-    if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= model.meshes.size()) continue;
+    if (node.mesh < 0) continue;
+    if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
+      fail(ErrorKind::Input, ex.source, {},
+           who + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
+               std::to_string(model.meshes.size()) + " mesh" + (model.meshes.size() == 1 ? "" : "es"),
+           "export the file again, or check it with scripts/validate-gltf");
+    }
+    if (ex.boxes.size() >= limits.max_parts) {
+      fail(ErrorKind::Limit, ex.source, {},
+           "more than " + std::to_string(limits.max_parts) + " labelled parts: reading stopped at " + who,
+           too_many_parts_hint(limits));
+    }
 
-    const std::string who = "node " + std::to_string(index) + (node.name.empty() ? "" : " '" + node.name + "'");
     if (node.name.empty()) {
       fail(ErrorKind::Input, ex.source, {}, who + " has a mesh but no name: inference cannot tell which primitive it is",
            "name each part's node after its primitive (e.g. `window.001`)");
@@ -332,6 +391,11 @@ Example load_gltf_example(const fs::path& path, bool binary) {
     if (mesh.positions.empty()) {
       fail(ErrorKind::Input, ex.source, {}, who + " has a mesh without vertex positions",
            "export the file again with geometry for every named part");
+    }
+    // The part's shape becomes its primitive's mesh, which needs faces.
+    if (mesh.face_sizes.empty()) {
+      fail(ErrorKind::Input, ex.source, {}, who + " has no triangles: its mesh holds only points or lines",
+           "export the part as a surface (triangles), or leave it out");
     }
     ex.boxes.push_back(box_of(node.name, 0, mesh, ex.meshes.size()));
     ex.meshes.push_back(std::move(mesh));
@@ -379,7 +443,7 @@ std::string describe_object(const LabelledBox& box) {
   return text;
 }
 
-Example load_example(const fs::path& path) {
+Example load_example(const fs::path& path, const ExampleLimits& limits) {
   std::error_code ec;
   if (!fs::exists(path, ec)) {
     fail(ErrorKind::Io, path.string(), {}, "no such file", "check the path of the example");
@@ -390,9 +454,9 @@ Example load_example(const fs::path& path) {
   }
   Example ex;
   switch (format_of(path)) {
-    case Format::Obj: ex = load_obj_example(path); break;
-    case Format::Glb: ex = load_gltf_example(path, true); break;
-    case Format::Gltf: ex = load_gltf_example(path, false); break;
+    case Format::Obj: ex = load_obj_example(path, limits); break;
+    case Format::Glb: ex = load_gltf_example(path, true, limits); break;
+    case Format::Gltf: ex = load_gltf_example(path, false, limits); break;
     case Format::Other: not_an_example(path);
   }
   update_bounds(ex);

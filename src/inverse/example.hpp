@@ -39,14 +39,24 @@ struct Example {
   glm::dvec3 min{0.0}, max{0.0};   // bounds of all boxes
 };
 
+struct ExampleLimits {
+  // Labelled parts per example (infer/check --max-parts). Inference and
+  // checking grow with the parts; an OBJ stops being read at the first
+  // part past the limit, so a huge file fails fast and in little memory.
+  std::size_t max_parts = 10000;
+};
+
 // Reads a labelled example: .obj (each object one part), .glb or .gltf
 // (each node with a mesh one part, its world transform applied; the name is
 // required). Throws vern::Error: Io when the file is missing or unreadable,
 // Input when it holds no labelled parts, geometry without a name, a part
 // that is a single point (no extent on any axis, within
-// default_tolerance), or is not a valid OBJ or glTF file; Usage for another
+// default_tolerance), a vertex that is not finite or beyond
+// kMaxObjCoordinate (also after a glTF node's transform), a glTF node
+// reached twice or naming a missing mesh, or is not a valid OBJ or glTF
+// file; Limit for more parts than limits.max_parts; Usage for another
 // extension. A part flat on one axis (a facade panel) is fine.
-Example load_example(const std::filesystem::path& path);
+Example load_example(const std::filesystem::path& path, const ExampleLimits& limits = {});
 
 // The files that command-line arguments name, in the order given; a folder
 // stands for every .obj, .glb and .gltf file directly inside it, sorted by

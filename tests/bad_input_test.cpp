@@ -1,0 +1,608 @@
+// The bad-input corpus (tests/bad_inputs/README.md): hostile and broken
+// input for every command, each run as a user would run it. Each case
+// asserts the exact exit code (the error class), that the message names
+// where (file:line:col, or file and object, or the option) and what, that
+// it carries a hint of what to do, and that the run folder is byte for
+// byte what it was: no output created, none changed (some cases put a
+// precious file where the output would go).
+//
+// Inputs are copied from tests/bad_inputs/ into a fresh folder per case;
+// binary and large inputs are made there by the case's setup instead.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "support/bad_input_helpers.hpp"
+#include "support/run_command.hpp"
+
+namespace vern {
+namespace {
+
+namespace fs = std::filesystem;
+using test::FolderSnapshot;
+using test::run_program;
+using test::TempFolder;
+using test::write_text;
+
+const fs::path kCorpus = VERN_SOURCE_DIR "/tests/bad_inputs";
+
+constexpr int kOk = 0, kUsage = 2, kInput = 3, kLimit = 4, kIo = 5;
+
+struct BadInput {
+  const char* name;
+  const char* tool;               // generate, infer or check
+  std::vector<std::string> args;  // run in the case's folder
+  int exit_code;
+  std::string where;  // the place the message must name ("x.obj:2:3: error: ")
+  std::string what;   // and what it must say
+  std::vector<std::string> inputs = {};  // corpus files (under tests/bad_inputs/) copied in
+  void (*setup)(const fs::path& folder) = nullptr;
+  const char* precious = nullptr;  // a file pre-created where the output would go
+  std::size_t max_memory_mib = 0;  // when set, the run's peak resident memory is bounded
+  std::vector<std::string> creates = {};  // for the cases that must succeed
+};
+
+// gtest prints a failing case by its name, not as bytes.
+void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
+
+void binary_file(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+std::string glb_bytes(const fs::path& folder) {
+  test::write_generated_glb(folder, "source.glb");
+  std::string bytes = test::read_file(folder / "source.glb");
+  fs::remove(folder / "source.glb");
+  return bytes;
+}
+
+std::string u32(std::uint32_t v) {
+  std::string s(4, '\0');
+  for (int i = 0; i < 4; ++i) s[static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xFF);
+  return s;
+}
+
+// The file that is not there, the folder given for a file, and the valid
+// references the CLI cases start from.
+const std::vector<std::string> kValidObj = {"obj/two_parts.obj"};
+const std::vector<std::string> kValidGrammar = {"grammar/ok.grm"};
+const std::vector<std::string> kGrammarAndObj = {"grammar/ok.grm", "obj/two_parts.obj"};
+
+// clang-format off
+const std::vector<BadInput> kCases = {
+  // ---- OBJ examples (infer; check reads them the same way) ----
+  {"obj_missing_file", "infer", {"missing.obj", "-o", "style.grm"}, kIo,
+   "missing.obj: error: ", "no such file"},
+  {"obj_a_folder", "infer", {"parts.obj", "-o", "style.grm"}, kIo,
+   "parts.obj: error: ", "the folder holds no example files",
+   {}, [](const fs::path& d) { fs::create_directory(d / "parts.obj"); }},
+  {"obj_empty_file", "infer", {"empty.obj", "-o", "style.grm"}, kInput,
+   "empty.obj: error: ", "has no labelled objects", {"obj/empty.obj"}, nullptr, "style.grm"},
+  {"obj_binary_garbage", "infer", {"garbage.obj", "-o", "style.grm"}, kInput,
+   "garbage.obj:1:8: error: ", "NUL byte",
+   {}, [](const fs::path& d) { binary_file(d / "garbage.obj", std::string("\x7f" "ELF\x02\x01\x01\0\0\0\0\0\0\0\0\0\x03\0>\0", 20)); }},
+  {"obj_binary_without_nul", "infer", {"noise.obj", "-o", "style.grm"}, kInput,
+   "noise.obj:1:1: error: ", "byte 0xFF is not an OBJ statement",
+   {}, [](const fs::path& d) { binary_file(d / "noise.obj", "\xff\xfe\xfd\xfc\x80\x81 \x90\n"); }},
+  {"obj_nul_in_text", "infer", {"nul.obj", "-o", "style.grm"}, kInput,
+   "nul.obj:2:8: error: ", "NUL byte",
+   {}, [](const fs::path& d) { binary_file(d / "nul.obj", std::string("o wall\nv 0 0 0\0\n", 16)); }},
+  {"obj_non_utf8_name", "infer", {"latin1.obj", "-o", "style.grm"}, kInput,
+   "latin1.obj:1:6: error: ", "the name is not UTF-8 text (byte 0xEA)",
+   {}, [](const fs::path& d) {
+     binary_file(d / "latin1.obj", "o fen\xeatre\nv 0 0 0\nv 1 0 0\nv 1 1 1\nf 1 2 3\n"); }},
+  {"obj_utf8_name_works", "infer", {"utf8_name.obj", "-o", "style.grm"}, kOk,
+   "", "", {"obj/utf8_name.obj"}, nullptr, nullptr, 0, {"style.grm", "style.prims.obj"}},
+  {"obj_not_obj_text", "infer", {"not_obj_text.obj", "-o", "style.grm"}, kInput,
+   "not_obj_text.obj:1:1: error: ", "'Dear' is not an OBJ statement", {"obj/not_obj_text.obj"}},
+  {"obj_wrong_extension", "infer", {"notes.txt", "-o", "style.grm"}, kUsage,
+   "notes.txt: error: ", "is not an example file", {"obj/notes.txt"}},
+  {"obj_faces_before_vertices", "infer", {"faces_before_vertices.obj", "-o", "style.grm"}, kInput,
+   "faces_before_vertices.obj:2:3: error: ", "the face refers to vertex 1, but 0 vertices are defined above it",
+   {"obj/faces_before_vertices.obj"}},
+  {"obj_face_index_out_of_range", "infer", {"face_index_out_of_range.obj", "-o", "style.grm"}, kInput,
+   "face_index_out_of_range.obj:11:9: error: ", "vertex 9, but 8 vertices", {"obj/face_index_out_of_range.obj"}},
+  {"obj_face_index_zero", "infer", {"face_index_zero.obj", "-o", "style.grm"}, kInput,
+   "face_index_zero.obj:11:3: error: ", "a vertex index of 0 is not valid", {"obj/face_index_zero.obj"}},
+  {"obj_negative_indices_work", "infer", {"negative_indices_valid.obj", "-o", "style.grm"}, kOk,
+   "", "", {"obj/negative_indices_valid.obj"}, nullptr, nullptr, 0, {"style.grm", "style.prims.obj"}},
+  {"obj_negative_index_out_of_range", "infer", {"negative_index_out_of_range.obj", "-o", "style.grm"}, kInput,
+   "negative_index_out_of_range.obj:5:9: error: ", "vertex -4, but 3 vertices", {"obj/negative_index_out_of_range.obj"}},
+  {"obj_texture_index_out_of_range", "infer", {"texture_index_out_of_range.obj", "-o", "style.grm"}, kInput,
+   "texture_index_out_of_range.obj:6:13: error: ", "texture coordinate 2, but 1 texture coordinate",
+   {"obj/texture_index_out_of_range.obj"}},
+  {"obj_normal_index_out_of_range", "infer", {"normal_index_out_of_range.obj", "-o", "style.grm"}, kInput,
+   "normal_index_out_of_range.obj:6:16: error: ", "normal -2, but 1 normal", {"obj/normal_index_out_of_range.obj"}},
+  {"obj_index_not_a_number", "infer", {"index_not_a_number.obj", "-o", "style.grm"}, kInput,
+   "index_not_a_number.obj:5:7: error: ", "expected a vertex index, found 'x'", {"obj/index_not_a_number.obj"}},
+  {"obj_index_too_large", "infer", {"index_too_large.obj", "-o", "style.grm"}, kInput,
+   "index_too_large.obj:5:7: error: ", "is out of range", {"obj/index_too_large.obj"}},
+  {"obj_nan_coordinate", "infer", {"nan_coordinate.obj", "-o", "style.grm"}, kInput,
+   "nan_coordinate.obj:8:5: error: ", "'nan' is not a finite number", {"obj/nan_coordinate.obj"}},
+  {"obj_inf_coordinate", "infer", {"inf_coordinate.obj", "-o", "style.grm"}, kInput,
+   "inf_coordinate.obj:8:7: error: ", "'-inf' is not a finite number", {"obj/inf_coordinate.obj"}},
+  {"obj_1e308_coordinate", "infer", {"huge_coordinate.obj", "-o", "style.grm"}, kInput,
+   "huge_coordinate.obj:8:3: error: ", "'1e308' is too large", {"obj/huge_coordinate.obj"}},
+  {"obj_coordinate_overflows_double", "infer", {"coordinate_overflows_double.obj", "-o", "style.grm"}, kInput,
+   "coordinate_overflows_double.obj:8:5: error: ", "'1e999' is out of range", {"obj/coordinate_overflows_double.obj"}},
+  {"obj_coordinate_not_a_number", "infer", {"coordinate_not_a_number.obj", "-o", "style.grm"}, kInput,
+   "coordinate_not_a_number.obj:2:5: error: ", "found 'zero'", {"obj/coordinate_not_a_number.obj"}},
+  {"obj_vertex_with_two_numbers", "infer", {"vertex_with_two_numbers.obj", "-o", "style.grm"}, kInput,
+   "vertex_with_two_numbers.obj:2:1: error: ", "a vertex needs 3 numbers, found 2", {"obj/vertex_with_two_numbers.obj"}},
+  {"obj_face_with_two_corners", "infer", {"face_with_two_corners.obj", "-o", "style.grm"}, kInput,
+   "face_with_two_corners.obj:4:1: error: ", "at least 3 corners", {"obj/face_with_two_corners.obj"}},
+  {"obj_objects_without_vertices", "infer", {"objects_without_vertices.obj", "-o", "style.grm"}, kInput,
+   "objects_without_vertices.obj: error: ", "each part must be an OBJ object `o name` with its faces", {"obj/objects_without_vertices.obj"}},
+  {"obj_unlabelled_geometry", "infer", {"unlabelled_geometry.obj", "-o", "style.grm"}, kInput,
+   "unlabelled_geometry.obj:9:1: error: ", "these faces have no name", {"obj/unlabelled_geometry.obj"}},
+  {"obj_unlabelled_before_labelled", "infer", {"unlabelled_before_labelled.obj", "-o", "style.grm"}, kInput,
+   "unlabelled_before_labelled.obj:9:1: error: ", "these faces have no name", {"obj/unlabelled_before_labelled.obj"}},
+  {"obj_single_flat_box_works", "infer", {"single_flat_box.obj", "-o", "style.grm"}, kOk,
+   "", "", {"obj/single_flat_box.obj"}, nullptr, nullptr, 0, {"style.grm", "style.prims.obj"}},
+  {"obj_single_point", "infer", {"single_point.obj", "-o", "style.grm"}, kInput,
+   "single_point.obj:1:1: error: ", "object 'wall' (line 1) is a single point", {"obj/single_point.obj"}},
+  {"obj_duplicate_coincident_parts", "infer", {"duplicate_coincident.obj", "-o", "style.grm"}, kInput,
+   "duplicate_coincident.obj:1:1: error: ", "objects 'wall' (line 1) and 'wall' (line 16) overlap",
+   {"obj/duplicate_coincident.obj"}, nullptr, "style.grm"},
+  {"obj_overlapping_parts", "infer", {"overlapping.obj", "-o", "style.grm"}, kInput,
+   "overlapping.obj:1:1: error: ", "objects 'wall' (line 1) and 'door' (line 16) overlap", {"obj/overlapping.obj"}},
+  {"obj_part_inside_part", "infer", {"contained.obj", "-o", "style.grm"}, kInput,
+   "contained.obj:1:1: error: ", "'wall' (line 1) and 'door' (line 16) overlap", {"obj/contained.obj"}},
+  {"obj_pinwheel_cannot_be_cut", "infer", {"pinwheel.obj", "-o", "style.grm"}, kInput,
+   "pinwheel.obj:2:1: error: ", "cannot be separated by straight cuts", {"obj/pinwheel.obj"}},
+  {"obj_bad_example_in_check", "check", {"ok.grm", "nan_coordinate.obj"}, kInput,
+   "nan_coordinate.obj:8:5: error: ", "not a finite number", {"grammar/ok.grm", "obj/nan_coordinate.obj"}},
+  {"obj_16mb_line_without_breaks", "infer", {"endless.obj", "-o", "style.grm"}, kInput,
+   "endless.obj:1:1: error: ", "a line longer than 1048576 bytes",
+   {}, [](const fs::path& d) { test::write_endless_line(d / "endless.obj", std::size_t{16} << 20); }, nullptr, 100},
+  // 200 MB that must be read to the end: memory stays far below the size.
+  {"obj_200mb_file_is_streamed", "infer", {"huge.obj", "-o", "style.grm"}, kOk,
+   "", "", {}, [](const fs::path& d) { test::write_commented_obj(d / "huge.obj", std::size_t{200} << 20); },
+   nullptr, 100, {"style.grm", "style.prims.obj"}},
+  // 64 MB of parts: reading stops at the first part past the limit.
+  {"obj_too_many_parts", "infer", {"city.obj", "-o", "style.grm"}, kLimit,
+   "city.obj:150010:1: error: ", "more than 10000 objects with faces",
+   {}, [](const fs::path& d) { test::write_many_parts_obj(d / "city.obj", 200000); }, "style.grm", 100},
+  {"obj_too_many_parts_in_check", "check", {"ok.grm", "two_parts.obj", "--max-parts", "1"}, kLimit,
+   "two_parts.obj:", "more than 1 objects with faces", kGrammarAndObj},
+
+  // ---- glTF and GLB examples ----
+  {"glb_truncated", "infer", {"truncated.glb", "-o", "style.grm"}, kInput,
+   "truncated.glb: error: ", "is not a valid GLB file",
+   {}, [](const fs::path& d) { binary_file(d / "truncated.glb", glb_bytes(d).substr(0, 100)); }},
+  {"glb_wrong_magic", "infer", {"magic.glb", "-o", "style.grm"}, kInput,
+   "magic.glb: error: ", "Invalid magic",
+   {}, [](const fs::path& d) { binary_file(d / "magic.glb", "glTX" + glb_bytes(d).substr(4)); }},
+  {"glb_empty", "infer", {"empty.glb", "-o", "style.grm"}, kInput,
+   "empty.glb: error: ", "is not a valid GLB file",
+   {}, [](const fs::path& d) { binary_file(d / "empty.glb", ""); }},
+  {"glb_header_only", "infer", {"header.glb", "-o", "style.grm"}, kInput,
+   "header.glb: error: ", "is not a valid GLB file",
+   {}, [](const fs::path& d) { binary_file(d / "header.glb", glb_bytes(d).substr(0, 12)); }},
+  {"glb_length_past_the_end", "infer", {"length.glb", "-o", "style.grm"}, kInput,
+   "length.glb: error: ", "is not a valid GLB file",
+   {}, [](const fs::path& d) { const std::string b = glb_bytes(d); binary_file(d / "length.glb", b.substr(0, 8) + u32(1u << 30) + b.substr(12)); }},
+  {"glb_chunk_past_the_end", "infer", {"chunk.glb", "-o", "style.grm"}, kInput,
+   "chunk.glb: error: ", "is not a valid GLB file",
+   {}, [](const fs::path& d) { const std::string b = glb_bytes(d); binary_file(d / "chunk.glb", b.substr(0, 12) + u32(1u << 30) + b.substr(16)); }},
+  {"glb_is_gltf_text", "infer", {"text.glb", "-o", "style.grm"}, kInput,
+   "text.glb: error: ", "Invalid magic",
+   {}, [](const fs::path& d) { fs::copy_file(kCorpus / "gltf/two_parts.gltf", d / "text.glb"); }},
+  {"gltf_missing_buffer_file", "infer", {"missing_buffer.gltf", "-o", "style.grm"}, kInput,
+   "missing_buffer.gltf: error: ", "missing.bin", {"gltf/missing_buffer.gltf"}, nullptr, "style.grm"},
+  {"gltf_no_buffers", "infer", {"no_buffers.gltf", "-o", "style.grm"}, kInput,
+   "no_buffers.gltf: error: ", "node 0 'wall': its POSITION accessor has no buffer", {"gltf/no_buffers.gltf"}},
+  {"gltf_short_data_uri", "infer", {"short_data_uri.gltf", "-o", "style.grm"}, kInput,
+   "short_data_uri.gltf: error: ", "is not a valid glTF file", {"gltf/short_data_uri.gltf"}},
+  {"gltf_bad_json", "infer", {"bad_json.gltf", "-o", "style.grm"}, kInput,
+   "bad_json.gltf: error: ", "parse error at line 1", {"gltf/bad_json.gltf"}},
+  {"gltf_empty", "infer", {"empty.gltf", "-o", "style.grm"}, kInput,
+   "empty.gltf: error: ", "is not a valid glTF file", {"gltf/empty.gltf"}},
+  {"gltf_not_json", "infer", {"not_json.gltf", "-o", "style.grm"}, kInput,
+   "not_json.gltf: error: ", "is not a valid glTF file", {"gltf/not_json.gltf"}},
+  {"gltf_accessor_out_of_range", "infer", {"accessor_out_of_range.gltf", "-o", "style.grm"}, kInput,
+   "accessor_out_of_range.gltf: error: ", "node 0 'wall': its POSITION accessor reads past the end",
+   {"gltf/accessor_out_of_range.gltf"}},
+  {"gltf_buffer_view_out_of_range", "infer", {"buffer_view_out_of_range.gltf", "-o", "style.grm"}, kInput,
+   "buffer_view_out_of_range.gltf: error: ", "node 0 'wall': its POSITION accessor has no buffer view",
+   {"gltf/buffer_view_out_of_range.gltf"}},
+  {"gltf_nan_texture_coordinate", "infer", {"nan_texture_coordinate.gltf", "-o", "style.grm"}, kInput,
+   "nan_texture_coordinate.gltf: error: ", "node 0 'wall': its TEXCOORD_0 accessor holds a value that is not a finite number",
+   {"gltf/nan_texture_coordinate.gltf"}},
+  {"gltf_node_without_name", "infer", {"node_without_name.gltf", "-o", "style.grm"}, kInput,
+   "node_without_name.gltf: error: ", "node 1 has a mesh but no name", {"gltf/node_without_name.gltf"}},
+  {"gltf_mesh_index_out_of_range", "infer", {"mesh_index_out_of_range.gltf", "-o", "style.grm"}, kInput,
+   "mesh_index_out_of_range.gltf: error: ", "node 1 'roof' refers to mesh 7", {"gltf/mesh_index_out_of_range.gltf"}},
+  {"gltf_node_cycle", "infer", {"node_cycle.gltf", "-o", "style.grm"}, kInput,
+   "node_cycle.gltf: error: ", "node 0 'wall' is reached twice", {"gltf/node_cycle.gltf"}},
+  {"gltf_huge_transform", "infer", {"huge_transform.gltf", "-o", "style.grm"}, kInput,
+   "huge_transform.gltf: error: ", "node 1 'roof': vertex 1 lies at (1e+300, 0, 0)", {"gltf/huge_transform.gltf"}},
+  {"gltf_no_nodes", "infer", {"no_nodes.gltf", "-o", "style.grm"}, kInput,
+   "no_nodes.gltf: error: ", "has no labelled objects", {"gltf/no_nodes.gltf"}},
+  {"gltf_overlapping_nodes", "infer", {"overlapping_nodes.gltf", "-o", "style.grm"}, kInput,
+   "overlapping_nodes.gltf: error: ", "objects 'wall' and 'roof' overlap", {"gltf/overlapping_nodes.gltf"}},
+  {"gltf_too_many_parts", "infer", {"two_parts.gltf", "--max-parts", "1", "-o", "style.grm"}, kLimit,
+   "two_parts.gltf: error: ", "more than 1 labelled parts: reading stopped at node 1 'roof'", {"gltf/two_parts.gltf"}},
+
+  // ---- grammars: the reader (generate) ----
+  {"grammar_missing_file", "generate", {"missing.grm", "-o", "out.obj"}, kIo,
+   "missing.grm: error: ", "cannot open the grammar file"},
+  {"grammar_a_folder", "generate", {"style.grm", "-o", "out.obj"}, kIo,
+   "style.grm: error: ", "is a folder", {}, [](const fs::path& d) { fs::create_directory(d / "style.grm"); }},
+  {"grammar_binary", "generate", {"binary.grm", "-o", "out.obj"}, kInput,
+   "binary.grm:1:1: error: ", "unexpected character byte 0x7F",
+   {}, [](const fs::path& d) { binary_file(d / "binary.grm", std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10)); }, "out.obj"},
+  {"grammar_nul_byte", "generate", {"nul.grm", "-o", "out.obj"}, kInput,
+   "nul.grm:1:10: error: ", "unexpected character byte 0x00",
+   {}, [](const fs::path& d) { binary_file(d / "nul.grm", std::string("p --> spl\0it\n", 13)); }},
+  {"grammar_string_not_utf8", "generate", {"latin1.grm", "-o", "out.obj"}, kInput,
+   "latin1.grm:1:9: error: ", "this string is not UTF-8 text",
+   {}, [](const fs::path& d) { binary_file(d / "latin1.grm", "p --> I(\"fen\xeatre\")\n"); }},
+  {"grammar_directive_without_name", "generate", {"directive_without_name.grm", "-o", "out.obj"}, kInput,
+   "directive_without_name.grm:1:1: error: ", "'@' must start a directive", {"grammar/directive_without_name.grm"}},
+  {"grammar_number_too_large", "generate", {"number_too_large.grm", "-o", "out.obj"}, kInput,
+   "number_too_large.grm:1:17: error: ", "the number 1e999 is too large", {"grammar/number_too_large.grm"}},
+  {"grammar_number_unreadable", "generate", {"number_unreadable.grm", "-o", "out.obj"}, kInput,
+   "number_unreadable.grm:1:17: error: ", "cannot read the number '1.2.3'", {"grammar/number_unreadable.grm"}},
+  {"grammar_number_runs_into_name", "generate", {"number_runs_into_name.grm", "-o", "out.obj"}, kInput,
+   "number_runs_into_name.grm:1:26: error: ", "a number runs into a name", {"grammar/number_runs_into_name.grm"}},
+  {"grammar_string_unclosed", "generate", {"string_unclosed.grm", "-o", "out.obj"}, kInput,
+   "string_unclosed.grm:1:13: error: ", "this string has no closing '\"'", {"grammar/string_unclosed.grm"}},
+  {"grammar_unexpected_character", "generate", {"unexpected_character.grm", "-o", "out.obj"}, kInput,
+   "unexpected_character.grm:1:19: error: ", "unexpected character '$'", {"grammar/unexpected_character.grm"}},
+  {"grammar_non_ascii_operator", "generate", {"non_ascii_operator.grm", "-o", "out.obj"}, kInput,
+   "non_ascii_operator.grm:1:19: error: ", "unexpected character '≈'", {"grammar/non_ascii_operator.grm"}},
+  {"grammar_missing_open_paren", "generate", {"missing_open_paren.grm", "-o", "out.obj"}, kInput,
+   "missing_open_paren.grm:1:13: error: ", "expected '(' after split, found 'x'", {"grammar/missing_open_paren.grm"},
+   nullptr, "out.obj"},
+  {"grammar_missing_open_brace", "generate", {"missing_open_brace.grm", "-o", "out.obj"}, kInput,
+   "missing_open_brace.grm:1:16: error: ", "expected '{' to open the body of split", {"grammar/missing_open_brace.grm"}},
+  {"grammar_missing_colon", "generate", {"missing_colon.grm", "-o", "out.obj"}, kInput,
+   "missing_colon.grm:1:20: error: ", "expected ':' between a split size and its operation", {"grammar/missing_colon.grm"}},
+  {"grammar_unclosed_split", "generate", {"unclosed_split.grm", "-o", "out.obj"}, kInput,
+   "unclosed_split.grm:2:1: error: ", "expected '}' or '|' after a split part, found 'q'", {"grammar/unclosed_split.grm"}},
+  {"grammar_extra_close_brace", "generate", {"extra_close_brace.grm", "-o", "out.obj"}, kInput,
+   "extra_close_brace.grm:1:27: error: ", "unexpected '}' after a complete line", {"grammar/extra_close_brace.grm"}},
+  {"grammar_two_operations_on_a_line", "generate", {"two_operations_on_a_line.grm", "-o", "out.obj"}, kInput,
+   "two_operations_on_a_line.grm:1:11: error: ", "unexpected 'nil' after a complete line",
+   {"grammar/two_operations_on_a_line.grm"}},
+  {"grammar_missing_arrow", "generate", {"missing_arrow.grm", "-o", "out.obj"}, kInput,
+   "missing_arrow.grm:1:3: error: ", "expected '-->' in the rule for 'p'", {"grammar/missing_arrow.grm"}},
+  {"grammar_missing_arrow_after_condition", "generate", {"missing_arrow_after_condition.grm", "-o", "out.obj"}, kInput,
+   "missing_arrow_after_condition.grm:1:14: error: ", "expected '-->' in the rule for 'p'",
+   {"grammar/missing_arrow_after_condition.grm"}},
+  {"grammar_empty_split_part", "generate", {"empty_split_part.grm", "-o", "out.obj"}, kInput,
+   "empty_split_part.grm:1:28: error: ", "expected a value, found '}'", {"grammar/empty_split_part.grm"}},
+  {"grammar_missing_operation", "generate", {"missing_operation.grm", "-o", "out.obj"}, kInput,
+   "missing_operation.grm:1:22: error: ", "expected an operation, found ':'", {"grammar/missing_operation.grm"}},
+  {"grammar_string_as_operation", "generate", {"string_as_operation.grm", "-o", "out.obj"}, kInput,
+   "string_as_operation.grm:1:7: error: ", "expected an operation, found a string", {"grammar/string_as_operation.grm"}},
+  {"grammar_missing_priority", "generate", {"missing_priority.grm", "-o", "out.obj"}, kInput,
+   "missing_priority.grm:1:16: error: ", "expected a value, found the end of the line", {"grammar/missing_priority.grm"}},
+  {"grammar_empty_condition", "generate", {"empty_condition.grm", "-o", "out.obj"}, kInput,
+   "empty_condition.grm:1:5: error: ", "expected a value, found '-->'", {"grammar/empty_condition.grm"}},
+  {"grammar_unclosed_parenthesis", "generate", {"missing_close_paren_in_expression.grm", "-o", "out.obj"}, kInput,
+   "missing_close_paren_in_expression.grm:1:24: error: ", "expected ')' to close '(' at 1:17",
+   {"grammar/missing_close_paren_in_expression.grm"}},
+  {"grammar_unknown_directive", "generate", {"unknown_directive.grm", "-o", "out.obj"}, kInput,
+   "unknown_directive.grm:1:1: error: ", "unknown directive '@size'", {"grammar/unknown_directive.grm"}},
+  {"grammar_start_without_label", "generate", {"start_without_label.grm", "-o", "out.obj"}, kInput,
+   "start_without_label.grm:1:7: error: ", "expected a name after @start", {"grammar/start_without_label.grm"}},
+  {"grammar_scope_two_values", "generate", {"scope_two_values.grm", "-o", "out.obj"}, kInput,
+   "scope_two_values.grm:1:13: error: ", "expected ',' between the three @scope sizes", {"grammar/scope_two_values.grm"}},
+  {"grammar_primitives_unquoted", "generate", {"primitives_unquoted.grm", "-o", "out.obj"}, kInput,
+   "primitives_unquoted.grm:1:18: error: ", "unexpected character '.'", {"grammar/primitives_unquoted.grm"}},
+  {"grammar_start_unknown_rule", "generate", {"start_unknown_rule.grm", "-o", "out.obj"}, kInput,
+   "start_unknown_rule.grm:1:8: error: ", "@start names 'plto', which has no rule", {"grammar/start_unknown_rule.grm"}},
+  {"grammar_start_rule_with_parameters", "generate", {"start_rule_with_parameters_directive.grm", "-o", "out.obj"}, kInput,
+   "start_rule_with_parameters_directive.grm:1:8: error: ", "the start rule 'wall' takes parameters",
+   {"grammar/start_rule_with_parameters_directive.grm"}},
+  {"grammar_no_rules", "generate", {"no_rules.grm", "-o", "out.obj"}, kInput,
+   "no_rules.grm:1:1: error: ", "the grammar has no rules", {"grammar/no_rules.grm"}},
+  {"grammar_empty_file", "generate", {"empty.grm", "-o", "out.obj"}, kInput,
+   "empty.grm:1:1: error: ", "the grammar has no rules", {}, [](const fs::path& d) { write_text(d / "empty.grm", ""); }},
+  {"grammar_constant_defined_twice", "generate", {"constant_defined_twice.grm", "-o", "out.obj"}, kInput,
+   "constant_defined_twice.grm:2:1: error: ", "the constant 'width' is defined twice", {"grammar/constant_defined_twice.grm"}},
+  {"grammar_reserved_constant_name", "generate", {"reserved_constant_name.grm", "-o", "out.obj"}, kInput,
+   "reserved_constant_name.grm:1:1: error: ", "'x' cannot name a constant", {"grammar/reserved_constant_name.grm"}},
+  {"grammar_operation_as_rule_label", "generate", {"operation_as_rule_label.grm", "-o", "out.obj"}, kInput,
+   "operation_as_rule_label.grm:1:1: error: ", "'split' is an operation and cannot be a rule label",
+   {"grammar/operation_as_rule_label.grm"}},
+  {"grammar_parameter_listed_twice", "generate", {"parameter_listed_twice.grm", "-o", "out.obj"}, kInput,
+   "parameter_listed_twice.grm:1:9: error: ", "the parameter 'a' is listed twice", {"grammar/parameter_listed_twice.grm"}},
+  {"grammar_parameter_not_a_name", "generate", {"parameter_not_a_name.grm", "-o", "out.obj"}, kInput,
+   "parameter_not_a_name.grm:1:6: error: ", "expected a name (a parameter name), found the number 1",
+   {"grammar/parameter_not_a_name.grm"}},
+  {"grammar_parameter_counts_differ", "generate", {"parameter_counts_differ.grm", "-o", "out.obj"}, kInput,
+   "parameter_counts_differ.grm:3:1: error: ", "'wall' takes 1 parameters where it was first defined (2:1), here 2",
+   {"grammar/parameter_counts_differ.grm"}},
+  {"grammar_unknown_rule", "generate", {"unknown_rule.grm", "-o", "out.obj"}, kInput,
+   "unknown_rule.grm:1:40: error: ", "unknown rule 'hose'\n  hint: did you mean 'house'?", {"grammar/unknown_rule.grm"}},
+  {"grammar_wrong_arity", "generate", {"wrong_arity.grm", "-o", "out.obj"}, kInput,
+   "wrong_arity.grm:1:7: error: ", "'wall' takes 1 argument, given 2", {"grammar/wrong_arity.grm"}},
+  {"grammar_unknown_name", "generate", {"unknown_name.grm", "-o", "out.obj"}, kInput,
+   "unknown_name.grm:1:17: error: ", "unknown name 'widht'", {"grammar/unknown_name.grm"}},
+  {"grammar_unknown_name_suggested", "generate", {"unknown_name_suggested.grm", "-o", "out.obj"}, kInput,
+   "unknown_name_suggested.grm:2:17: error: ", "unknown name 'widht'\n  hint: did you mean 'width'?",
+   {"grammar/unknown_name_suggested.grm"}},
+  {"grammar_unknown_function", "generate", {"unknown_function.grm", "-o", "out.obj"}, kInput,
+   "unknown_function.grm:1:17: error: ", "unknown function 'flor'\n  hint: did you mean 'floor'?",
+   {"grammar/unknown_function.grm"}},
+  {"grammar_function_without_arguments", "generate", {"function_without_arguments.grm", "-o", "out.obj"}, kInput,
+   "function_without_arguments.grm:1:17: error: ", "the function 'floor' needs its arguments\n  hint: write floor(a)",
+   {"grammar/function_without_arguments.grm"}},
+  {"grammar_function_arity", "generate", {"function_arity.grm", "-o", "out.obj"}, kInput,
+   "function_arity.grm:1:17: error: ", "rand takes 0 or 2 arguments, given 1", {"grammar/function_arity.grm"}},
+  {"grammar_too_many_arguments", "generate", {"many.grm", "-o", "out.obj"}, kInput,
+   "many.grm:1:17: error: ", "choice is given 70000 arguments, more than 65535",
+   {}, [](const fs::path& d) {
+     std::string text = "p --> split(x){ choice(1";
+     for (int i = 1; i < 70000; ++i) text += ", 1";
+     write_text(d / "many.grm", text + ") : nil }\n"); }},
+  {"grammar_nesting_too_deep", "generate", {"deep.grm", "-o", "out.obj"}, kInput,
+   "deep.grm:1:", "nested more than 256 deep",
+   {}, [](const fs::path& d) {
+     std::string text = "p --> ";
+     for (int i = 0; i < 100000; ++i) text += "split(x){ ~1 : ";
+     write_text(d / "deep.grm", text + "nil\n"); }},
+  {"grammar_parentheses_too_deep", "generate", {"parens.grm", "-o", "out.obj"}, kInput,
+   "parens.grm:1:", "nested more than 256 deep",
+   {}, [](const fs::path& d) {
+     write_text(d / "parens.grm", "p --> split(x){ " + std::string(100000, '(') + "1" + std::string(100000, ')') + " : nil }\n"); }},
+  {"grammar_expression_chain_too_deep", "generate", {"chain.grm", "-o", "out.obj"}, kInput,
+   "chain.grm:1:", "an expression nested more than 256 deep",
+   {}, [](const fs::path& d) {
+     std::string text = "p --> split(x){ 1";
+     for (int i = 0; i < 100000; ++i) text += " + 1";
+     write_text(d / "chain.grm", text + " : nil }\n"); }},
+  {"grammar_axis_literal_invalid", "generate", {"axis_literal_invalid.grm", "-o", "out.obj"}, kInput,
+   "axis_literal_invalid.grm:1:13: error: ", "the axis of split is 5", {"grammar/axis_literal_invalid.grm"}},
+  {"grammar_repeat_relative_tile", "generate", {"repeat_relative_tile.grm", "-o", "out.obj"}, kInput,
+   "repeat_relative_tile.grm:1:19: error: ", "a repeat's tile size is absolute", {"grammar/repeat_relative_tile.grm"}},
+  {"grammar_primitive_without_name", "generate", {"primitive_without_name.grm", "-o", "out.obj"}, kInput,
+   "primitive_without_name.grm:1:9: error: ", "expected a primitive name in I(...)", {"grammar/primitive_without_name.grm"}},
+  {"grammar_comp_not_f", "generate", {"comp_not_f.grm", "-o", "out.obj"}, kInput,
+   "comp_not_f.grm:1:12: error: ", "comp splits into faces", {"grammar/comp_not_f.grm"}},
+  {"grammar_comp_unknown_face", "generate", {"comp_unknown_face.grm", "-o", "out.obj"}, kInput,
+   "comp_unknown_face.grm:1:16: error: ", "'middle' is not a face", {"grammar/comp_unknown_face.grm"}},
+  {"grammar_comp_face_twice", "generate", {"comp_face_twice.grm", "-o", "out.obj"}, kInput,
+   "comp_face_twice.grm:1:28: error: ", "the face 'top' is listed twice", {"grammar/comp_face_twice.grm"}},
+  {"grammar_colour_bad_hex", "generate", {"colour_bad_hex.grm", "-o", "out.obj"}, kInput,
+   "colour_bad_hex.grm:1:14: error: ", "'#12345' is not a colour", {"grammar/colour_bad_hex.grm"}},
+  {"grammar_colour_unknown_name", "generate", {"colour_unknown_name.grm", "-o", "out.obj"}, kInput,
+   "colour_unknown_name.grm:1:14: error: ", "unknown colour 'reed'\n  hint: did you mean 'red'?",
+   {"grammar/colour_unknown_name.grm"}},
+  {"grammar_translate_two_values", "generate", {"translate_two_values.grm", "-o", "out.obj"}, kInput,
+   "translate_two_values.grm:1:13: error: ", "expected ',' between the three values of T",
+   {"grammar/translate_two_values.grm"}},
+  {"grammar_rotate_without_angle", "generate", {"rotate_without_angle.grm", "-o", "out.obj"}, kInput,
+   "rotate_without_angle.grm:1:10: error: ", "between the axis and the angle of R", {"grammar/rotate_without_angle.grm"}},
+  // Type errors found while reading: an axis literal where a number belongs.
+  {"grammar_axis_in_arithmetic", "generate", {"axis_in_arithmetic.grm", "-o", "out.obj"}, kInput,
+   "axis_in_arithmetic.grm:1:17: error: ", "'+' expects numbers, found the axis x", {"grammar/axis_in_arithmetic.grm"}},
+  {"grammar_minus_axis", "generate", {"minus_axis.grm", "-o", "out.obj"}, kInput,
+   "minus_axis.grm:1:18: error: ", "'-' expects a number, found an axis", {"grammar/minus_axis.grm"}},
+  {"grammar_tilde_not_first", "generate", {"tilde_not_first.grm", "-o", "out.obj"}, kInput,
+   "tilde_not_first.grm:1:21: error: ", "'~' marks a relative size and must come first", {"grammar/tilde_not_first.grm"}},
+  {"grammar_function_axis_argument", "generate", {"function_axis_argument.grm", "-o", "out.obj"}, kInput,
+   "function_axis_argument.grm:1:21: error: ", "abs expects numbers, found an axis", {"grammar/function_axis_argument.grm"}},
+
+  // ---- grammars: deriving (generate) ----
+  {"derive_axis_where_number_expected", "generate", {"axis_where_number_expected.grm", "-o", "out.obj"}, kInput,
+   "axis_where_number_expected.grm:3:23: error: ", "expected a number here, found axis y\n  rule chain: p > q > wall(axis y)",
+   {"grammar/axis_where_number_expected.grm"}, nullptr, "out.obj"},
+  {"derive_number_where_axis_expected", "generate", {"number_where_axis_expected.grm", "-o", "out.obj"}, kInput,
+   "number_where_axis_expected.grm:2:19: error: ", "the axis of split must be an axis, found 5",
+   {"grammar/number_where_axis_expected.grm"}},
+  {"derive_colour_axis_component", "generate", {"colour_axis_component.grm", "-o", "out.obj"}, kInput,
+   "colour_axis_component.grm:1:14: error: ", "a colour component must be a number, found axis x",
+   {"grammar/colour_axis_component.grm"}},
+  {"derive_division_by_zero", "generate", {"division_by_zero.grm", "-o", "out.obj"}, kInput,
+   "division_by_zero.grm:2:19: error: ", "division by zero (1 / 0)", {"grammar/division_by_zero.grm"}},
+  {"derive_remainder_by_zero", "generate", {"remainder_by_zero.grm", "-o", "out.obj"}, kInput,
+   "remainder_by_zero.grm:2:25: error: ", "remainder by zero (5 % 0)\n  rule chain: p > wall(0)",
+   {"grammar/remainder_by_zero.grm"}},
+  {"derive_sqrt_negative", "generate", {"sqrt_negative.grm", "-o", "out.obj"}, kInput,
+   "sqrt_negative.grm:1:17: error: ", "sqrt of a negative number (-4)", {"grammar/sqrt_negative.grm"}},
+  {"derive_constant_division_by_zero", "generate", {"constant_division_by_zero.grm", "-o", "out.obj"}, kInput,
+   "constant_division_by_zero.grm:1:11: error: ", "division by zero (1 / 0) (in the constant 'ratio')",
+   {"grammar/constant_division_by_zero.grm"}},
+  {"derive_nan_size", "generate", {"nan_size.grm", "-o", "out.obj"}, kInput,
+   "nan_size.grm:2:21: error: ", "a split size is NaN, not a finite number", {"grammar/nan_size.grm"}},
+  {"derive_inf_offset", "generate", {"inf_offset.grm", "-o", "out.obj"}, kInput,
+   "inf_offset.grm:1:15: error: ", "a T offset is inf, not a finite number", {"grammar/inf_offset.grm"}},
+  {"derive_negative_size", "generate", {"negative_size.grm", "-o", "out.obj"}, kInput,
+   "negative_size.grm:1:17: error: ", "a split size is negative (-1)", {"grammar/negative_size.grm"}},
+  {"derive_negative_scale", "generate", {"negative_scale.grm", "-o", "out.obj"}, kInput,
+   "negative_scale.grm:1:9: error: ", "an S size is negative (-1)", {"grammar/negative_scale.grm"}},
+  {"derive_negative_scope", "generate", {"negative_scope.grm", "-o", "out.obj"}, kInput,
+   "negative_scope.grm:1:12: error: ", "@scope size -8 is negative", {"grammar/negative_scope.grm"}},
+  {"derive_repeat_zero_tile", "generate", {"repeat_zero_tile.grm", "-o", "out.obj"}, kInput,
+   "repeat_zero_tile.grm:1:17: error: ", "the tile size of repeat is 0", {"grammar/repeat_zero_tile.grm"}},
+  {"derive_randint_empty_range", "generate", {"randint_empty_range.grm", "-o", "out.obj"}, kInput,
+   "randint_empty_range.grm:1:17: error: ", "has no whole number in range", {"grammar/randint_empty_range.grm"}},
+  {"derive_normal_negative_sigma", "generate", {"normal_negative_sigma.grm", "-o", "out.obj"}, kInput,
+   "normal_negative_sigma.grm:1:17: error: ", "normal() needs sigma >= 0", {"grammar/normal_negative_sigma.grm"}},
+  {"derive_tnormal_bounds_swapped", "generate", {"tnormal_bounds_swapped.grm", "-o", "out.obj"}, kInput,
+   "tnormal_bounds_swapped.grm:1:17: error: ", "tnormal() needs lo <= hi", {"grammar/tnormal_bounds_swapped.grm"}},
+  {"derive_start_rule_with_parameters", "generate", {"default_start_rule_with_parameters.grm", "-o", "out.obj"}, kInput,
+   "default_start_rule_with_parameters.grm:1:1: error: ", "the start rule 'wall' takes parameters",
+   {"grammar/default_start_rule_with_parameters.grm"}},
+  {"derive_unknown_primitive_strict", "generate", {"unknown_primitive.grm", "--strict", "-o", "out.obj"}, kInput,
+   "unknown_primitive.grm:1:22: error: ", "unknown primitive 'tower'", {"grammar/unknown_primitive.grm"}, nullptr, "out.obj"},
+  {"derive_unknown_primitive_warns", "generate", {"unknown_primitive.grm", "-o", "out.obj"}, kOk,
+   "", "", {"grammar/unknown_primitive.grm"}, nullptr, nullptr, 0, {"out.obj"}},
+  {"derive_no_rule_applies_strict", "generate", {"no_rule_applies.grm", "--strict", "-o", "out.obj"}, kInput,
+   "no_rule_applies.grm:2:1: error: ", "no rule of 'q' applies", {"grammar/no_rule_applies.grm"}},
+  {"derive_primitives_file_missing", "generate", {"with_primitives_file.grm", "-o", "out.obj"}, kIo,
+   "prims.obj: error: ", "no such file or folder", {"grammar/with_primitives_file.grm"}},
+  // Limits: each names the flag that raises it.
+  {"limit_repeatN_1e12", "generate", {"repeatN_1e12.grm", "-o", "out.obj"}, kLimit,
+   "repeatN_1e12.grm:1:18: error: ", "repeatN asks for 1e+12 tiles", {"grammar/repeatN_1e12.grm"}, nullptr, "out.obj"},
+  {"limit_repeat_tiny_tile", "generate", {"repeat_tiny_tile.grm", "-o", "out.obj"}, kLimit,
+   "repeat_tiny_tile.grm:1:7: error: ", "--max-operations", {"grammar/repeat_tiny_tile.grm"}},
+  {"limit_infinite_recursion", "generate", {"infinite_recursion.grm", "-o", "out.obj"}, kLimit,
+   "infinite_recursion.grm:2:7: error: ", "rule calls nested deeper than 1000", {"grammar/infinite_recursion.grm"}},
+  {"limit_recursion_deeper_than_the_stack", "generate",
+   {"recursion_through_transforms.grm", "--max-depth", "1000000", "-j", "1", "-o", "out.obj"}, kLimit,
+   "recursion_through_transforms.grm:2:58: error: ", "deep fill this thread's", {"grammar/recursion_through_transforms.grm"}},
+  {"limit_random_never_terminates", "generate", {"random_never_terminates.grm", "--seed", "4", "-o", "out.obj"}, kLimit,
+   "random_never_terminates.grm:", "--max-depth", {"grammar/random_never_terminates.grm"}},
+  {"limit_terminals", "generate", {"terminal_explosion.grm", "--max-terminals", "1000", "-o", "out.obj"}, kLimit,
+   "terminal_explosion.grm:1:61: error: ", "more than 1000 terminals in one derivation",
+   {"grammar/terminal_explosion.grm"}},
+  {"limit_terminals_default_bounds_memory", "generate", {"terminal_explosion.grm", "-o", "out.obj"}, kLimit,
+   "terminal_explosion.grm:1:61: error: ", "more than 1000000 terminals", {"grammar/terminal_explosion.grm"}, nullptr,
+   nullptr, 600},
+  {"limit_operations", "generate", {"ok.grm", "--max-operations", "2", "-o", "out.obj"}, kLimit,
+   "ok.grm:1:", "more than 2 operations in one derivation", kValidGrammar},
+
+  // ---- command lines ----
+  {"generate_unknown_option", "generate", {"ok.grm", "--sede", "3"}, kUsage,
+   "generate: error: ", "unknown option '--sede'\n  hint: did you mean '--seed'?", kValidGrammar},
+  {"generate_missing_value", "generate", {"ok.grm", "-n"}, kUsage,
+   "generate: error: ", "--count needs 1 value (COUNT)", kValidGrammar},
+  {"generate_value_not_a_number", "generate", {"ok.grm", "-n", "many"}, kUsage,
+   "generate: error: ", "--count expects a whole number, got 'many'", kValidGrammar},
+  {"generate_value_out_of_range", "generate", {"ok.grm", "--max-depth", "0"}, kUsage,
+   "generate: error: ", "--max-depth must be between 1 and 1000000, got 0", kValidGrammar},
+  {"generate_value_to_a_flag", "generate", {"ok.grm", "--strict=yes"}, kUsage,
+   "generate: error: ", "--strict takes 0 values", kValidGrammar},
+  {"generate_no_grammar", "generate", {}, kUsage, "generate: error: ", "no grammar file given"},
+  {"generate_unknown_start", "generate", {"ok.grm", "--start", "pp", "-o", "out.obj"}, kUsage,
+   "generate: error: ", "--start names 'pp'", kValidGrammar},
+  {"generate_unwritable_output", "generate", {"ok.grm", "-o", "file/out.obj"}, kIo,
+   "file/out.obj: error: ", "cannot write here: file is not an existing folder", kValidGrammar,
+   [](const fs::path& d) { write_text(d / "file", "a file, not a folder\n"); }},
+  {"generate_output_is_a_folder", "generate", {"ok.grm", "-o", "out.obj"}, kIo,
+   "out.obj: error: ", "it is an existing folder", kValidGrammar,
+   [](const fs::path& d) { fs::create_directory(d / "out.obj"); }},
+  {"generate_output_folder_is_a_file", "generate", {"ok.grm", "-o", "buildings"}, kIo,
+   "buildings: error: ", "cannot write the buildings into this folder: it is a file", kValidGrammar, nullptr, "buildings"},
+  {"generate_output_is_the_grammar", "generate", {"ok.grm", "-o", "./ok.grm"}, kUsage,
+   "generate: error: ", "the output ./ok.grm is the grammar file itself", kValidGrammar},
+  {"generate_output_is_the_primitives", "generate", {"ok.grm", "--primitives", "prims.obj", "-o", "prims.obj"}, kUsage,
+   "generate: error: ", "the output prims.obj is a primitives file itself",
+   {"grammar/ok.grm"}, [](const fs::path& d) { fs::copy_file(kCorpus / "obj/two_parts.obj", d / "prims.obj"); }},
+  {"generate_output_is_the_grammars_primitives", "generate", {"with_primitives_file.grm", "-o", "prims.obj"}, kUsage,
+   "generate: error: ", "the output prims.obj is a primitives file itself",
+   {"grammar/with_primitives_file.grm"}, [](const fs::path& d) { fs::copy_file(kCorpus / "obj/two_parts.obj", d / "prims.obj"); }},
+
+  {"generate_output_folder_holds_the_primitives", "generate",
+   {"ok.grm", "--primitives", "out/variant_000.obj", "-o", "out/"}, kUsage,
+   "generate: error: ", "the output out/variant_000.obj is a primitives file itself", kValidGrammar,
+   [](const fs::path& d) {
+     fs::create_directory(d / "out");
+     fs::copy_file(kCorpus / "obj/two_parts.obj", d / "out/variant_000.obj"); }},
+
+  {"infer_unknown_option", "infer", {"two_parts.obj", "-o", "style.grm", "--tolerence", "1"}, kUsage,
+   "infer: error: ", "unknown option '--tolerence'\n  hint: did you mean '--tolerance'?", kValidObj},
+  {"infer_missing_value", "infer", {"two_parts.obj", "-o"}, kUsage,
+   "infer: error: ", "--output needs 1 value (STYLE.grm)", kValidObj},
+  {"infer_value_not_a_number", "infer", {"two_parts.obj", "-o", "style.grm", "--tolerance", "fine"}, kUsage,
+   "infer: error: ", "--tolerance expects a number, got 'fine'", kValidObj},
+  {"infer_tolerance_not_positive", "infer", {"two_parts.obj", "-o", "style.grm", "--tolerance", "-1"}, kUsage,
+   "infer: error: ", "--tolerance must be > 0", kValidObj},
+  {"infer_max_parts_zero", "infer", {"two_parts.obj", "-o", "style.grm", "--max-parts", "0"}, kUsage,
+   "infer: error: ", "--max-parts must be between 1 and", kValidObj},
+  {"infer_no_output", "infer", {"two_parts.obj"}, kUsage, "infer: error: ", "no output grammar given", kValidObj},
+  {"infer_no_examples", "infer", {"-o", "style.grm"}, kUsage, "infer: error: ", "no examples given"},
+  {"infer_start_not_a_label", "infer", {"two_parts.obj", "-o", "style.grm", "--start", "1st"}, kUsage,
+   "infer: error: ", "--start '1st' cannot be a rule label", kValidObj},
+  {"infer_output_is_an_example", "infer", {"two_parts.obj", "-o", "two_parts.obj"}, kUsage,
+   "infer: error: ", "the output two_parts.obj is an example itself", kValidObj},
+  {"infer_primitives_out_is_an_example", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out", "./two_parts.obj"},
+   kUsage, "infer: error: ", "the output ./two_parts.obj is an example itself", kValidObj},
+  {"infer_two_outputs_one_file", "infer", {"two_parts.obj", "-o", "style.obj", "--primitives-out", "style.obj"}, kUsage,
+   "infer: error: ", "two outputs of this run are the same file: style.obj and style.obj", kValidObj},
+  {"infer_grammar_is_the_primitives_materials", "infer", {"two_parts.obj", "-o", "style.mtl", "--primitives-out", "style.obj"},
+   kUsage, "infer: error: ", "two outputs of this run are the same file: style.mtl and style.mtl", kValidObj},
+  {"infer_primitives_out_not_obj", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out", "style.glb"}, kUsage,
+   "infer: error: ", "--primitives-out must name an .obj file", kValidObj},
+  {"infer_output_is_a_folder", "infer", {"two_parts.obj", "-o", "style.grm"}, kIo,
+   "style.grm: error: ", "it is an existing folder", kValidObj, [](const fs::path& d) { fs::create_directory(d / "style.grm"); }},
+  {"infer_unwritable_output", "infer", {"two_parts.obj", "-o", "file/style.grm"}, kIo,
+   "file/style.grm: error: ", "cannot write here: file is not an existing folder", kValidObj,
+   [](const fs::path& d) { write_text(d / "file", "a file, not a folder\n"); }},
+  {"infer_unwritable_primitives_out", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out", "meshes/style.obj"},
+   kIo, "meshes/style.obj: error: ", "cannot write here: meshes is not an existing folder", kValidObj, nullptr, "style.grm"},
+
+  {"check_unknown_option", "check", {"ok.grm", "two_parts.obj", "--breif"}, kUsage,
+   "check: error: ", "unknown option '--breif'\n  hint: did you mean '--brief'?", kGrammarAndObj},
+  {"check_missing_value", "check", {"ok.grm", "two_parts.obj", "--scope", "1", "2"}, kUsage,
+   "check: error: ", "--scope needs 3 values (X Y Z)", kGrammarAndObj},
+  {"check_value_out_of_range", "check", {"ok.grm", "two_parts.obj", "--max-steps", "0"}, kUsage,
+   "check: error: ", "--max-steps must be between 1 and", kGrammarAndObj},
+  {"check_tolerance_not_positive", "check", {"ok.grm", "two_parts.obj", "--tolerance", "0"}, kUsage,
+   "check: error: ", "--tolerance must be > 0, got 0", kGrammarAndObj},
+  {"check_negative_scope", "check", {"ok.grm", "two_parts.obj", "--scope", "1", "-2", "3"}, kUsage,
+   "check: error: ", "--scope sizes must be >= 0, got -2", kGrammarAndObj},
+  {"generate_negative_scope", "generate", {"ok.grm", "--scope", "1", "-2", "3"}, kUsage,
+   "generate: error: ", "--scope sizes must be >= 0, got -2", kValidGrammar},
+  {"check_too_many_steps", "check", {"ok.grm", "two_parts.obj", "--max-steps", "1"}, kLimit,
+   "two_parts.obj: error: ", "more than 1 matching steps", kGrammarAndObj},
+  {"check_grammar_only", "check", {"ok.grm"}, kUsage, "check: error: ", "give a grammar and at least one example",
+   kValidGrammar},
+  {"check_missing_grammar", "check", {"missing.grm", "two_parts.obj"}, kIo,
+   "missing.grm: error: ", "cannot open the grammar file", kValidObj},
+  {"check_missing_example", "check", {"ok.grm", "missing.obj"}, kIo,
+   "missing.obj: error: ", "no such file or folder", kValidGrammar},
+  {"check_empty_example_folder", "check", {"ok.grm", "examples"}, kIo,
+   "examples: error: ", "the folder holds no example files", kValidGrammar,
+   [](const fs::path& d) { fs::create_directory(d / "examples"); }},
+  {"check_bad_grammar", "check", {"unknown_rule.grm", "two_parts.obj"}, kInput,
+   "unknown_rule.grm:1:40: error: ", "unknown rule 'hose'", {"grammar/unknown_rule.grm", "obj/two_parts.obj"}},
+};
+// clang-format on
+
+class BadInputCorpus : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadInputCorpus, Runs) {
+  const BadInput& c = GetParam();
+  TempFolder dir;
+  for (const std::string& input : c.inputs) fs::copy_file(kCorpus / input, dir / fs::path(input).filename());
+  if (c.setup) c.setup(dir.path());
+  if (c.precious) write_text(dir / c.precious, "precious: must survive a failed run\n");
+  const FolderSnapshot before = test::snapshot(dir.path());
+
+  test::CommandResult r;
+  if (c.max_memory_mib != 0) {
+    const test::MeasuredResult m = test::run_program_measured(c.tool, c.args, dir.path());
+    r = m.result;
+    RecordProperty("peak_kib", std::to_string(m.peak_kib));
+    // Far below what holding the input (or its geometry) whole would take.
+    EXPECT_LT(m.peak_kib, static_cast<long>(c.max_memory_mib) * 1024) << "peak memory in KiB";
+  } else {
+    r = run_program(c.tool, c.args, dir.path());
+  }
+
+  EXPECT_EQ(r.exit_code, c.exit_code) << r.err;
+  if (c.exit_code == kOk) {
+    for (const std::string& file : c.creates) EXPECT_TRUE(fs::is_regular_file(dir / file)) << file << "\n" << r.err;
+    return;
+  }
+  EXPECT_NE(r.err.find(c.where), std::string::npos) << "where: " << c.where << "\n" << r.err;
+  EXPECT_NE(r.err.find(c.what), std::string::npos) << "what: " << c.what << "\n" << r.err;
+  EXPECT_NE(r.err.find("\n  hint: "), std::string::npos) << "no hint:\n" << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  // Nothing created, changed or removed: not the output, not a temporary.
+  EXPECT_TRUE(test::snapshot(dir.path()) == before) << "the run folder changed";
+}
+
+INSTANTIATE_TEST_SUITE_P(BadInput, BadInputCorpus, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<BadInput>& p) { return std::string(p.param.name); });
+
+// The corpus's README lists every case the table runs, and the other way
+// round, so the two cannot drift apart.
+TEST(BadInputCorpusReadme, ListsEveryCase) {
+  const std::string readme = test::read_file(kCorpus / "README.md");
+  for (const BadInput& c : kCases)
+    EXPECT_NE(readme.find("| `" + std::string(c.name) + "` |"), std::string::npos) << c.name << " is not in the README";
+  EXPECT_GE(kCases.size(), 70u);
+}
+
+}  // namespace
+}  // namespace vern
