@@ -1,0 +1,31 @@
+// Repeats that stretch (issue 4): a run of equal parts, or of a repeating
+// pattern of parts (wall window wall window ...), becomes
+//   repeat(axis, tile){ pattern }
+// so that a wider scope gets more tiles, not wider ones, and examples with
+// 3, 4 and 6 windows share one structure that merging can unify.
+//
+// Done on each example's graph before merging. A run is a maximal sequence
+// of k >= 2 copies of a pattern of p <= 4 consecutive parts with the same
+// children and sizes equal within the tolerance; the longest run wins,
+// then the shortest pattern, then the leftmost. Only a run that leaves at
+// most two parts of its split outside (end walls, margins) is folded: a
+// run inside a mixed row is left for merging to line up with other rows
+// (merge.hpp), which finds repeats after unifying. The run's part keeps its
+// length (k tiles) and its relative flag; the tile is the run's length / k,
+// so rounding noise spreads evenly instead of piling up at the end, and
+// the fold is kept only when every original cut stays within the
+// tolerance. A pattern of one part is that part's child; a longer one is a
+// split of the pattern with the parts' lengths as relative sizes. Runs of
+// empty space are joined into one empty part instead. A split left with a
+// single relative part is that part's operation.
+#pragma once
+
+#include "graph/grammar.hpp"
+
+namespace vern {
+
+// Rewrites every split below root whose sizes are literals; returns the new
+// root (nodes interned in g).
+NodeId fold_repeats(Grammar& g, NodeId root, double tolerance);
+
+}  // namespace vern

@@ -1,0 +1,49 @@
+// Which parts of a split keep metres and which share the rest, from the
+// lengths examples of different sizes gave them.
+#include "inverse/size_plan.hpp"
+
+#include <gtest/gtest.h>
+
+namespace vern {
+namespace {
+
+TEST(SizePlan, WallsOfOneThicknessAreAbsoluteTheMiddleShares) {
+  // Plots of 10, 14 and 20 m: 0.6 m walls, bays and a door in 2 : 1.
+  const std::vector<std::vector<double>> lengths = {
+      {0.6, 5.867, 2.933, 0.6}, {0.6, 8.533, 4.267, 0.6}, {0.6, 12.533, 6.267, 0.6}};
+  const auto plan = plan_sizes(lengths, 1e-3);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_TRUE((*plan)[0].absolute && (*plan)[0].fixed);
+  EXPECT_NEAR((*plan)[0].value, 0.6, 1e-12);
+  EXPECT_TRUE((*plan)[3].absolute);
+  EXPECT_FALSE((*plan)[1].absolute);
+  EXPECT_TRUE((*plan)[1].fixed);
+  EXPECT_NEAR((*plan)[1].value / (*plan)[2].value, 2.0, 1e-3);
+}
+
+TEST(SizePlan, SharesThatVaryAreLeftToRanges) {
+  const std::vector<std::vector<double>> lengths = {{1, 3, 6}, {1, 5, 5}, {1, 2, 12}};
+  const auto plan = plan_sizes(lengths, 1e-6);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_TRUE((*plan)[0].absolute);
+  EXPECT_FALSE((*plan)[1].fixed);
+  EXPECT_FALSE((*plan)[2].fixed);
+}
+
+TEST(SizePlan, EqualTotalsTellNothing) {
+  EXPECT_FALSE(plan_sizes({{1, 3, 6}, {2, 2, 6}}, 1e-6).has_value());
+  EXPECT_FALSE(plan_sizes({{1, 3, 6}}, 1e-6).has_value());
+}
+
+TEST(SizePlan, ProportionalSplitsStayRelative) {
+  // Everything scales: no part keeps its length.
+  const auto plan = plan_sizes({{2, 1}, {4, 2}, {6, 3}}, 1e-6);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_FALSE((*plan)[0].absolute);
+  EXPECT_FALSE((*plan)[1].absolute);
+  EXPECT_TRUE((*plan)[0].fixed);
+  EXPECT_NEAR((*plan)[0].value, 2.0 / 3.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace vern
