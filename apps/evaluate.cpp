@@ -28,6 +28,7 @@ CommandLine make_command_line() {
   cl.add({"--examples", "-k", 1, "K", "examples per grammar (default 10)"});
   cl.add({"--variants", "-n", 1, "N", "variants judged per grammar (default 100)"});
   cl.add({"--threads", "-j", 1, "N", "derive with N threads (default: all cores; results are the same)"});
+  cl.add({"--distributions", "", 1, "KIND", "fitted (default) or uniform: how inference writes varying sizes"});
   cl.add({"--keep", "", 1, "FOLDER", "also write each inferred grammar to FOLDER/NAME.grm"});
   cl.add_standard_options();
   cl.set_epilog(
@@ -71,6 +72,13 @@ int run(int argc, char** argv) {
   if (args.has("--variants"))
     options.variants = static_cast<std::uint32_t>(CommandLine::integer(args, "--variants", 1, 100000));
   if (args.has("--threads")) options.threads = static_cast<unsigned>(CommandLine::integer(args, "--threads", 1, 1024));
+  if (args.has("--distributions")) {
+    const std::string kind = args.value("--distributions");
+    if (kind != "fitted" && kind != "uniform")
+      throw Error(ErrorKind::Usage, "evaluate: error: unknown --distributions '" + kind +
+                                        "'\n  hint: fitted (the best of constant, choice, rand, tnormal) or uniform");
+    options.uniform_distributions = kind == "uniform";
+  }
   const bool quiet = args.has("--quiet");
   std::error_code ec;
   if (args.has("--keep") && !fs::is_directory(args.value("--keep"), ec))

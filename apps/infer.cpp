@@ -32,6 +32,9 @@ CommandLine make_command_line() {
   cl.add({"--primitives-out", "", 1, "FILE.obj", "where to write the parts' meshes (default: STYLE.prims.obj)"});
   cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the largest example)"});
   cl.add({"--start", "", 1, "LABEL", "name of the start rule (default: building)"});
+  cl.add({"--distributions", "", 1, "KIND",
+          "fitted (default): each varying size as the best of constant, choice(...), rand, tnormal;\n"
+          "uniform: rand(min, max) over the values seen, as the thesis"});
   cl.add({"--seed", "-s", 1, "S", "seed of the test derivations run on the result (default 1)"});
   cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
   cl.add_standard_options();
@@ -86,6 +89,12 @@ int run(int argc, char** argv) {
   if (args.has("--tolerance")) {
     options.tolerance = CommandLine::number(args, "--tolerance");
     if (!(options.tolerance > 0)) usage("--tolerance must be > 0, got " + args.value("--tolerance"), "for example --tolerance 0.001");
+  }
+  if (args.has("--distributions")) {
+    const std::string kind = args.value("--distributions");
+    if (kind != "fitted" && kind != "uniform")
+      usage("unknown --distributions '" + kind + "'", "fitted (the best of constant, choice, rand, tnormal) or uniform");
+    options.uniform_distributions = kind == "uniform";
   }
   if (args.has("--start")) {
     options.start = args.value("--start");

@@ -23,6 +23,9 @@ std::vector<NodeId> examples(Grammar& g, const std::vector<std::string>& texts) 
   return roots;
 }
 
+// The thesis's min-max ranges, which these tests of unification read off.
+const MergeOptions kUniform{1e-9, true};
+
 const std::string kHouse = "split(z){ ~6 : I(rect) | ~3 : I(triangle) }";
 
 std::string right_garage(double height) {
@@ -41,7 +44,7 @@ TEST(Merge, EqualStructuresMergeSizesIntoRangesAnywhereAndShapesStayAlternatives
   Grammar g;
   const auto roots = examples(g, {right_garage(3), right_garage(3.5),
                                   "split(x){ ~3 : split(z){ ~3.25 : I(rect) | ~5.75 : nil } | ~6 : " + kHouse + " }"});
-  const NodeId merged = merge_examples(g, roots, {});
+  const NodeId merged = merge_examples(g, roots, kUniform);
   const auto* choose = std::get_if<Choose>(&g.op(merged));
   ASSERT_NE(choose, nullptr);
   ASSERT_EQ(choose->options.size(), 2u);
@@ -65,32 +68,70 @@ TEST(Merge, ParentsOfUnifiedChildrenUnifyInTurn) {
   Grammar g;
   const auto roots = examples(g, {"split(x){ ~2 : split(z){ ~5 : I(rect) | ~1 : nil } | ~3 : nil }",
                                   "split(x){ ~4 : split(z){ ~2 : I(rect) | ~4 : nil } | ~1 : nil }"});
-  const NodeId merged = merge_examples(g, roots, {});
+  const NodeId merged = merge_examples(g, roots, kUniform);
   const auto& block = std::get<Split>(g.op(merged));
   EXPECT_EQ(block.parts[0].size.value, Expr::call(Function::Rand, {Expr::number(2), Expr::number(4)}));
   const auto& tower = std::get<Split>(g.op(block.parts[0].child));
   EXPECT_EQ(tower.parts[0].size.value, Expr::call(Function::Rand, {Expr::number(2), Expr::number(5)}));
 }
 
-TEST(Merge, RunsOfEqualPartsBecomeRepeats) {
+TEST(Merge, RunsOfEqualPartsBecomeRepeatsThatStretch) {
   Grammar g;
   const auto roots = examples(g, {"split(x){ ~0.5 : I(wall) | ~2 : I(window) | ~2 : I(window) | ~2 : I(window) | ~0.5 : I(wall) }"});
   const NodeId merged = merge_examples(g, roots, {});
   const auto& s = std::get<Split>(g.op(merged));
   ASSERT_EQ(s.parts.size(), 3u);
   EXPECT_EQ(s.parts[1].size.value.literal(), 6.0);
-  const auto& rep = std::get<RepeatN>(g.op(s.parts[1].child));
-  EXPECT_EQ(rep.count.literal(), 3.0);
+  // repeat(x, 2.01): a size just above the tile, so the 6 m part makes 3
+  // tiles and a wider one more.
+  const auto& rep = std::get<Repeat>(g.op(s.parts[1].child));
+  EXPECT_GT(*rep.size.literal(), 2.0);
+  EXPECT_LE(*rep.size.literal(), 2.02);
   EXPECT_EQ(g.label(std::get<Primitive>(g.op(rep.child)).label), "window");
+}
+
+TEST(Merge, RowsOfDifferentLengthsShareOneStretchingRepeat) {
+  // Facades of 3, 4 and 6 windows between 0.5 m walls: one structure, the
+  // walls absolute, the windows a repeat whose count follows the width.
+  Grammar g;
+  auto facade = [](int windows) {
+    std::string t = "split(x){ ~0.5 : I(wall)";
+    for (int i = 0; i < windows; ++i) t += " | ~2 : I(window)";
+    return t + " | ~0.5 : I(wall) }";
+  };
+  const NodeId merged = merge_examples(g, examples(g, {facade(3), facade(4), facade(6)}), {});
+  const auto& s = std::get<Split>(g.op(merged));
+  ASSERT_EQ(s.parts.size(), 3u);
+  EXPECT_EQ(s.parts[0].size.value.literal(), 0.5);
+  EXPECT_FALSE(s.parts[0].size.relative);
+  EXPECT_TRUE(s.parts[1].size.relative);
+  EXPECT_FALSE(s.parts[2].size.relative);
+  EXPECT_NE(std::get_if<Repeat>(&g.op(s.parts[1].child)), nullptr);
 }
 
 TEST(Merge, WholeRunBecomesTheRepeatItself) {
   Grammar g;
   const auto roots = examples(g, {"split(z){ ~3 : I(floor) | ~3 : I(floor) | ~3 : I(floor) }"});
   const NodeId merged = merge_examples(g, roots, {});
-  const auto* rep = std::get_if<RepeatN>(&g.op(merged));
+  const auto* rep = std::get_if<Repeat>(&g.op(merged));
   ASSERT_NE(rep, nullptr);
-  EXPECT_EQ(rep->count.literal(), 3.0);
+  EXPECT_GT(*rep->size.literal(), 3.0);
+  EXPECT_LT(*rep->size.literal(), 3.03);
+}
+
+TEST(Merge, VaryingSizesGetTheDistributionTheirValuesFit) {
+  // Garage heights that take three values, each in several examples: a
+  // choice of them; with uniform distributions, the min-max range.
+  Grammar g;
+  std::vector<std::string> texts;
+  for (const double h : {3.0, 3.5, 4.0, 3.0, 3.5, 4.0, 3.0, 3.5}) texts.push_back(right_garage(h));
+  const auto roots = examples(g, texts);
+  auto garage_height = [&](const MergeOptions& o) {
+    const NodeId merged = merge_examples(g, roots, o);
+    return std::get<Split>(g.op(std::get<Split>(g.op(merged)).parts[1].child)).parts[0].size.value;
+  };
+  EXPECT_EQ(garage_height({}), Expr::call(Function::Choice, {Expr::number(3), Expr::number(3.5), Expr::number(4)}));
+  EXPECT_EQ(garage_height(kUniform), Expr::call(Function::Rand, {Expr::number(3), Expr::number(4)}));
 }
 
 TEST(Merge, NestedSplitsAlongOneAxisAreFlattened) {
@@ -162,7 +203,7 @@ TEST(RuleNaming, RulesOnlyWhereSharedOrChosenWithNamesFromTheirParts) {
   Grammar g;
   const auto roots = examples(g, {right_garage(3), right_garage(3.5),
                                   "split(x){ ~3 : split(z){ ~3.25 : I(rect) | ~5.75 : nil } | ~6 : " + kHouse + " }"});
-  const NodeId merged = merge_examples(g, roots, {});
+  const NodeId merged = merge_examples(g, roots, kUniform);
   const Grammar named = rules_for(g, merged);
   EXPECT_EQ(write_grammar(named),
             "building --> split(x){ ~6 : rectTriangleZ | ~3 : rectZ } : 2\n"

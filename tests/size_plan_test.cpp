@@ -42,7 +42,8 @@ TEST(SizePlan, ProportionalSplitsStayRelative) {
   EXPECT_FALSE((*plan)[0].absolute);
   EXPECT_FALSE((*plan)[1].absolute);
   EXPECT_TRUE((*plan)[0].fixed);
-  EXPECT_NEAR((*plan)[0].value, 2.0 / 3.0, 1e-12);
+  EXPECT_NEAR((*plan)[0].value, 6.0, 1e-12);  // the widest member's length
+  EXPECT_NEAR((*plan)[1].value, 3.0, 1e-12);
 }
 
 }  // namespace

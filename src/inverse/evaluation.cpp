@@ -47,7 +47,9 @@ Evaluation evaluate_inference(const Grammar& source, const EvaluationOptions& op
   for (std::size_t i = 0; i < derived.size(); ++i) {
     examples.push_back(example_from_derivation(derived[i], "example_" + std::to_string(i + 1)));
   }
-  const Inference learnt = infer(examples, {});
+  InferOptions infer_options;
+  infer_options.uniform_distributions = options.uniform_distributions;
+  const Inference learnt = infer(examples, infer_options);
   e.inferred = description_length(learnt.grammar);
   e.inferred_text = write_grammar(learnt.grammar);
   e.inferred_lines = static_cast<std::size_t>(std::count(e.inferred_text.begin(), e.inferred_text.end(), '\n'));

@@ -17,6 +17,7 @@ struct EvaluationOptions {
   std::uint32_t examples = 10;        // k: derived with seeds 1..k
   std::uint32_t variants = 100;       // n: derived with seeds 1001.. from both grammars
   unsigned threads = 0;               // 0: one per core
+  bool uniform_distributions = false; // infer --distributions uniform
 };
 
 struct Evaluation {

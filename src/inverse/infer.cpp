@@ -25,6 +25,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   }
   MergeOptions merge;
   merge.tolerance = out.tolerance;
+  merge.uniform_distributions = options.uniform_distributions;
   NodeId root = merge_examples(graph, roots, merge);
   // Rounding may move a number by a quarter of the smallest example's
   // tolerance: every example then still matches within its own tolerance

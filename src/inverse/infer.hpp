@@ -22,6 +22,9 @@ struct InferOptions {
   // 1e-6 of the largest example's extent (see default_tolerance).
   double tolerance = 0;
   std::string start = "building";
+  // `--distributions uniform`: varying sizes as rand(min, max), the
+  // thesis's ranges, instead of fitted distributions.
+  bool uniform_distributions = false;
   // Called after each example is split: (done, total).
   std::function<void(std::size_t, std::size_t)> progress;
 };

@@ -1,9 +1,14 @@
 #include "inverse/merge.hpp"
 
 #include "inverse/generalise.hpp"
+#include "inverse/fit_distribution.hpp"
+#include "inverse/repeat_folding.hpp"
+#include "inverse/size_plan.hpp"
 
 #include <algorithm>
 #include <map>
+#include <optional>
+#include <string_view>
 #include <unordered_map>
 
 #include "graph/overload.hpp"
@@ -30,6 +35,57 @@ Expr range_expr(Range r, double tolerance) {
 
 namespace {
 
+// The values that merging's ranges stand for: per node built with ranges,
+// per split part (a repeat: its tile size), each value with the number of
+// times the examples use it. Kept across rounds of unification, keyed by
+// the built node, so that a range widened again still knows its values.
+// An empty list means unknown: the range joined values that were not kept.
+using SampleBook = std::unordered_map<NodeId, std::vector<std::vector<Observation>>>;
+
+// The child slots of an operation, to rewrite its children in place.
+std::vector<NodeId*> child_slots(Operation& op) {
+  std::vector<NodeId*> out;
+  std::visit(Overload{
+                 [&](Split& s) {
+                   for (auto& p : s.parts) out.push_back(&p.child);
+                 },
+                 [&](Repeat& r) { out.push_back(&r.child); },
+                 [&](RepeatN& r) { out.push_back(&r.child); },
+                 [&](Choose& c) {
+                   for (auto& o : c.options) out.push_back(&o.child);
+                 },
+                 [&](Translate& t) { out.push_back(&t.child); },
+                 [&](Scale& s) { out.push_back(&s.child); },
+                 [&](Rotate& r) { out.push_back(&r.child); },
+                 [&](Comp& c) {
+                   for (auto& p : c.parts) out.push_back(&p.child);
+                 },
+                 [](auto&) {},
+             },
+             op);
+  return out;
+}
+
+// In how many examples each node occurs: a value seen in three examples
+// is three observations of the style, while one example's six equal
+// windows are one decision, observed once.
+std::vector<double> example_counts(const Grammar& g, const std::vector<NodeId>& roots) {
+  std::vector<double> counts(g.node_count(), 0.0);
+  std::vector<std::uint32_t> seen_in(g.node_count(), 0);  // 1 + the last example that reached it
+  for (std::uint32_t e = 0; e < roots.size(); ++e) {
+    std::vector<NodeId> stack{roots[e]};
+    while (!stack.empty()) {
+      const NodeId id = stack.back();
+      stack.pop_back();
+      if (seen_in[id] == e + 1) continue;
+      seen_in[id] = e + 1;
+      counts[id] += 1;
+      for (const NodeId c : node_children(g.op(id))) stack.push_back(c);
+    }
+  }
+  return counts;
+}
+
 // Unifies nodes of equal structure anywhere below a root (thesis 10.3):
 // the same operation, axis, relative flags, counts and children (after
 // unification), whatever their sizes. Each group becomes one node whose
@@ -38,7 +94,10 @@ namespace {
 // names its children's groups, which are settled before it.
 class Unifier {
  public:
-  Unifier(Grammar& g, const MergeOptions& o) : g_(g), opt_(o) {}
+  // counts: in how many examples each node occurs (example_counts); a
+  // node beyond it counts once.
+  Unifier(Grammar& g, const MergeOptions& o, SampleBook& book, const std::vector<double>& counts)
+      : g_(g), opt_(o), book_(book), counts_(counts), group_of_(g.node_count(), kNoGroup) {}
 
   NodeId run(NodeId root) {
     visit(root);
@@ -48,11 +107,36 @@ class Unifier {
   }
 
  private:
+  static constexpr std::size_t kNoGroup = static_cast<std::size_t>(-1);
+  // The form every plain choose shares: no operation's form has this id.
+  static constexpr std::size_t kChooseForm = static_cast<std::size_t>(-1);
+
   struct Group {
-    NodeId first;                     // a member: the operation's form
+    NodeId first = 0;                 // a member: the operation's form
     std::vector<std::size_t> children;  // child groups, in order
-    std::vector<Range> ranges;        // per split part, over the members
+    std::vector<Range> ranges;        // per split part (a repeat: its tile size), over the members
     std::vector<double> weights;      // per child, for chooses: summed over the members
+    // The values behind each range, and whether every member's are known.
+    std::vector<std::vector<Observation>> samples;
+    std::vector<bool> sampled;
+    // Members whose sizes are all literals: their lengths, one row each.
+    std::vector<std::vector<double>> lengths;
+    std::size_t members = 0;
+  };
+
+  // What makes nodes one group: their form (the operation with its sizes
+  // and children blanked, numbered as first seen) and their child groups.
+  struct Key {
+    std::size_t form = 0;
+    std::vector<std::size_t> children;
+    friend bool operator==(const Key&, const Key&) = default;
+  };
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+      std::size_t h = hash_combine(k.children.size(), k.form);
+      for (std::size_t c : k.children) h = hash_combine(h, c);
+      return h;
+    }
   };
 
   // A choose without conditions and with literal priorities: what merging
@@ -66,11 +150,12 @@ class Unifier {
   void visit_choose(NodeId id, const Choose& c, const std::vector<std::size_t>& children) {
     std::map<std::size_t, double> weight;  // child group -> weight; ordered, so the key is canonical
     for (std::size_t i = 0; i < children.size(); ++i) weight[children[i]] += *c.options[i].priority.literal();
-    std::string key = "choose";
-    for (const auto& [child, w] : weight) key += "," + std::to_string(child);
+    Key key{kChooseForm, {}};
+    for (const auto& [child, w] : weight) key.children.push_back(child);
     auto [it, fresh] = group_by_key_.emplace(std::move(key), groups_.size());
     if (fresh) {
-      Group group{id, {}, {}, {}};
+      Group group;
+      group.first = id;
       for (const auto& [child, w] : weight) {
         group.children.push_back(child);
         group.weights.push_back(0);
@@ -79,43 +164,89 @@ class Unifier {
     }
     Group& group = groups_[it->second];
     for (std::size_t k = 0; k < group.children.size(); ++k) group.weights[k] += weight[group.children[k]];
-    group_of_.emplace(id, it->second);
+    group_of_[id] = it->second;
   }
 
   // Post-order: children's groups exist before their parents' keys.
   void visit(NodeId id) {
-    if (group_of_.count(id)) return;
-    const Operation& op = g_.op(id);
+    if (group_of_[id] != kNoGroup) return;
+    const Operation& op = g_.op(id);  // visiting children adds no nodes: stays valid
     std::vector<std::size_t> children;
     for (NodeId c : node_children(op)) {
       visit(c);
-      children.push_back(group_of_.at(c));
+      children.push_back(group_of_[c]);
     }
     if (const auto* c = std::get_if<Choose>(&op); c && plain(*c)) {
       visit_choose(id, *c, children);
       return;
     }
-    std::string key = structure_key(op, children);
-    auto [it, fresh] = group_by_key_.emplace(std::move(key), groups_.size());
-    if (fresh) groups_.push_back({id, children, {}, {}});
-    Group& group = groups_[it->second];
-    if (const auto* s = std::get_if<Split>(&op)) {
-      // Each part's range starts at the first member's own value.
-      const bool first_member = group.ranges.empty();
-      if (first_member) group.ranges.resize(s->parts.size());
-      for (std::size_t i = 0; i < s->parts.size(); ++i) {
-        const auto r = literal_range(s->parts[i].size.value);
-        if (!r) continue;  // non-literal sizes are part of the key
-        Range& range = group.ranges[i];
-        range = first_member ? *r : Range{std::min(range.lo, r->lo), std::max(range.hi, r->hi)};
-      }
+    auto [it, fresh] = group_by_key_.emplace(Key{form_id(op), children}, groups_.size());
+    if (fresh) {
+      groups_.emplace_back();
+      groups_.back().first = id;
+      groups_.back().children = std::move(children);
     }
-    group_of_.emplace(id, it->second);
+    Group& group = groups_[it->second];
+    std::vector<const Expr*> sizes;  // what ranges: split part sizes, a repeat's tile size
+    if (const auto* s = std::get_if<Split>(&op)) {
+      for (const auto& p : s->parts) sizes.push_back(&p.size.value);
+    } else if (const auto* r = std::get_if<Repeat>(&op)) {
+      sizes.push_back(&r->size);
+    }
+    if (!sizes.empty()) add_member(group, id, sizes);
+    group_of_[id] = it->second;
   }
 
-  // Everything that must agree for two nodes to be one, sizes excepted:
-  // the operation with its numbers blanked, and the child groups.
-  std::string structure_key(const Operation& op, const std::vector<std::size_t>& children) const {
+  // Widens the group's ranges by a member's sizes and notes their values.
+  void add_member(Group& group, NodeId id, const std::vector<const Expr*>& sizes) {
+    // Each range starts at the first member's own value.
+    const bool first_member = group.ranges.empty();
+    if (first_member) {
+      group.ranges.resize(sizes.size());
+      group.samples.resize(sizes.size());
+      group.sampled.assign(sizes.size(), true);
+    }
+    ++group.members;
+    const auto booked = book_.find(id);
+    std::vector<double> row;
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+      const auto r = literal_range(*sizes[i]);
+      if (!r) continue;  // non-literal sizes are part of the key
+      Range& range = group.ranges[i];
+      range = first_member ? *r : Range{std::min(range.lo, r->lo), std::max(range.hi, r->hi)};
+      if (booked != book_.end() && i < booked->second.size() && !booked->second[i].empty()) {
+        const auto& values = booked->second[i];
+        group.samples[i].insert(group.samples[i].end(), values.begin(), values.end());
+      } else if (r->lo == r->hi) {
+        group.samples[i].push_back({r->lo, id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0});
+      } else {
+        group.sampled[i] = false;  // a range whose values were not kept
+      }
+      if (r->lo == r->hi) row.push_back(r->lo);
+    }
+    if (row.size() == sizes.size()) group.lengths.push_back(std::move(row));
+  }
+
+  // Everything that must agree for two nodes to be one, sizes and children
+  // excepted: the operation with its numbers blanked. Two blank forms with
+  // one hash may still differ: each distinct form gets its own id by
+  // comparing with the forms seen under that hash.
+  std::size_t form_id(const Operation& op) {
+    // The common form, a split along x, y or z whose sizes are all literal
+    // or literal ranges, is named by its axis and relative flags alone,
+    // without copying the split. (Its blank form cannot equal any other
+    // node's: another has a non-literal axis or size, which stays.)
+    if (const auto* s = std::get_if<Split>(&op)) {
+      const ExprNode& axis = s->axis.node(s->axis.root());
+      if (s->axis.nodes().size() == 1 && axis == ExprNode{.kind = ExprKind::Axis, .op = axis.op} &&
+          std::all_of(s->parts.begin(), s->parts.end(), [](const SplitPart& p) { return literal_range(p.size.value); })) {
+        std::vector<std::uint8_t> key{axis.op};
+        for (const auto& p : s->parts) key.push_back(p.size.relative ? 1 : 0);
+        auto [it, fresh] = split_forms_.try_emplace(std::move(key), forms_);
+        if (fresh) ++forms_;
+        return it->second;
+      }
+    }
     Operation blank = op;
     if (auto* s = std::get_if<Split>(&blank)) {
       for (auto& p : s->parts) {
@@ -123,46 +254,17 @@ class Unifier {
         p.child = 0;
       }
     } else {
+      // A repeat's literal tile size ranges like a split's sizes.
+      if (auto* r = std::get_if<Repeat>(&blank); r && literal_range(r->size)) r->size = Expr::number(0);
       for (auto* child : child_slots(blank)) *child = 0;
     }
-    std::string key = form_id(blank);
-    for (std::size_t c : children) key += "," + std::to_string(c);
-    return key;
+    auto& seen = forms_by_hash_[shallow_hash(blank)];
+    for (const auto& [form, id] : seen)
+      if (form == blank) return id;
+    seen.emplace_back(std::move(blank), forms_++);
+    return forms_ - 1;
   }
 
-  // Two blank forms with one hash may still differ: give each distinct form
-  // its own id by comparing with the forms seen under that hash.
-  std::string form_id(const Operation& form) const {
-    const std::size_t h = shallow_hash(form);
-    auto& seen = forms_by_hash_[h];
-    for (std::size_t i = 0; i < seen.size(); ++i)
-      if (seen[i] == form) return std::to_string(h) + "." + std::to_string(i);
-    seen.push_back(form);
-    return std::to_string(h) + "." + std::to_string(seen.size() - 1);
-  }
-
-  static std::vector<NodeId*> child_slots(Operation& op) {
-    std::vector<NodeId*> out;
-    std::visit(Overload{
-                   [&](Split& s) {
-                     for (auto& p : s.parts) out.push_back(&p.child);
-                   },
-                   [&](Repeat& r) { out.push_back(&r.child); },
-                   [&](RepeatN& r) { out.push_back(&r.child); },
-                   [&](Choose& c) {
-                     for (auto& o : c.options) out.push_back(&o.child);
-                   },
-                   [&](Translate& t) { out.push_back(&t.child); },
-                   [&](Scale& s) { out.push_back(&s.child); },
-                   [&](Rotate& r) { out.push_back(&r.child); },
-                   [&](Comp& c) {
-                     for (auto& p : c.parts) out.push_back(&p.child);
-                   },
-                   [](auto&) {},
-               },
-               op);
-    return out;
-  }
 
   NodeId build(const Group& group, const std::vector<NodeId>& built) {
     if (!group.weights.empty()) {
@@ -175,55 +277,93 @@ class Unifier {
     Operation op = g_.op(group.first);
     auto slots = child_slots(op);
     for (std::size_t i = 0; i < slots.size(); ++i) *slots[i] = built[group.children[i]];
+    std::vector<std::vector<Observation>> kept(group.ranges.size());  // the values behind ranges built
+    auto ranged = [&](std::size_t i) {
+      if (group.sampled[i]) kept[i] = group.samples[i];
+      return range_expr(group.ranges[i], opt_.tolerance);
+    };
     if (auto* s = std::get_if<Split>(&op)) {
-      for (std::size_t i = 0; i < s->parts.size() && i < group.ranges.size(); ++i)
-        if (literal_range(s->parts[i].size.value)) s->parts[i].size.value = range_expr(group.ranges[i], opt_.tolerance);
+      // Splits of different lengths: parts of one length are absolute.
+      std::optional<std::vector<PartPlan>> plan;
+      if (group.lengths.size() == group.members) plan = plan_sizes(group.lengths, opt_.tolerance);
+      for (std::size_t i = 0; i < s->parts.size() && i < group.ranges.size(); ++i) {
+        if (!literal_range(s->parts[i].size.value)) continue;
+        if (plan && (*plan)[i].fixed) {
+          s->parts[i].size = {Expr::number((*plan)[i].value), !(*plan)[i].absolute};
+        } else {
+          s->parts[i].size.value = ranged(i);
+        }
+      }
+    } else if (auto* r = std::get_if<Repeat>(&op); r && !group.ranges.empty() && literal_range(r->size)) {
+      r->size = ranged(0);
     }
-    return g_.intern({std::move(op), {}});
+    const NodeId out = g_.intern({std::move(op), {}});
+    // The group's samples already hold its members' (a member built in an
+    // earlier round brings its book entry): replace, never add, or a node
+    // that unifies with itself round after round would count its values
+    // again each time.
+    if (!kept.empty()) book_[out] = std::move(kept);
+    return out;
   }
 
   Grammar& g_;
   const MergeOptions& opt_;
+  SampleBook& book_;
+  const std::vector<double>& counts_;  // by node id: examples it occurs in
   std::vector<Group> groups_;
-  std::unordered_map<std::string, std::size_t> group_by_key_;
-  std::unordered_map<NodeId, std::size_t> group_of_;
-  mutable std::unordered_map<std::size_t, std::vector<Operation>> forms_by_hash_;
+  std::unordered_map<Key, std::size_t, KeyHash> group_by_key_;
+  std::vector<std::size_t> group_of_;  // by node id; kNoGroup until visited
+  std::unordered_map<std::size_t, std::vector<std::pair<Operation, std::size_t>>> forms_by_hash_;
+  struct BytesHash {
+    std::size_t operator()(const std::vector<std::uint8_t>& v) const {
+      return std::hash<std::string_view>{}(std::string_view(reinterpret_cast<const char*>(v.data()), v.size()));
+    }
+  };
+  std::unordered_map<std::vector<std::uint8_t>, std::size_t, BytesHash> split_forms_;  // axis, relative flags
+  std::size_t forms_ = 0;
 };
 
 // ---- simplification ----
 
+// Simplifies the graph below a node. A node that simplifies to itself (the
+// common case: most of a building has nothing to flatten or repeat) is
+// recognised without copying it, so the graph is not rebuilt: that needs
+// the graph interned (as inference builds it), since intern would return
+// the node itself.
 class Simplifier {
  public:
-  Simplifier(Grammar& g, const MergeOptions& o) : g_(g), opt_(o) {}
+  Simplifier(Grammar& g, const MergeOptions& o) : g_(g), opt_(o), memo_(g.node_count(), kNotYet) {}
 
   NodeId run(NodeId id) {
-    if (auto it = memo_.find(id); it != memo_.end()) return it->second;
+    if (id >= memo_.size()) memo_.resize(g_.node_count(), kNotYet);
+    if (memo_[id] != kNotYet) return memo_[id];
     const NodeId out = simplify(id);
-    memo_.emplace(id, out);
+    memo_[id] = out;
     return out;
   }
 
  private:
+  static constexpr NodeId kNotYet = static_cast<NodeId>(-1);
+
   NodeId simplify(NodeId id) {
-    const Operation op = g_.op(id);  // a copy: interning below may grow the arena
-    if (const auto* s = std::get_if<Split>(&op)) return simplify_split(*s);
-    if (const auto* c = std::get_if<Choose>(&op)) return simplify_choose(*c);
-    if (const auto* r = std::get_if<RepeatN>(&op)) {
-      RepeatN m = *r;
-      m.child = run(r->child);
-      return g_.intern({std::move(m), {}});
-    }
-    if (const auto* r = std::get_if<Repeat>(&op)) {
-      Repeat m = *r;
-      m.child = run(r->child);
-      return g_.intern({std::move(m), {}});
-    }
-    if (const auto* r = std::get_if<Rotate>(&op)) {
-      Rotate m = *r;
-      m.child = run(r->child);
-      return g_.intern({std::move(m), {}});
-    }
+    if (std::holds_alternative<Split>(g_.op(id))) return simplify_split(id);
+    if (std::holds_alternative<Choose>(g_.op(id))) return simplify_choose(Choose(std::get<Choose>(g_.op(id))));
+    if (auto out = one_child<RepeatN>(id)) return *out;
+    if (auto out = one_child<Repeat>(id)) return *out;
+    if (auto out = one_child<Rotate>(id)) return *out;
     return id;
+  }
+
+  // An operation of type Op with one child: a new node only if the child
+  // changed.
+  template <class Op>
+  std::optional<NodeId> one_child(NodeId id) {
+    if (!std::holds_alternative<Op>(g_.op(id))) return std::nullopt;
+    const NodeId child = run(std::get<Op>(g_.op(id)).child);
+    if (child == std::get<Op>(g_.op(id)).child) return id;
+    Op m = std::get<Op>(g_.op(id));  // after run: it may have moved the arena
+    m.child = child;
+    return g_.intern({std::move(m), {}});
   }
 
   bool same_size(const Size& a, const Size& b) const {
@@ -263,14 +403,54 @@ class Simplifier {
     out.push_back(part);
   }
 
-  NodeId simplify_split(const Split& s) {
+  // The literal axis of a split, if it has one.
+  static std::optional<Axis> literal_axis(const Split& s) {
+    if (s.axis.node(s.axis.root()).kind != ExprKind::Axis) return std::nullopt;
+    return static_cast<Axis>(s.axis.node(s.axis.root()).op);
+  }
+
+  // Would flatten_into take the inner split's parts in place of this part?
+  bool flattens(const SplitPart& part, const Expr& axis) const {
+    const auto* inner = std::get_if<Split>(&g_.op(part.child));
+    if (!part.size.value.literal() || !inner || inner->axis != axis) return false;
+    double total = 0;
+    for (const auto& q : inner->parts) {
+      const auto v = q.size.value.literal();
+      if (!q.size.relative || !v) return false;
+      total += *v;
+    }
+    return total > 0;
+  }
+
+  NodeId simplify_split(NodeId id) {
+    // Children first: simplifying them may add nodes, which moves the arena.
+    std::vector<NodeId> children = node_children(g_.op(id));
+    bool same = true;
+    for (NodeId& c : children) {
+      const NodeId simplified = run(c);
+      same = same && simplified == c;
+      c = simplified;
+    }
+    if (same) {
+      // Unchanged unless a part flattens, parts repeat, or one part is all.
+      const Split& s = std::get<Split>(g_.op(id));
+      const bool has_axis = literal_axis(s).has_value();
+      bool changes = s.parts.size() == 1 && s.parts[0].size.relative;
+      for (std::size_t i = 0; i < s.parts.size() && !changes; ++i) {
+        changes = flattens(s.parts[i], s.axis) ||
+                  (has_axis && i + 1 < s.parts.size() && s.parts[i].size.value.literal() &&
+                   s.parts[i + 1].child == s.parts[i].child && same_size(s.parts[i + 1].size, s.parts[i].size));
+      }
+      if (!changes) return id;
+    }
+    const Split s = std::get<Split>(g_.op(id));  // a copy: interning below may grow the arena
     std::vector<SplitPart> parts;
-    for (const auto& p : s.parts) flatten_into(parts, {p.size, run(p.child)}, s.axis);
+    for (std::size_t i = 0; i < s.parts.size(); ++i) flatten_into(parts, {s.parts[i].size, children[i]}, s.axis);
     const Axis* axis = nullptr;
-    Axis literal_axis{};
-    if (s.axis.node(s.axis.root()).kind == ExprKind::Axis) {
-      literal_axis = static_cast<Axis>(s.axis.node(s.axis.root()).op);
-      axis = &literal_axis;
+    Axis literal{};
+    if (const auto a = literal_axis(s)) {
+      literal = *a;
+      axis = &literal;
     }
     std::vector<SplitPart> out;
     for (std::size_t i = 0; i < parts.size();) {
@@ -279,13 +459,18 @@ class Simplifier {
       while (axis && lit && j < parts.size() && parts[j].child == parts[i].child && same_size(parts[j].size, parts[i].size))
         ++j;
       const std::size_t run_length = j - i;
+      // The run's own length, not the first part's times the count: parts
+      // equal within the tolerance would otherwise shift every part after
+      // the run by up to count times the tolerance (found by fuzzing).
+      double run_total = 0;
+      for (std::size_t k = i; run_length >= 2 && k < j; ++k) run_total += parts[k].size.value.literal().value_or(*lit);
       if (run_length >= 2 && !std::holds_alternative<Nil>(g_.op(parts[i].child))) {
         RepeatN rep{Expr::axis(*axis), Expr::number(static_cast<double>(run_length)), parts[i].child};
         const NodeId tiles = g_.intern({std::move(rep), {}});
-        out.push_back({{Expr::number(*lit * static_cast<double>(run_length)), parts[i].size.relative}, tiles});
+        out.push_back({{Expr::number(run_total), parts[i].size.relative}, tiles});
       } else if (run_length >= 2) {
         // Adjacent empty parts are one empty part.
-        out.push_back({{Expr::number(*lit * static_cast<double>(run_length)), parts[i].size.relative}, parts[i].child});
+        out.push_back({{Expr::number(run_total), parts[i].size.relative}, parts[i].child});
       } else {
         out.push_back(parts[i]);
       }
@@ -309,14 +494,11 @@ class Simplifier {
       for (auto& o : m.options) o.child = run(o.child);
       return g_.intern({std::move(m), {}});
     }
+    std::unordered_map<NodeId, std::size_t> where;  // child -> its option: a choose may have thousands
     auto add = [&](NodeId child, double priority) {
-      for (auto& [n, p] : options) {
-        if (n == child) {
-          p += priority;
-          return;
-        }
-      }
-      options.emplace_back(child, priority);
+      auto [it, fresh] = where.try_emplace(child, options.size());
+      if (fresh) options.emplace_back(child, priority);
+      else options[it->second].second += priority;
     };
     for (const auto& o : c.options) {
       const NodeId child = run(o.child);
@@ -343,22 +525,86 @@ class Simplifier {
 
   Grammar& g_;
   const MergeOptions& opt_;
+  std::vector<NodeId> memo_;  // by node id: what it simplified to, or kNotYet
+};
+
+}  // namespace
+
+namespace {
+
+// Step 4: each range whose values were kept becomes the distribution they
+// fit best. Rebuilds the graph below root (memoised: a DAG).
+class Fitter {
+ public:
+  Fitter(Grammar& g, const MergeOptions& o, const SampleBook& book) : g_(g), opt_(o), book_(book) {}
+
+  NodeId run(NodeId id) {
+    if (auto it = memo_.find(id); it != memo_.end()) return it->second;
+    Operation op = g_.op(id);  // a copy: interning below may grow the arena
+    bool changed = false;
+    for (NodeId* child : child_slots(op)) {
+      const NodeId c = run(*child);
+      changed = changed || c != *child;
+      *child = c;
+    }
+    if (const auto booked = book_.find(id); booked != book_.end()) {
+      const auto& samples = booked->second;
+      auto fitted = [&](Expr& e, std::size_t i) {
+        if (i >= samples.size() || samples[i].empty()) return;
+        const auto r = literal_range(e);
+        if (!r || r->lo == r->hi) return;
+        // The values kept must be the range's own: its ends among them.
+        double lo = samples[i][0].value, hi = lo;
+        for (const Observation& o : samples[i]) {
+          lo = std::min(lo, o.value);
+          hi = std::max(hi, o.value);
+        }
+        if (std::abs(lo - r->lo) > opt_.tolerance || std::abs(hi - r->hi) > opt_.tolerance) return;
+        FitOptions f;
+        f.resolution = opt_.tolerance;
+        // Sizes stay positive, and a part seen in every example never
+        // vanishes: a zero length would drop it from the structure.
+        f.floor = r->lo / 2;
+        f.uniform_only = opt_.uniform_distributions;
+        e = distribution_expr(fit_distribution(samples[i], f));
+        changed = true;
+      };
+      if (auto* s = std::get_if<Split>(&op)) {
+        for (std::size_t i = 0; i < s->parts.size(); ++i) fitted(s->parts[i].size.value, i);
+      } else if (auto* r = std::get_if<Repeat>(&op)) {
+        fitted(r->size, 0);
+      }
+    }
+    const NodeId out = changed ? g_.intern({std::move(op), g_.node(id).loc}) : id;
+    memo_.emplace(id, out);
+    return out;
+  }
+
+ private:
+  Grammar& g_;
+  const MergeOptions& opt_;
+  const SampleBook& book_;
   std::unordered_map<NodeId, NodeId> memo_;
 };
 
 }  // namespace
 
 NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeOptions& options) {
+  std::vector<NodeId> folded;
+  for (NodeId r : roots) folded.push_back(fold_repeats(g, r, options.tolerance));
   Choose all;
-  for (NodeId r : roots) all.options.push_back({Expr{}, Expr::number(1.0), r});
+  for (NodeId r : folded) all.options.push_back({Expr{}, Expr::number(1.0), r});
   const NodeId examples = g.intern({std::move(all), {}});
   // One example is reproduced as it is: ranges come only from variation
   // across examples, never from one building's own parts.
   if (roots.size() == 1) return Simplifier(g, options).run(examples);
-  // Repeats are found at the end, once alike parts line up: finding them in
-  // each example first would give rows of different fillings different
-  // shapes (a | a | b is a repeat and a part, a | b | a is three parts).
-  NodeId merged = Unifier(g, options).run(examples);
+  // Runs inside mixed rows are found at the end, once alike parts line up:
+  // finding them in each example first would give rows of different
+  // fillings different shapes (a | a | b is a repeat and a part, a | b | a
+  // is three parts). Only runs that fill a whole split are folded first.
+  SampleBook book;
+  const std::vector<double> counts = example_counts(g, folded);
+  NodeId merged = Unifier(g, options, book, counts).run(examples);
   // Free combinations make parents alike, which unify, which may show more
   // free combinations above: repeat until nothing changes (a few rounds:
   // each round generalises at least one frame, and frames only merge).
@@ -366,8 +612,9 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
     bool changed = false;
     merged = generalise_free_parts(g, merged, options, changed);
     if (!changed) break;
-    merged = Unifier(g, options).run(merged);
+    merged = Unifier(g, options, book, counts).run(merged);
   }
+  merged = Fitter(g, options, book).run(merged);
   return Simplifier(g, options).run(merged);
 }
 

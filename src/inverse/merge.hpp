@@ -12,8 +12,18 @@
 //      the same alternatives are one, their weights added;
 //   3. makes places that combine freely choices (generalise.hpp), which
 //      unifies more; 2 and 3 repeat until nothing changes;
-//   4. adds the priorities of alternatives that became one (10.4), turns
+//   4. writes each varying size as the distribution its values fit best
+//      (fit_distribution.hpp): the values each range stands for are kept
+//      through steps 2 and 3, counted once per time an example uses them;
+//   5. adds the priorities of alternatives that became one (10.4), turns
 //      runs of equal parts into repeats and flattens nested splits.
+//
+// Before all this, each example's runs of equal parts and repeating
+// patterns that fill (almost) a whole split become stretching repeats
+// (repeat_folding.hpp), so rows of 3, 4 and 6 windows have one structure.
+// When unified splits span different lengths, parts of one length in all
+// of them become absolute sizes and the others share the rest
+// (size_plan.hpp): a wider plot keeps its 0.6 m walls.
 //
 // Steps 2 and 3 need two examples or more: one example is reproduced
 // exactly as it is, since ranges should come from variation across
@@ -35,6 +45,9 @@ struct MergeOptions {
   // Sizes that differ by at most this (metres, or relative units, which
   // inference writes as metres) are the same size.
   double tolerance = 1e-9;
+  // Varying sizes as the thesis wrote them, rand(min, max), instead of the
+  // distribution the values fit best (fit_distribution.hpp).
+  bool uniform_distributions = false;
 };
 
 // Returns the merged root; adds nodes to g (interned). roots must not be

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "graph/structural.hpp"
+#include "inverse/tidy_numbers.hpp"
 
 namespace vern {
 
@@ -113,7 +114,15 @@ class Folder {
       }
       body = g_.intern({std::move(s), {}});
     }
-    const NodeId tiles = g_.intern({Repeat{axis, Expr::number(tile), body}, {}});
+    // The written tile size: any size in (L / n, L / (n - 1)] makes n tiles
+    // on L, and a size exactly L / n would make n + 1 once rounding nudges
+    // L up. So the shortest decimal a hair above the tile, within a
+    // percent (and a half tile count) of it: 2.9 for 2.8999997, not the
+    // noise.
+    const double n = static_cast<double>(r.copies);
+    const double low = tile * (1 + 1e-5), high = tile * (1 + std::min(0.01, 0.5 / n));
+    const double written = shortest_decimal((low + high) / 2, (high - low) / 2);
+    const NodeId tiles = g_.intern({Repeat{axis, Expr::number(written), body}, {}});
     return SplitPart{{Expr::number(total), parts[r.start].size.relative}, tiles};
   }
 
@@ -136,11 +145,12 @@ class Folder {
         }
       }
       parts = std::move(joined);
-      // Only a run that is (almost) the whole split is folded: the walls or
-      // margins at its ends may differ. A run inside a mixed row (a | a | b)
+      // Only a run of three parts or more that is (almost) the whole split
+      // is folded: the walls or margins at its ends may differ. A run
+      // inside a mixed row (a | a | b)
       // is left to merging, which lines alike rows up first and finds what
       // combines freely there.
-      if (const auto r = best_run(parts); r && r->parts() + 2 >= parts.size()) {
+      if (const auto r = best_run(parts); r && r->parts() >= 3 && r->parts() + 2 >= parts.size()) {
         if (const std::optional<SplitPart> folded = fold(s.axis, parts, *r)) {
           parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(r->start),
                       parts.begin() + static_cast<std::ptrdiff_t>(r->start + r->parts()));

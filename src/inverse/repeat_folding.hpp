@@ -7,12 +7,14 @@
 // Done on each example's graph before merging. A run is a maximal sequence
 // of k >= 2 copies of a pattern of p <= 4 consecutive parts with the same
 // children and sizes equal within the tolerance; the longest run wins,
-// then the shortest pattern, then the leftmost. Only a run that leaves at
-// most two parts of its split outside (end walls, margins) is folded: a
+// then the shortest pattern, then the leftmost. Only a run of three parts
+// or more that leaves at most two parts of its split outside (end walls, margins) is folded: a
 // run inside a mixed row is left for merging to line up with other rows
 // (merge.hpp), which finds repeats after unifying. The run's part keeps its
 // length (k tiles) and its relative flag; the tile is the run's length / k,
-// so rounding noise spreads evenly instead of piling up at the end, and
+// so rounding noise spreads evenly instead of piling up at the end (the
+// size written is the shortest decimal just above it, which still makes k
+// tiles on that length), and
 // the fold is kept only when every original cut stays within the
 // tolerance. A pattern of one part is that part's child; a longer one is a
 // split of the pattern with the parts' lengths as relative sizes. Runs of

@@ -53,15 +53,20 @@ std::optional<std::vector<PartPlan>> plan_sizes(const std::vector<std::vector<do
     }
     plan[i].value = share;
   }
+  // Shares are written as the widest member's lengths: rounding a weight
+  // then moves a part by metres, not by a fraction of the whole.
   for (PartPlan& p : plan) {
-    if (!p.absolute) p.fixed = shares_fixed;
+    if (!p.absolute) {
+      p.fixed = shares_fixed;
+      p.value *= rest(widest);
+    }
   }
   // The absolute lengths are means: every member's absolute parts, and
   // with fixed shares its relative ones, must still land within tolerance.
   for (std::size_t m = 0; m < lengths.size(); ++m) {
     double weights = 0;  // the ranged parts' weights: this member's own lengths
     for (std::size_t i = 0; i < parts; ++i) weights += plan[i].absolute || plan[i].fixed ? 0.0 : lengths[m][i];
-    double fixed_shares = 0;
+    double fixed_shares = 0;  // the fixed relative parts' weights
     for (std::size_t i = 0; i < parts; ++i) fixed_shares += !plan[i].absolute && plan[i].fixed ? plan[i].value : 0.0;
     double at = 0, expected = 0;
     for (std::size_t i = 0; i < parts; ++i) {

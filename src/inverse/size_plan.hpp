@@ -10,7 +10,8 @@
 //     absolute, at that length;
 //   - the other parts are relative; when each one's share of what the
 //     absolute parts leave is the same in every member, it is that share
-//     (fixed); when not, its size ranges over its lengths (the caller
+//     (fixed; written as the widest member's length, a weight in metres,
+//     so that rounding it moves the part by metres, not by a fraction); when not, its size ranges over its lengths (the caller
 //     writes the range or fitted distribution), which still derives every
 //     member exactly: weights equal to a member's lengths split what is
 //     left into exactly those lengths.

@@ -1,16 +1,25 @@
 #include "inverse/tidy_numbers.hpp"
 
+#include <array>
 #include <cmath>
-#include <unordered_map>
+#include <optional>
 
 #include "inverse/merge.hpp"
 
 namespace vern {
 
+namespace {
+
+// 10^0 .. 10^17, exact as doubles (what std::pow(10, d) gives, without the
+// call: tidying calls this for every number of a million-part grammar).
+constexpr std::array<double, 18> kPowersOfTen = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,
+                                                 1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17};
+
+}  // namespace
+
 double shortest_decimal(double v, double tolerance, int direction) {
   if (v == 0.0 || !std::isfinite(v)) return v;
-  for (int digits = 0; digits <= 17; ++digits) {
-    const double scale = std::pow(10.0, digits);
+  for (const double scale : kPowersOfTen) {
     double r;
     if (direction < 0) r = std::floor(v * scale) / scale;
     else if (direction > 0) r = std::ceil(v * scale) / scale;
@@ -27,9 +36,11 @@ std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes
     smallest = smallest == 0 ? s : std::min(smallest, s);
   }
   // The smallest part is some whole k of the unit; try k = 1, 2, ...
+  std::vector<double> out;
+  out.reserve(sizes.size());
   for (int k = 1; k <= max_whole; ++k) {
     const double unit = smallest / k;
-    std::vector<double> out;
+    out.clear();
     bool ok = true;
     for (double s : sizes) {
       const double n = std::round(s / unit);
@@ -46,16 +57,69 @@ std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes
 
 namespace {
 
+// Rounds the numbers below a node. A node whose numbers are already as
+// short as they get and whose children did not change is kept without a
+// copy (most of a million-part building); that needs the graph interned,
+// as inference builds it, since intern would return the node itself.
 class Tidier {
  public:
-  Tidier(Grammar& g, double tolerance) : g_(g), tol_(tolerance) {}
+  Tidier(Grammar& g, double tolerance) : g_(g), tol_(tolerance), memo_(g.node_count(), kNotYet) {}
 
   NodeId run(NodeId id) {
-    if (auto it = memo_.find(id); it != memo_.end()) return it->second;
-    Operation op = g_.op(id);
-    if (auto* s = std::get_if<Split>(&op)) {
-      tidy_split(*s);
-    } else if (auto* c = std::get_if<Choose>(&op)) {
+    if (id >= memo_.size()) memo_.resize(g_.node_count(), kNotYet);
+    if (memo_[id] != kNotYet) return memo_[id];
+    NodeId out = id;
+    const Operation& here = g_.op(id);
+    if (std::holds_alternative<Split>(here)) {
+      out = tidy_split(id);
+    } else if (std::holds_alternative<Choose>(here) || std::holds_alternative<Repeat>(here) ||
+               std::holds_alternative<RepeatN>(here) || std::holds_alternative<Rotate>(here)) {
+      out = tidy_other(id);
+    }
+    memo_[id] = out;
+    return out;
+  }
+
+ private:
+  static constexpr NodeId kNotYet = static_cast<NodeId>(-1);
+
+  Expr tidy(const Expr& e) const {
+    if (auto v = e.literal()) return Expr::number(shortest_decimal(*v, tol_));
+    if (auto r = literal_range(e))
+      return range_expr({shortest_decimal(r->lo, tol_, -1), shortest_decimal(r->hi, tol_, +1)}, 0.0);
+    return tidy_distribution(e);
+  }
+
+  // Fitted distributions (fit_distribution.hpp) of literal arguments:
+  // choice(...) values within the tolerance; tnormal's support outward
+  // like a range's, its mean and spread to a hundredth of the spread (they
+  // shape the variants, not which examples derive).
+  Expr tidy_distribution(const Expr& e) const {
+    const ExprNode& root = e.node(e.root());
+    if (root.kind != ExprKind::Call || e.nodes().size() != std::size_t{root.argc} + 1) return e;
+    std::vector<double> args;
+    for (std::size_t i = 0; i + 1 < e.nodes().size(); ++i) {
+      if (e.node(i).kind != ExprKind::Number) return e;
+      args.push_back(e.node(i).number);
+    }
+    const auto f = static_cast<Function>(root.op);
+    std::vector<Expr> out;
+    if (f == Function::Choice) {
+      for (const double v : args) out.push_back(Expr::number(shortest_decimal(v, tol_)));
+    } else if (f == Function::TNormal && args.size() == 4) {
+      const double fine = std::max(tol_, args[1] / 100);
+      out = {Expr::number(shortest_decimal(args[0], fine)), Expr::number(shortest_decimal(args[1], fine)),
+             Expr::number(shortest_decimal(args[2], tol_, -1)), Expr::number(shortest_decimal(args[3], tol_, +1))};
+    } else {
+      return e;
+    }
+    return Expr::call(f, std::move(out));
+  }
+
+  // Choose, repeat, repeatN, rotate: few in a grammar, so always copied.
+  NodeId tidy_other(NodeId id) {
+    Operation op = g_.op(id);  // a copy: running the children may grow the arena
+    if (auto* c = std::get_if<Choose>(&op)) {
       for (auto& o : c->options) {
         o.child = run(o.child);
         if (auto p = o.priority.literal()) o.priority = Expr::number(shortest_decimal(*p, 1e-9 * *p));
@@ -64,25 +128,37 @@ class Tidier {
       tiles->child = run(tiles->child);
     } else if (auto* repeat = std::get_if<Repeat>(&op)) {
       repeat->child = run(repeat->child);
-      repeat->size = tidy(repeat->size);
+      // A tile size rounds up, never down: a tile a hair smaller than
+      // L / n would make ceil(L / size) one tile more.
+      if (auto v = repeat->size.literal()) {
+        repeat->size = Expr::number(shortest_decimal(*v, tol_, +1));
+      } else {
+        repeat->size = tidy(repeat->size);
+      }
     } else if (auto* turn = std::get_if<Rotate>(&op)) {
       turn->child = run(turn->child);
     }
-    const NodeId out = g_.intern({std::move(op), g_.node(id).loc});
-    memo_.emplace(id, out);
-    return out;
+    return g_.intern({std::move(op), g_.node(id).loc});
   }
 
- private:
-  Expr tidy(const Expr& e) const {
-    if (auto v = e.literal()) return Expr::number(shortest_decimal(*v, tol_));
-    if (auto r = literal_range(e))
-      return range_expr({shortest_decimal(r->lo, tol_, -1), shortest_decimal(r->hi, tol_, +1)}, 0.0);
-    return e;
+  // Is e exactly the literal v (as Expr::number(v) would be)?
+  static bool is_number(const Expr& e, double v) {
+    return e.nodes().size() == 1 && e.node(0) == ExprNode{.kind = ExprKind::Number, .number = v};
   }
 
-  void tidy_split(Split& s) {
-    for (auto& p : s.parts) p.child = run(p.child);
+  NodeId tidy_split(NodeId id) {
+    std::vector<NodeId> children = node_children(g_.op(id));
+    bool same = true;
+    for (NodeId& c : children) {
+      const NodeId tidied = run(c);
+      same = same && tidied == c;
+      c = tidied;
+    }
+    // The new sizes: literals as numbers, anything else as an expression.
+    const Split& s = std::get<Split>(g_.op(id));  // no nodes are added until the end
+    const std::size_t n = s.parts.size();
+    std::vector<double> number(n, 0.0);
+    std::vector<std::optional<Expr>> other(n);
     std::vector<double> relative;
     bool all_relative_literals = true;
     for (const auto& p : s.parts) {
@@ -90,34 +166,47 @@ class Tidier {
       if (!p.size.relative || !v) all_relative_literals = false;
       else relative.push_back(*v);
     }
-    if (all_relative_literals) {
-      if (auto ratios = whole_ratios(relative)) {
-        for (std::size_t i = 0; i < s.parts.size(); ++i) s.parts[i].size.value = Expr::number((*ratios)[i]);
-        return;
+    std::optional<std::vector<double>> ratios;
+    if (all_relative_literals) ratios = whole_ratios(relative);
+    if (ratios) {
+      number = *ratios;
+    } else {
+      // Literal sizes: round the cut positions, not the sizes, so errors do
+      // not add up along a split of many parts; each size is then the
+      // difference of two short decimals (cleaned of binary noise).
+      double position = 0, rounded_previous = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto v = s.parts[i].size.value.literal();
+        if (!v) {
+          // Past a range the cut positions are unknown: start again.
+          other[i] = tidy(s.parts[i].size.value);
+          position = rounded_previous = 0;
+          continue;
+        }
+        position += *v;
+        const double rounded = shortest_decimal(position, tol_);
+        number[i] = shortest_decimal(rounded - rounded_previous, 1e-12 * std::max(1.0, rounded));
+        rounded_previous = rounded;
       }
     }
-    // Literal sizes: round the cut positions, not the sizes, so errors do
-    // not add up along a split of many parts; each size is then the
-    // difference of two short decimals (cleaned of binary noise).
-    double position = 0, rounded_previous = 0;
-    for (auto& p : s.parts) {
-      const auto v = p.size.value.literal();
-      if (!v) {
-        // Past a range the cut positions are unknown: start again.
-        p.size.value = tidy(p.size.value);
-        position = rounded_previous = 0;
-        continue;
-      }
-      position += *v;
-      const double rounded = shortest_decimal(position, tol_);
-      p.size.value = Expr::number(shortest_decimal(rounded - rounded_previous, 1e-12 * std::max(1.0, rounded)));
-      rounded_previous = rounded;
+    for (std::size_t i = 0; i < n && same; ++i)
+      same = other[i] ? *other[i] == s.parts[i].size.value : is_number(s.parts[i].size.value, number[i]);
+    if (same) return id;
+
+    // Built afresh rather than copied: the old sizes would only be thrown away.
+    Split tidied;
+    tidied.axis = s.axis;
+    tidied.parts.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      Expr size = other[i] ? std::move(*other[i]) : Expr::number(number[i]);
+      tidied.parts.push_back({Size{std::move(size), s.parts[i].size.relative}, children[i]});
     }
+    return g_.intern({std::move(tidied), g_.node(id).loc});  // s may be stale from here
   }
 
   Grammar& g_;
   double tol_;
-  std::unordered_map<NodeId, NodeId> memo_;
+  std::vector<NodeId> memo_;  // by node id: its tidied node, or kNotYet
 };
 
 }  // namespace
