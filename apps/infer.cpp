@@ -29,6 +29,10 @@ CommandLine make_command_line() {
                  "plus the parts' meshes (STYLE.prims.obj) so the grammar alone regenerates them.\n"
                  "EXAMPLES are .obj, .gltf or .glb files, or folders of them.");
   cl.add({"--output", "-o", 1, "STYLE.grm", "the grammar to write (required)"});
+  cl.add({"--primitives", "", 1, "PATH",
+          "the parts' own meshes (a folder of NAME.obj, or one OBJ of named objects): a part whose\n"
+          "mesh is its label's turned by quarter turns is written R(axis, angle){ I(label) }\n"
+          "(default: the built-in meshes, else each label's first part)"});
   cl.add({"--primitives-out", "", 1, "FILE.obj", "where to write the parts' meshes (default: STYLE.prims.obj)"});
   cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the largest example)"});
   cl.add({"--start", "", 1, "LABEL", "name of the start rule (default: building)"});
@@ -123,7 +127,15 @@ int run(int argc, char** argv) {
       std::fprintf(stderr, "\rreading examples %zu/%zu", i + 1, files.size());
   }
   if (show_progress) std::fprintf(stderr, "\n");
+  PrimitiveLibrary library = PrimitiveLibrary::builtin();
+  if (args.has("--primitives")) library.load(args.value("--primitives"));
+  options.primitives = &library;
   Inference result = infer(examples, options);
+  if (result.unturned_parts > 0 && !quiet)
+    std::fprintf(stderr,
+                 "infer: warning: %zu part%s whose mesh is not its label's turned by quarter turns: written "
+                 "unturned\n  hint: give such parts their own label, or pass their meshes with --primitives\n",
+                 result.unturned_parts, result.unturned_parts == 1 ? "" : "s");
 
   // Derive a few buildings from the result before writing it: a grammar
   // that cannot derive is a bug, better found here than by the user.

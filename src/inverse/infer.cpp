@@ -4,6 +4,7 @@
 
 #include "inverse/box_split.hpp"
 #include "inverse/merge.hpp"
+#include "inverse/orientation.hpp"
 #include "inverse/rule_naming.hpp"
 #include "inverse/split_graph.hpp"
 #include "inverse/tidy_numbers.hpp"
@@ -17,10 +18,15 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   if (out.tolerance <= 0)
     for (const auto& e : examples) out.tolerance = std::max(out.tolerance, default_tolerance(e));
 
+  // Parts whose mesh is their label's turned become R(...){ I(label) }.
+  PartOrientations oriented =
+      orient_parts(examples, options.primitives ? *options.primitives : PrimitiveLibrary::builtin(), out.tolerance);
+  out.unturned_parts = oriented.unmatched;
+
   Grammar graph;
   std::vector<NodeId> roots;
   for (std::size_t i = 0; i < examples.size(); ++i) {
-    roots.push_back(example_graph(graph, examples[i], BoxSplitOptions{out.tolerance}));
+    roots.push_back(example_graph(graph, examples[i], BoxSplitOptions{out.tolerance}, oriented.turns[i]));
     if (options.progress) options.progress(i + 1, examples.size());
   }
   MergeOptions merge;
@@ -47,14 +53,10 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   }
 
   // The first mesh seen for each label stands for all its parts.
-  for (const auto& e : examples) {
-    for (const auto& box : e.boxes) {
-      // An example built in memory may have no meshes: its labels then
-      // fall back to the library's box when generated.
-      if (out.primitives.find(box.label) || box.mesh >= e.meshes.size()) continue;
-      out.primitives.add(box.label, normalised_primitive(e.meshes[box.mesh]));
-    }
-  }
+  // Each label's canonical mesh (orientation.hpp); an example built in
+  // memory may have no meshes: its labels then fall back to the library's
+  // box when generated.
+  out.primitives = std::move(oriented.canonical);
   return out;
 }
 

@@ -25,14 +25,19 @@ struct InferOptions {
   // `--distributions uniform`: varying sizes as rand(min, max), the
   // thesis's ranges, instead of fitted distributions.
   bool uniform_distributions = false;
+  // The meshes parts are compared with to find turned ones (--primitives);
+  // null: the built-in primitives. A label's first part's own mesh stands
+  // in where the library's is not one of its turns.
+  const PrimitiveLibrary* primitives = nullptr;
   // Called after each example is split: (done, total).
   std::function<void(std::size_t, std::size_t)> progress;
 };
 
 struct Inference {
   Grammar grammar;               // rules, start rule, @scope (not @primitives)
-  PrimitiveLibrary primitives;   // each label's mesh as first seen, in the unit box
+  PrimitiveLibrary primitives;   // each label's canonical mesh, in the unit box (orientation.hpp)
   double tolerance = 0;          // the tolerance used
+  std::size_t unturned_parts = 0;  // parts whose mesh is no turn of their label's: written unturned
 };
 
 // Throws vern::Error (Input) for examples that cannot be represented

@@ -86,4 +86,46 @@ NodeId turned_primitive(Grammar& g, LabelId label, const Orientation& turns) {
   return node;
 }
 
+namespace {
+
+double vertex_tolerance(const LabelledBox& box, double tolerance) {
+  const glm::dvec3 size = box.max - box.min;
+  return std::max(tolerance, 1e-4 * std::max({size.x, size.y, size.z}));
+}
+
+}  // namespace
+
+PartOrientations orient_parts(const std::vector<Example>& examples, const PrimitiveLibrary& library,
+                              double tolerance) {
+  PartOrientations out;
+  out.turns.resize(examples.size());
+  for (std::size_t e = 0; e < examples.size(); ++e) {
+    const Example& ex = examples[e];
+    out.turns[e].resize(ex.boxes.size());
+    for (std::size_t b = 0; b < ex.boxes.size(); ++b) {
+      const LabelledBox& box = ex.boxes[b];
+      if (box.mesh >= ex.meshes.size()) continue;
+      const Mesh& mesh = ex.meshes[box.mesh];
+      const double tol = vertex_tolerance(box, tolerance);
+      const Mesh* canonical = out.canonical.find(box.label);
+      if (canonical == nullptr) {
+        // The first part of this label decides its canonical mesh.
+        const Mesh* known = library.find(box.label);
+        if (known != nullptr && find_orientation(*known, mesh, box.min, box.max, tol)) {
+          out.canonical.add(box.label, *known);
+        } else {
+          out.canonical.add(box.label, normalised_primitive(mesh));
+        }
+        canonical = out.canonical.find(box.label);
+      }
+      if (auto turns = find_orientation(*canonical, mesh, box.min, box.max, tol)) {
+        out.turns[e][b] = std::move(*turns);
+      } else {
+        ++out.unmatched;
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace vern

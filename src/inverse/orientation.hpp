@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "forward/mesh.hpp"
+#include "forward/primitive_library.hpp"
+#include "inverse/example.hpp"
 #include "graph/grammar.hpp"
 #include "graph/value.hpp"
 
@@ -39,5 +41,21 @@ std::optional<Orientation> find_orientation(const Mesh& canonical, const Mesh& p
 // I(label) inside R nodes for `turns`, interned in g; angles written as
 // multiples of pi ("pi / 2", "pi", "3 * pi / 2").
 NodeId turned_primitive(Grammar& g, LabelId label, const Orientation& turns);
+
+// Each label's canonical mesh and each part's turns relative to it.
+struct PartOrientations {
+  // A label's mesh from `library` (the user's --primitives, else the
+  // built-in ones) when the first part's mesh is one of its turns; else
+  // that first mesh, normalised to the unit box. Labels whose parts have
+  // no mesh (examples built in memory) are absent.
+  PrimitiveLibrary canonical;
+  std::vector<std::vector<Orientation>> turns;  // per example, per box; empty: as it is
+  std::size_t unmatched = 0;  // parts whose mesh is no turn of their label's (kept unturned)
+};
+
+// Vertices match within max(tolerance, 1e-4 of the part's largest size):
+// exporters round coordinates, and a wrong turn misses by the part's size.
+PartOrientations orient_parts(const std::vector<Example>& examples, const PrimitiveLibrary& library,
+                              double tolerance);
 
 }  // namespace vern

@@ -1,6 +1,8 @@
 #include "inverse/split_graph.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <unordered_map>
 
 #include "graph/error.hpp"
 
@@ -10,13 +12,14 @@ namespace {
 
 class GraphBuilder {
  public:
-  GraphBuilder(Grammar& grammar, const std::vector<LabelledBox>& boxes, const std::string& source)
-      : g_(grammar), boxes_(boxes), source_(source) {}
+  GraphBuilder(Grammar& grammar, const std::vector<LabelledBox>& boxes, const std::string& source,
+               const std::vector<Orientation>& turns)
+      : g_(grammar), boxes_(boxes), source_(source), turns_(turns) {}
 
   NodeId node(const SplitTree& t) {
     switch (t.kind) {
       case SplitTree::Kind::Leaf: return leaf(t.box);
-      case SplitTree::Kind::Empty: return g_.intern(Node{Nil{}, {}});
+      case SplitTree::Kind::Empty: return nil();
       case SplitTree::Kind::Unsplittable: unsplittable(t);
       case SplitTree::Kind::Split: break;
     }
@@ -24,6 +27,7 @@ class GraphBuilder {
     if (t.children.size() == 1) return node(t.children.front());
     Split split;
     split.axis = Expr::axis(static_cast<Axis>(t.axis));
+    split.parts.reserve(t.children.size());
     for (const SplitTree& c : t.children) {
       const double length = c.max[t.axis] - c.min[t.axis];
       split.parts.push_back({Size{Expr::number(length), true}, node(c)});
@@ -32,11 +36,22 @@ class GraphBuilder {
   }
 
  private:
+  // Every leaf of one label is one node: looked up once per label, not
+  // once per part (a city has a million parts and a dozen labels).
   NodeId leaf(std::uint32_t box) {
     if (box >= boxes_.size()) {
       throw Error(ErrorKind::Internal, format_message(source_, {}, "a split tree names a box that does not exist (a bug)"));
     }
-    return g_.intern(Node{Primitive{g_.label_id(boxes_[box].label)}, {}});
+    const std::string& label = boxes_[box].label;
+    if (box < turns_.size() && !turns_[box].empty()) return turned_primitive(g_, g_.label_id(label), turns_[box]);
+    auto [it, fresh] = leaves_.try_emplace(label, 0);
+    if (fresh) it->second = g_.intern(Node{Primitive{g_.label_id(label)}, {}});
+    return it->second;
+  }
+
+  NodeId nil() {
+    if (!nil_) nil_ = g_.intern(Node{Nil{}, {}});
+    return *nil_;
   }
 
   // Straight cuts cannot represent the group. T/S placements could, later;
@@ -66,18 +81,22 @@ class GraphBuilder {
   Grammar& g_;
   const std::vector<LabelledBox>& boxes_;
   const std::string& source_;
+  const std::vector<Orientation>& turns_;  // per box; empty: none turned
+  std::unordered_map<std::string, NodeId> leaves_;  // label -> its primitive node
+  std::optional<NodeId> nil_;
 };
 
 }  // namespace
 
 NodeId split_graph(Grammar& grammar, const SplitTree& tree, const std::vector<LabelledBox>& boxes,
-                   const std::string& source) {
-  return GraphBuilder(grammar, boxes, source).node(tree);
+                   const std::string& source, const std::vector<Orientation>& turns) {
+  return GraphBuilder(grammar, boxes, source, turns).node(tree);
 }
 
-NodeId example_graph(Grammar& grammar, const Example& example, const BoxSplitOptions& options) {
+NodeId example_graph(Grammar& grammar, const Example& example, const BoxSplitOptions& options,
+                     const std::vector<Orientation>& turns) {
   const SplitTree tree = split_boxes(example.boxes, options, example.source);
-  return split_graph(grammar, tree, example.boxes, example.source);
+  return split_graph(grammar, tree, example.boxes, example.source, turns);
 }
 
 }  // namespace vern

@@ -18,16 +18,20 @@
 #include "graph/grammar.hpp"
 #include "inverse/box_split.hpp"
 #include "inverse/example.hpp"
+#include "inverse/orientation.hpp"
 
 namespace vern {
 
 // The graph of a split tree over `boxes` (the boxes it was split from).
 // Throws vern::Error (Input) for an Unsplittable container, naming its
 // parts; `source` names the example file in that message.
+// turns: per box, the quarter turns of its mesh (orientation.hpp); a
+// turned box becomes R(axis, angle){ I(label) }. Empty: none turned.
 NodeId split_graph(Grammar& grammar, const SplitTree& tree, const std::vector<LabelledBox>& boxes,
-                   const std::string& source = {});
+                   const std::string& source = {}, const std::vector<Orientation>& turns = {});
 
 // split_boxes then split_graph for one loaded example.
-NodeId example_graph(Grammar& grammar, const Example& example, const BoxSplitOptions& options);
+NodeId example_graph(Grammar& grammar, const Example& example, const BoxSplitOptions& options,
+                     const std::vector<Orientation>& turns = {});
 
 }  // namespace vern
