@@ -128,3 +128,41 @@ TEST(Infer, GarageExamplesGiveAFewRulesWithTheHeightRangeFitted) {
 
 }  // namespace
 }  // namespace vern
+
+namespace vern {
+namespace {
+
+// Issue 4, "sizes that scale" and "repeats that stretch": terraces on plots
+// of different widths. The learnt grammar keeps the end walls 0.6 m thick
+// on any plot, and a wider plot gets more windows, not wider ones.
+TEST(Infer, WallsKeepTheirThicknessAndWindowsFollowTheWidth) {
+  const Grammar source = read_grammar_file(VERN_SOURCE_DIR "/data/grammars/terrace.grm");
+  std::vector<Example> examples;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    examples.push_back(test::example_of(test::derived_parts(derive_seed(source, seed))));
+  }
+  const Inference inferred = infer(examples, {});
+  auto windows_and_walls = [&](double width, std::uint64_t seed) {
+    DeriveOptions o;
+    o.seed = seed;
+    o.size = glm::dvec3(width, 6, 9);
+    const Derivation d = derive(inferred.grammar, o);
+    std::size_t windows = 0;
+    for (const auto& b : test::derived_parts(d)) {
+      if (b.label == "window") ++windows;
+      const bool end_wall = b.label == "rect" && (b.min.x < 1e-9 || b.max.x > width - 1e-9);
+      if (end_wall) {
+        EXPECT_NEAR(b.max.x - b.min.x, 0.6, 1e-6) << "width " << width;
+      }
+    }
+    return windows;
+  };
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const std::size_t narrow = windows_and_walls(9, seed), wide = windows_and_walls(24, seed);
+    EXPECT_GT(narrow, 0u);
+    EXPECT_GT(wide, 2 * narrow) << write_grammar(inferred.grammar);
+  }
+}
+
+}  // namespace
+}  // namespace vern
