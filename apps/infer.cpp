@@ -116,7 +116,12 @@ int run(int argc, char** argv) {
   const std::vector<fs::path> files = example_files(args.positional);
   // Three files are written: the grammar, the meshes and their materials.
   const fs::path prims_mtl = fs::path(prims).replace_extension(".mtl");
-  for (const fs::path& out : {output, prims, prims_mtl}) check_output_file("infer", out, files, "an example");
+  for (const fs::path& out : {output, prims, prims_mtl}) {
+    check_output_file("infer", out, files, "an example");
+    if (args.has("--primitives")) {
+      check_output_file("infer", out, {fs::path(args.value("--primitives"))}, "the --primitives meshes");
+    }
+  }
   check_distinct_outputs("infer", {output, prims, prims_mtl});
 
   const bool show_progress = !quiet && files.size() >= 20 && isatty(STDERR_FILENO);
