@@ -249,6 +249,107 @@ TEST(Example, GltfNodesApplyTheirWorldTransform) {
   EXPECT_EQ(ex.meshes[0].face_sizes, std::vector<std::uint32_t>{3});
 }
 
+// generate --instancing writes each mesh's copies as EXT_mesh_gpu_instancing
+// instances (float translation, rotation, scale): each instance reads back
+// as one part, the same boxes as the plain file's within float precision,
+// labels without the colour suffix of coloured meshes' names.
+TEST(Example, InstancedGltfReadsBackAsThePlainFile) {
+  const Grammar roofs = read_grammar_file(VERN_SOURCE_DIR "/data/grammars/better_roofs.grm");
+  // Turned, faced and coloured parts too: rotations and "rect colour_..." names.
+  const Grammar painted = parse_grammar(
+      "p --> split(x){ ~1 : R(z, 0.3){ I(rect) } | ~1 : comp(f){ front : colour(1, 0, 0) | top : I(window) } | "
+      "~1 : R(y, pi/2){ colour(0, 0.5, 1) } }",
+      "painted.grm");
+  Scene scene;
+  for (const Grammar* g : {&roofs, &painted}) {
+    DeriveOptions o;
+    o.seed = 4;
+    o.size = glm::dvec3(12, 8, 6);
+    Derivation d = derive(*g, o);
+    ASSERT_FALSE(d.terminals.empty());
+    scene.labels = d.labels;
+    scene.variants = {{"house", glm::dvec3(5, -2, 1), d.terminals}, {"other", glm::dvec3(30, 0, 0), d.terminals}};
+
+    TempFolder dir;
+    const PrimitiveLibrary library = PrimitiveLibrary::builtin();
+    write_gltf(scene, library, dir / "plain.glb");
+    write_gltf(scene, library, dir / "instanced.glb", {.instancing = true});
+    write_gltf(scene, library, dir / "instanced.gltf", {.instancing = true});
+    const Example plain = load_example(dir / "plain.glb");
+    for (const char* name : {"instanced.glb", "instanced.gltf"}) {
+      SCOPED_TRACE(name);
+      const Example instanced = load_example(dir / name);
+      ASSERT_EQ(instanced.boxes.size(), 2 * d.terminals.size());
+      EXPECT_TRUE(test::same_boxes(plain.boxes, instanced.boxes, 1e-5));
+      for (const LabelledBox& b : instanced.boxes) {
+        EXPECT_EQ(b.label.find(' '), std::string::npos) << b.label;
+        EXPECT_NE(b.object.find("(instance "), std::string::npos) << b.object;
+        // Each part's mesh is its own instance, placed.
+        const Mesh& mesh = instanced.meshes[b.mesh];
+        for (int i = 0; i < 3; ++i) {
+          EXPECT_NEAR(mesh.min_corner()[i], b.min[i], 1e-12);
+          EXPECT_NEAR(mesh.max_corner()[i], b.max[i], 1e-12);
+        }
+      }
+    }
+  }
+}
+
+// The round trip a user makes: buildings generated with --instancing are
+// examples infer learns from and check finds derivable.
+TEST(Example, InstancedFilesFromGenerateAreExamplesForInferAndCheck) {
+  TempFolder dir;
+  const auto generated = test::run_program(
+      "generate", {VERN_SOURCE_DIR "/data/grammars/garage.grm", "-n", "3", "--instancing", "--format", "glb", "-o",
+                   (dir / "garages").string(), "-q"});
+  ASSERT_EQ(generated.exit_code, 0) << generated.err;
+  ASSERT_EQ(test::list_folder(dir / "garages"),
+            (std::vector<std::string>{"variant_000.glb", "variant_001.glb", "variant_002.glb"}));
+  // The files really are instanced.
+  EXPECT_TRUE(contains(test::read_file(dir / "garages" / "variant_000.glb"), "EXT_mesh_gpu_instancing"));
+
+  const auto inferred = test::run_program("infer", {(dir / "garages").string(), "-o", (dir / "garage.grm").string()});
+  ASSERT_EQ(inferred.exit_code, 0) << inferred.err;
+  const auto checked = test::run_program("check", {(dir / "garage.grm").string(), (dir / "garages").string()});
+  EXPECT_EQ(checked.exit_code, 0) << checked.out << checked.err;
+  EXPECT_TRUE(contains(checked.out, "3 of 3 examples derivable")) << checked.out;
+}
+
+// Broken instancing data is named, not silently misread.
+TEST(Example, InstancingErrors) {
+  TempFolder dir;
+  const float v[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  std::string bytes(sizeof v, '\0');
+  std::memcpy(bytes.data(), v, sizeof v);
+  auto file = [&](const std::string& attributes) {
+    return R"({"asset": {"version": "2.0"},
+  "extensionsUsed": ["EXT_mesh_gpu_instancing"],
+  "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,)" + base64(bytes) + R"("}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 0, "componentType": 5126, "count": 2, "type": "VEC3"}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "nodes": [{"name": "panel", "mesh": 0, "extensions": {"EXT_mesh_gpu_instancing": {"attributes": )" +
+           attributes + R"(}}}],
+  "scenes": [{"nodes": [0]}], "scene": 0})";
+  };
+  // Three instances translated by the triangle's own corners.
+  write_text(dir / "three.gltf", file(R"({"TRANSLATION": 0})"));
+  const Example ex = load_example(dir / "three.gltf");
+  ASSERT_EQ(ex.boxes.size(), 3u);
+  EXPECT_EQ(ex.boxes[1].label, "panel");
+  EXPECT_EQ(ex.boxes[1].min, glm::dvec3(1, 0, 0));
+  EXPECT_EQ(ex.boxes[1].max, glm::dvec3(2, 1, 0));
+
+  write_text(dir / "uneven.gltf", file(R"({"TRANSLATION": 0, "SCALE": 1})"));
+  EXPECT_TRUE(contains(load_error(dir / "uneven.gltf"), "attributes hold different numbers of instances"));
+  write_text(dir / "none.gltf", file(R"({"COLOUR": 0})"));
+  const std::string none = load_error(dir / "none.gltf");
+  EXPECT_TRUE(contains(none, "node 0 'panel': its EXT_mesh_gpu_instancing extension names none of TRANSLATION")) << none;
+  write_text(dir / "rotation.gltf", file(R"({"ROTATION": 0})"));
+  EXPECT_TRUE(contains(load_error(dir / "rotation.gltf"), "ROTATION must hold 4 numbers per instance"));
+}
+
 TEST(Example, GltfErrors) {
   TempFolder dir;
   write_text(dir / "unnamed.gltf", triangle_gltf(""));

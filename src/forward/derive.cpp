@@ -1,10 +1,13 @@
+// Derivation runs the grammar compiled into a Program (forward/program.hpp):
+// flat operation tables and compiled expressions. Errors keep the tree
+// evaluator's messages (compiled_expr.hpp) and name the rule chain.
 #include "forward/derive.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 #include "forward/evaluate.hpp"
+#include "forward/program.hpp"
 #include "forward/random_stream.hpp"
 #include "forward/stack_guard.hpp"
 #include "graph/number_format.hpp"
@@ -12,6 +15,10 @@
 namespace vern {
 
 namespace {
+
+// The terminal buffer a thread keeps between derivations (about 9 MB);
+// larger ones are released after use.
+constexpr std::size_t kKeptTerminals = std::size_t{1} << 16;
 
 // The per-part numbers of one split or choose: on the stack for the usual
 // handful of parts, on the heap beyond that. (A shared scratch vector cost
@@ -35,18 +42,18 @@ class PartValues {
 
 class Deriver {
  public:
-  Deriver(const Grammar& g, const DeriveOptions& o, Derivation& out) : g_(g), opt_(o), out_(out) {
-    out_.labels = g.labels();
-    auto rect = g.find_label("rect");
+  Deriver(const Program& p, const DeriveOptions& o, Derivation& out, std::vector<Terminal>& terminals)
+      : prog_(p), g_(*p.grammar), opt_(o), out_(out), terminals_(terminals) {
+    out_.labels = g_.labels();
+    auto rect = g_.find_label("rect");
     if (rect) {
       rect_label_ = *rect;
     } else {
       rect_label_ = static_cast<LabelId>(out_.labels.size());
       out_.labels.emplace_back("rect");
     }
-    warned_.resize(g.rules.size(), false);
-    params_.reserve(64);
-    out_.terminals.reserve(256);
+    warned_.resize(g_.rules.size(), false);
+    params_.resize(64);
   }
 
   void run() {
@@ -59,24 +66,28 @@ class Deriver {
       fail(ErrorKind::Input, g_.source_name, start.loc, "the start rule '" + start.label + "' takes parameters",
            "the start rule runs with no arguments: name another with @start or --start, or add a rule such as "
            "'plot --> " + start.label + "(...)'");
-    chain_.push_back({g_.start_rule, 0, g_.rules[g_.start_rule].loc});
-    node(g_.rules[g_.start_rule].body, out_.start, 0, child_key(root, 3));
+    chain_.push_back({g_.start_rule, 0});
+    node(prog_.nodes[start.body], out_.start, 0, child_key(root, 3));
     chain_.pop_back();
-  }
-
-  [[noreturn]] void fail_here(ErrorKind kind, SourceLoc loc, const std::string& message, const std::string& hint) {
-    std::string text = format_message(g_.source_name, loc, message);
-    text += "\n  rule chain: " + describe_chain();
-    if (!hint.empty()) text += "\n  hint: " + hint;
-    throw Error(kind, text);
   }
 
  private:
   struct Frame {
     RuleId rule;
     std::size_t params;  // index of this call's arguments in params_
-    SourceLoc call;
   };
+
+  // Errors are rare: their text is built out of line, keeping the hot
+  // functions small.
+  [[noreturn, gnu::cold, gnu::noinline]] void fail_here(ErrorKind kind, SourceLoc loc, const std::string& message,
+                                                         const std::string& hint) {
+    std::string text = format_message(g_.source_name, loc, message);
+    text += "\n  rule chain: " + describe_chain();
+    if (!hint.empty()) text += "\n  hint: " + hint;
+    throw Error(kind, text);
+  }
+
+  SourceLoc loc(NodeId id) const { return g_.node(id).loc; }
 
   void evaluate_constants(std::uint64_t key) {
     constants_.reserve(g_.constants.size());
@@ -111,9 +122,43 @@ class Deriver {
     return size;
   }
 
-  EvalContext context(RandomStream& rng) const { return {params_.data() + params_base_, constants_.data(), &rng}; }
+  const Value* params() const { return params_.data() + params_base_; }
+  EvalContext context(RandomStream& rng) const { return {params(), constants_.data(), &rng}; }
 
-  double number(const Expr& e, RandomStream& rng, const char* what) {
+  // Compiled code answers; where it cannot (and on every error) the tree
+  // evaluator runs again from the same random state (compiled_expr.hpp).
+  bool run_code(const CompiledExpr& e, RandomStream& rng, double& result) const {
+    const RandomStream saved = rng;
+    if (vern::run(prog_.code.at(e.index), params(), constants_.data(), rng, result)) return true;
+    rng = saved;
+    return false;
+  }
+
+  static bool finite_number(const Value& v) { return v.is_number() && v.number() - v.number() == 0.0; }
+
+  double number(const CompiledExpr& e, RandomStream& rng, const char* what) {
+    switch (e.form) {
+      case ExprForm::Literal: return e.literal;
+      case ExprForm::Param:
+        if (const Value& v = params()[e.index]; finite_number(v)) return v.number();
+        break;
+      case ExprForm::Constant:
+        if (const Value& v = constants_[e.index]; finite_number(v)) return v.number();
+        break;
+      case ExprForm::Code: {
+        // NaN and inf fail the comparison and take the slow path's message.
+        double r;
+        const RandomStream saved = rng;
+        if (vern::run(prog_.code.at(e.index), params(), constants_.data(), rng, r) && r - r == 0.0) return r;
+        rng = saved;
+        break;
+      }
+      default: break;
+    }
+    return slow_number(*e.source, rng, what);
+  }
+
+  [[gnu::noinline]] double slow_number(const Expr& e, RandomStream& rng, const char* what) {
     try {
       return evaluate_number(e, context(rng), what);
     } catch (const EvaluationError& err) {
@@ -121,7 +166,14 @@ class Deriver {
     }
   }
 
-  Axis axis(const Expr& e, RandomStream& rng, const char* what) {
+  Axis axis(const CompiledExpr& e, RandomStream& rng, const char* what) {
+    if (e.form == ExprForm::Axis) return static_cast<Axis>(e.index);
+    if (e.form == ExprForm::Param)
+      if (auto a = params()[e.index].to_axis()) return *a;
+    return slow_axis(*e.source, rng, what);
+  }
+
+  [[gnu::noinline]] Axis slow_axis(const Expr& e, RandomStream& rng, const char* what) {
     try {
       return evaluate_axis(e, context(rng), what);
     } catch (const EvaluationError& err) {
@@ -129,7 +181,23 @@ class Deriver {
     }
   }
 
-  Value value(const Expr& e, RandomStream& rng) {
+  Value value(const CompiledExpr& e, RandomStream& rng) {
+    switch (e.form) {
+      case ExprForm::Literal: return e.literal;
+      case ExprForm::Axis: return Value::axis(static_cast<Axis>(e.index));
+      case ExprForm::Param: return params()[e.index];
+      case ExprForm::Constant: return constants_[e.index];
+      case ExprForm::Code: {
+        double r;
+        if (run_code(e, rng, r)) return r;
+        break;
+      }
+      default: break;
+    }
+    return slow_value(*e.source, rng);
+  }
+
+  [[gnu::noinline]] Value slow_value(const Expr& e, RandomStream& rng) {
     try {
       return evaluate(e, context(rng));
     } catch (const EvaluationError& err) {
@@ -138,53 +206,69 @@ class Deriver {
   }
 
   // A size that cannot be negative or NaN: GRAMMAR.md gives them no meaning.
-  double size_value(const Size& s, RandomStream& rng, const char* what) {
-    const double v = number(s.value, rng, what);
-    if (v < 0)
-      fail_here(ErrorKind::Input, s.value.loc(), std::string(what) + " is negative (" + format_number(v) + ")",
-                "sizes are lengths (or shares, with ~) and must be >= 0");
+  double size_value(const CompiledExpr& e, RandomStream& rng, const char* what) {
+    const double v = number(e, rng, what);
+    if (v < 0) negative_size(e, v, what);
     return v;
   }
 
-  void count_operation(SourceLoc loc, std::uint64_t n = 1) {
+  [[noreturn, gnu::cold, gnu::noinline]] void negative_size(const CompiledExpr& e, double v, const char* what) {
+    fail_here(ErrorKind::Input, e.source->loc(), std::string(what) + " is negative (" + format_number(v) + ")",
+              "sizes are lengths (or shares, with ~) and must be >= 0");
+  }
+
+  void count_operation(NodeId id, std::uint64_t n = 1) {
     operations_ += n;
-    if (operations_ > opt_.limits.max_operations)
-      fail_here(ErrorKind::Limit, loc,
-                "more than " + std::to_string(opt_.limits.max_operations) + " operations in one derivation",
-                "raise the limit with --max-operations, or check the grammar for runaway repetition");
+    if (operations_ > opt_.limits.max_operations) too_many_operations(id);
   }
 
-  void emit(LabelId label, const Scope& s, SourceLoc loc, const Rgb* colour = nullptr) {
-    if (out_.terminals.size() >= opt_.limits.max_terminals)
-      fail_here(ErrorKind::Limit, loc, "more than " + std::to_string(opt_.limits.max_terminals) + " terminals in one derivation",
-                "raise the limit with --max-terminals, or check the grammar for runaway recursion");
-    // Built in place: the scope is copied once, straight into the vector.
-    out_.terminals.push_back(Terminal{label, colour != nullptr, colour ? *colour : Rgb{}, s});
+  [[noreturn, gnu::cold, gnu::noinline]] void too_many_operations(NodeId id) {
+    fail_here(ErrorKind::Limit, loc(id),
+              "more than " + std::to_string(opt_.limits.max_operations) + " operations in one derivation",
+              "raise the limit with --max-operations, or check the grammar for runaway repetition");
   }
 
-  void node(NodeId id, const Scope& s, std::uint64_t slot_key, std::uint64_t key);
+  // A new terminal filling s (and its label), the last in the buffer.
+  Terminal& emit(LabelId label, const Scope& s, NodeId id) {
+    if (terminals_left_ == 0) too_many_terminals(id);
+    --terminals_left_;
+    return terminals_.emplace_back(Terminal{label, false, Rgb{}, s});
+  }
 
-  // Runs a child node. Leaves, the most common children, are handled here
-  // without a recursive call: a nil costs one count, a primitive one emit.
-  void child(NodeId id, const Scope& s, std::uint64_t slot, std::uint64_t key) {
-    const Node& n = g_.node(id);
-    if (const auto* p = std::get_if<Primitive>(&n.op)) {
-      count_operation(n.loc);
-      return emit(p->label, s, n.loc);
+  [[noreturn, gnu::cold, gnu::noinline]] void too_many_terminals(NodeId id) {
+    fail_here(ErrorKind::Limit, loc(id),
+              "more than " + std::to_string(opt_.limits.max_terminals) + " terminals in one derivation",
+              "raise the limit with --max-terminals, or check the grammar for runaway recursion");
+  }
+
+  void node(const Target& t, const Scope& s, std::uint64_t slot_key, std::uint64_t key);
+
+  // Runs a child node on the part [from, from + length) of s along a.
+  // Leaves, the most common children, are handled here without a
+  // recursive call: a nil costs one count, a primitive one emit, its
+  // scope sliced where it is stored.
+  void child(const Target& t, const Scope& s, Axis a, double from, double length, std::uint64_t slot,
+             std::uint64_t key) {
+    if (t.kind == OpKind::Primitive) {
+      count_operation(t.node);
+      emit(t.index, s, t.node).scope.slice_in_place(a, from, length);
+      return;
     }
-    if (std::holds_alternative<Nil>(n.op)) return count_operation(n.loc);
-    node(id, s, slot, key);
+    if (t.kind == OpKind::Nil) return count_operation(t.node);
+    node(t, s.slice(a, from, length), slot, key);
   }
 
-  void split(const Split& op, const Scope& s, std::uint64_t key, RandomStream& rng) {
+  void split(const SplitOp& op, const Scope& s, std::uint64_t key, RandomStream& rng) {
     const Axis a = axis(op.axis, rng, "the axis of split");
-    const double length = s.size[static_cast<int>(a)];
-    PartValues share(op.parts.size());
-    double absolute = 0, relative = 0;
-    for (std::size_t i = 0; i < op.parts.size(); ++i) {
-      const Size& size = op.parts[i].size;
-      share[i] = size_value(size, rng, "a split size");
-      (size.relative ? relative : absolute) += share[i];
+    const double length = s.extent(a);
+    const PartOp* parts = prog_.parts.data() + op.first;
+    PartValues share(op.literal ? 0 : op.count);
+    double absolute = op.absolute, relative = op.relative;
+    if (!op.literal) {
+      for (std::size_t i = 0; i < op.count; ++i) {
+        share[i] = size_value(parts[i].size, rng, "a split size");
+        (parts[i].relative ? relative : absolute) += share[i];
+      }
     }
     // Absolute parts take what they ask for; relative parts share the rest.
     // When the absolute parts alone exceed the scope, they shrink in
@@ -192,27 +276,55 @@ class Deriver {
     const double abs_scale = absolute > length ? length / absolute : 1.0;
     const double rel_unit = (absolute < length && relative > 0) ? (length - absolute) / relative : 0.0;
     double from = 0;
-    for (std::size_t i = 0; i < op.parts.size(); ++i) {
-      const double len = op.parts[i].size.relative ? share[i] * rel_unit : share[i] * abs_scale;
-      if (len > 0) child(op.parts[i].child, s.slice(a, from, len), i, key);
+    for (std::size_t i = 0; i < op.count; ++i) {
+      const double v = op.literal ? parts[i].size.literal : share[i];
+      const double len = parts[i].relative ? v * rel_unit : v * abs_scale;
+      if (len > 0) child(parts[i].child, s, a, from, len, i, key);
       from += len;
     }
   }
 
-  void tiles(Axis a, const Scope& s, std::uint64_t count, NodeId child, SourceLoc loc, std::uint64_t key) {
-    count_operation(loc, count);
-    const double length = s.size[static_cast<int>(a)];
-    const double tile = length / static_cast<double>(count);
-    for (std::uint64_t i = 0; i < count; ++i) this->child(child, s.slice(a, tile * static_cast<double>(i), tile), i, key);
+  void repeat(const RepeatOp& op, NodeId id, const Scope& s, std::uint64_t key, RandomStream& rng) {
+    const Axis a = axis(op.axis, rng, "the axis of repeat");
+    const double tile = number(op.amount, rng, "the tile size of repeat");
+    if (!(tile > 0))
+      fail_here(ErrorKind::Input, op.amount.source->loc(),
+                "the tile size of repeat is " + format_number(tile) + "; it must be > 0",
+                "give a tile length in metres, or use repeatN(axis, count) for a number of tiles");
+    const double q = s.extent(a) / tile;
+    // ceil, forgiving float noise: 0.7 / 0.1 is 7.000000000000001 and means 7.
+    const double count = std::max(1.0, std::ceil(q - 1e-9 * std::max(1.0, q)));
+    if (count > double(opt_.limits.max_operations))
+      fail_here(ErrorKind::Limit, loc(id), "repeat would make " + format_number(count) + " tiles",
+                "raise the limit with --max-operations, or use a larger tile size");
+    tiles(a, s, static_cast<std::uint64_t>(count), op.child, id, key);
   }
 
-  void choose(const Choose& op, const Node& n, const Scope& s, std::uint64_t key, RandomStream& rng) {
-    PartValues weight(op.options.size());
+  void repeat_n(const RepeatOp& op, NodeId id, const Scope& s, std::uint64_t key, RandomStream& rng) {
+    const Axis a = axis(op.axis, rng, "the axis of repeatN");
+    const double count = std::round(number(op.amount, rng, "the count of repeatN"));
+    if (count <= 0) return;
+    if (count > double(opt_.limits.max_operations))
+      fail_here(ErrorKind::Limit, op.amount.source->loc(), "repeatN asks for " + format_number(count) + " tiles",
+                "raise the limit with --max-operations, or ask for fewer tiles");
+    tiles(a, s, static_cast<std::uint64_t>(count), op.child, id, key);
+  }
+
+  void tiles(Axis a, const Scope& s, std::uint64_t count, const Target& child, NodeId id, std::uint64_t key) {
+    count_operation(id, count);
+    const double length = s.extent(a);
+    const double tile = length / static_cast<double>(count);
+    for (std::uint64_t i = 0; i < count; ++i) this->child(child, s, a, tile * static_cast<double>(i), tile, i, key);
+  }
+
+  void choose(const ChooseOp& op, NodeId id, const Scope& s, std::uint64_t key, RandomStream& rng) {
+    const OptionOp* options = prog_.options.data() + op.first;
+    PartValues weight(op.count);
     double total = 0;
-    for (std::size_t i = 0; i < op.options.size(); ++i) {
-      const ChooseOption& o = op.options[i];
+    for (std::size_t i = 0; i < op.count; ++i) {
+      const OptionOp& o = options[i];
       double w = 0;
-      if (o.condition.empty() || number(o.condition, rng, "a condition") != 0.0) {
+      if (o.condition.form == ExprForm::Absent || number(o.condition, rng, "a condition") != 0.0) {
         w = number(o.priority, rng, "a priority");
         if (w < 0) w = 0;  // a priority <= 0 never wins
       }
@@ -220,60 +332,99 @@ class Deriver {
       total += w;
     }
     if (total <= 0) {
-      no_rule_applies(n);
+      no_rule_applies(id);
       return;
     }
     const double target = rng.uniform() * total;
     double running = 0;
-    std::size_t pick = op.options.size();
-    for (std::size_t i = 0; i < op.options.size(); ++i) {
+    std::size_t pick = op.count;
+    for (std::size_t i = 0; i < op.count; ++i) {
       if (weight[i] <= 0) continue;
       running += weight[i];
       pick = i;
       if (target < running) break;
     }
-    node(op.options[pick].child, s, pick, key);
+    node(options[pick].child, s, pick, key);
   }
 
-  void no_rule_applies(const Node& n) {
+  [[gnu::cold, gnu::noinline]] void no_rule_applies(NodeId id) {
     // The choose is a rule's body when it is the running rule's.
     const RuleId rule = chain_.back().rule;
-    const bool is_body = &g_.node(g_.rules[rule].body) == &n;
+    const bool is_body = g_.rules[rule].body == id;
     std::string who = is_body ? "'" + g_.rules[rule].label + "'" : "the choice";
     if (opt_.strict)
-      fail_here(ErrorKind::Input, n.loc, "no rule of " + who + " applies (every condition is false or priority <= 0)",
+      fail_here(ErrorKind::Input, loc(id), "no rule of " + who + " applies (every condition is false or priority <= 0)",
                 "add a rule without a condition, or run without --strict to derive nothing there");
     if (is_body && warned_[rule]) return;
     if (is_body) warned_[rule] = true;
-    out_.warnings.push_back(format_warning(g_.source_name, n.loc,
+    out_.warnings.push_back(format_warning(g_.source_name, loc(id),
                                            "no rule of " + who + " applies here; it derives nothing (first seen via " +
                                                describe_chain() + ")"));
   }
 
-  void call(const Call& op, const Node& n, const Scope& s, std::uint64_t key, RandomStream& rng) {
-    if (chain_.size() >= opt_.limits.max_depth)
-      fail_here(ErrorKind::Limit, n.loc, "rule calls nested deeper than " + std::to_string(opt_.limits.max_depth),
-                "raise the limit with --max-depth, or check for recursion that never stops");
+  void call(const CallOp& op, NodeId id, const Scope& s, std::uint64_t key, RandomStream& rng) {
+    if (chain_.size() >= opt_.limits.max_depth) too_deep(id);
     // --max-depth counts calls; the stack holds bytes (stack_guard.hpp).
-    if (stack_.exhausted())
-      fail_here(ErrorKind::Limit, n.loc,
-                "rule calls nested " + std::to_string(chain_.size()) + " deep fill this thread's " +
-                    std::to_string(stack_.size() >> 20) + " MB stack (below --max-depth " +
-                    std::to_string(opt_.limits.max_depth) + ")",
-                "check for recursion that never stops; a grammar this deep needs a larger stack (ulimit -s)");
+    if (stack_.exhausted()) stack_full(id);
     // Arguments are evaluated in the caller's scope before the callee's frame exists.
-    const std::size_t base = params_.size();
-    for (const auto& a : op.args) {
-      const Value v = value(a, rng);
-      params_.push_back(v);
+    const std::size_t base = params_top_;
+    if (base + op.count > params_.size()) params_.resize(2 * (base + op.count));
+    for (std::uint32_t k = 0; k < op.count; ++k) {
+      // Evaluated before it is stored: value() may read the caller's
+      // arguments, which the resize above may have moved.
+      const Value v = value(prog_.args[op.first + k], rng);
+      params_[params_top_++] = v;
     }
-    chain_.push_back({op.rule, base, n.loc});
+    chain_.push_back({op.rule, base});
     const std::size_t caller_base = params_base_;
     params_base_ = base;
-    node(g_.rules[op.rule].body, s, 0, key);
+    node(op.body, s, 0, key);
     params_base_ = caller_base;
     chain_.pop_back();
-    params_.resize(base);
+    params_top_ = base;
+  }
+
+  [[noreturn, gnu::cold, gnu::noinline]] void too_deep(NodeId id) {
+    fail_here(ErrorKind::Limit, loc(id), "rule calls nested deeper than " + std::to_string(opt_.limits.max_depth),
+              "raise the limit with --max-depth, or check for recursion that never stops");
+  }
+
+  [[noreturn, gnu::cold, gnu::noinline]] void stack_full(NodeId id) {
+    fail_here(ErrorKind::Limit, loc(id),
+              "rule calls nested " + std::to_string(chain_.size()) + " deep fill this thread's " +
+                  std::to_string(stack_.size() >> 20) + " MB stack (below --max-depth " +
+                  std::to_string(opt_.limits.max_depth) + ")",
+              "check for recursion that never stops; a grammar this deep needs a larger stack (ulimit -s)");
+  }
+
+  void translate(const TransformOp& op, const Scope& s, std::uint64_t key, RandomStream& rng) {
+    glm::dvec3 d;
+    for (int i = 0; i < 3; ++i) {
+      const double v = number(op.amount[i], rng, "a T offset");
+      d[i] = op.relative[i] ? v * s.size[i] : v;
+    }
+    Scope moved = s;
+    moved.origin += s.frame * d;
+    node(op.child, moved, 0, key);
+  }
+
+  void scale(const TransformOp& op, const Scope& s, std::uint64_t key, RandomStream& rng) {
+    Scope resized = s;
+    for (int i = 0; i < 3; ++i) {
+      const double v = size_value(op.amount[i], rng, "an S size");
+      resized.size[i] = op.relative[i] ? v * s.size[i] : v;
+    }
+    node(op.child, resized, 0, key);
+  }
+
+  void colour(const ColourOp& op, NodeId id, const Scope& s, RandomStream& rng) {
+    Rgb c;
+    float* component[3] = {&c.red, &c.green, &c.blue};
+    for (int i = 0; i < 3; ++i)
+      *component[i] = static_cast<float>(std::clamp(number(op.rgb[i], rng, "a colour component"), 0.0, 1.0));
+    Terminal& t = emit(rect_label_, s, id);
+    t.coloured = true;
+    t.colour = c;
   }
 
   std::string describe_chain() const {
@@ -284,7 +435,7 @@ class Deriver {
         t += "(";
         for (std::size_t i = 0; i < r.params.size(); ++i) {
           t += (i ? ", " : "");
-          t += f.params + i < params_.size() ? params_[f.params + i].describe() : "?";
+          t += f.params + i < params_top_ ? params_[f.params + i].describe() : "?";
         }
         t += ")";
       }
@@ -303,105 +454,81 @@ class Deriver {
     return text.empty() ? "(none)" : text;
   }
 
+  const Program& prog_;
   const Grammar& g_;
   const DeriveOptions& opt_;
   Derivation& out_;
+  std::vector<Terminal>& terminals_;
   LabelId rect_label_ = 0;
   std::vector<Value> constants_;
-  std::vector<Value> params_;
+  std::vector<Value> params_;     // the arguments of every call in the chain, from 0 to params_top_
+  std::size_t params_top_ = 0;
   std::size_t params_base_ = 0;  // the running rule's first argument in params_
   std::vector<Frame> chain_;
   std::vector<bool> warned_;
   std::uint64_t operations_ = 0;
+  std::uint64_t terminals_left_ = opt_.limits.max_terminals;
   const StackGuard& stack_ = StackGuard::for_this_thread();
 };
 
-void Deriver::node(NodeId id, const Scope& s, std::uint64_t slot, std::uint64_t parent_key) {
-  const Node& n = g_.node(id);
-  count_operation(n.loc);
+void Deriver::node(const Target& t, const Scope& s, std::uint64_t slot, std::uint64_t parent_key) {
+  count_operation(t.node);
   // Leaves draw nothing and have no children: no key to compute.
-  if (const auto* p = std::get_if<Primitive>(&n.op)) return emit(p->label, s, n.loc);
-  if (std::holds_alternative<Nil>(n.op)) return;
+  if (t.kind == OpKind::Primitive) {
+    emit(t.index, s, t.node);
+    return;
+  }
+  if (t.kind == OpKind::Nil) return;
   const std::uint64_t key = child_key(parent_key, slot);
   RandomStream rng(key);
-  switch (n.op.index()) {
-    case 0: return split(*std::get_if<Split>(&n.op), s, key, rng);
-    case 1: {
-      const auto& op = *std::get_if<Repeat>(&n.op);
-      const Axis a = axis(op.axis, rng, "the axis of repeat");
-      const double tile = number(op.size, rng, "the tile size of repeat");
-      if (!(tile > 0))
-        fail_here(ErrorKind::Input, op.size.loc(), "the tile size of repeat is " + format_number(tile) + "; it must be > 0",
-                  "give a tile length in metres, or use repeatN(axis, count) for a number of tiles");
-      const double q = s.size[static_cast<int>(a)] / tile;
-      // ceil, forgiving float noise: 0.7 / 0.1 is 7.000000000000001 and means 7.
-      const double count = std::max(1.0, std::ceil(q - 1e-9 * std::max(1.0, q)));
-      if (count > double(opt_.limits.max_operations))
-        fail_here(ErrorKind::Limit, n.loc, "repeat would make " + format_number(count) + " tiles",
-                  "raise the limit with --max-operations, or use a larger tile size");
-      return tiles(a, s, static_cast<std::uint64_t>(count), op.child, n.loc, key);
-    }
-    case 2: {
-      const auto& op = *std::get_if<RepeatN>(&n.op);
-      const Axis a = axis(op.axis, rng, "the axis of repeatN");
-      const double count = std::round(number(op.count, rng, "the count of repeatN"));
-      if (count <= 0) return;
-      if (count > double(opt_.limits.max_operations))
-        fail_here(ErrorKind::Limit, op.count.loc(), "repeatN asks for " + format_number(count) + " tiles",
-                  "raise the limit with --max-operations, or ask for fewer tiles");
-      return tiles(a, s, static_cast<std::uint64_t>(count), op.child, n.loc, key);
-    }
-    case 3: return choose(*std::get_if<Choose>(&n.op), n, s, key, rng);
-    case 4: return call(*std::get_if<Call>(&n.op), n, s, key, rng);
-    case 7: {
-      const auto& op = *std::get_if<Translate>(&n.op);
-      glm::dvec3 d;
-      for (int i = 0; i < 3; ++i) {
-        const double v = number(op.offset[i].value, rng, "a T offset");
-        d[i] = op.offset[i].relative ? v * s.size[i] : v;
-      }
-      Scope moved = s;
-      moved.origin += s.frame * d;
-      return node(op.child, moved, 0, key);
-    }
-    case 8: {
-      const auto& op = *std::get_if<Scale>(&n.op);
-      Scope resized = s;
-      for (int i = 0; i < 3; ++i) {
-        const double v = size_value(op.size[i], rng, "an S size");
-        resized.size[i] = op.size[i].relative ? v * s.size[i] : v;
-      }
-      return node(op.child, resized, 0, key);
-    }
-    case 9: {
-      const auto& op = *std::get_if<Rotate>(&n.op);
+  switch (t.kind) {
+    case OpKind::Split: return split(prog_.splits[t.index], s, key, rng);
+    case OpKind::Repeat: return repeat(prog_.repeats[t.index], t.node, s, key, rng);
+    case OpKind::RepeatN: return repeat_n(prog_.repeats[t.index], t.node, s, key, rng);
+    case OpKind::Choose: return choose(prog_.chooses[t.index], t.node, s, key, rng);
+    case OpKind::Call: return call(prog_.calls[t.index], t.node, s, key, rng);
+    case OpKind::Translate: return translate(prog_.transforms[t.index], s, key, rng);
+    case OpKind::Scale: return scale(prog_.transforms[t.index], s, key, rng);
+    case OpKind::Rotate: {
+      const RotateOp& op = prog_.rotates[t.index];
       const Axis a = axis(op.axis, rng, "the axis of R");
       const double angle = number(op.angle, rng, "the angle of R");
       return node(op.child, rotated(s, a, angle), 0, key);
     }
-    case 10: {
-      const auto& op = *std::get_if<Comp>(&n.op);
-      for (const auto& part : op.parts)
-        node(part.child, face_scope(s, part.face), static_cast<std::uint64_t>(part.face), key);
+    case OpKind::Comp: {
+      const CompOp& op = prog_.comps[t.index];
+      for (std::uint32_t i = 0; i < op.count; ++i) {
+        const FaceOp& f = prog_.faces[op.first + i];
+        node(f.child, face_scope(s, f.face), static_cast<std::uint64_t>(f.face), key);
+      }
       return;
     }
-    case 11: {
-      const auto& op = *std::get_if<Colour>(&n.op);
-      const Rgb c{static_cast<float>(std::clamp(number(op.red, rng, "a colour component"), 0.0, 1.0)),
-                  static_cast<float>(std::clamp(number(op.green, rng, "a colour component"), 0.0, 1.0)),
-                  static_cast<float>(std::clamp(number(op.blue, rng, "a colour component"), 0.0, 1.0))};
-      return emit(rect_label_, s, n.loc, &c);
-    }
-    default: break;
+    case OpKind::Colour: return colour(prog_.colours[t.index], t.node, s, rng);
+    case OpKind::Primitive:
+    case OpKind::Nil: break;
   }
 }
 
 }  // namespace
 
-Derivation derive(const Grammar& grammar, const DeriveOptions& options) {
+Derivation derive(const Program& program, const DeriveOptions& options) {
+  // Terminals collect in a buffer this thread keeps from one derivation to
+  // the next, and leave as one exact-size copy: no growth on the hot path,
+  // and no spare capacity held by callers that keep many derivations.
+  thread_local std::vector<Terminal> buffer;
+  struct Trim {
+    ~Trim() {
+      buffer.clear();
+      if (buffer.capacity() > kKeptTerminals) std::vector<Terminal>().swap(buffer);
+    }
+  } trim;
+  buffer.clear();
   Derivation out;
-  Deriver(grammar, options, out).run();
+  Deriver(program, options, out, buffer).run();
+  out.terminals.assign(buffer.begin(), buffer.end());
   return out;
 }
+
+Derivation derive(const Grammar& grammar, const DeriveOptions& options) { return derive(compile(grammar), options); }
 
 }  // namespace vern

@@ -47,4 +47,9 @@ struct Derivation {
 // file:line:col and the rule chain.
 Derivation derive(const Grammar& grammar, const DeriveOptions& options);
 
+// The same with the grammar already compiled (forward/program.hpp), for
+// callers that derive it many times.
+struct Program;
+Derivation derive(const Program& program, const DeriveOptions& options);
+
 }  // namespace vern

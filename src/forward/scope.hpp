@@ -7,6 +7,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "graph/node.hpp"
 #include "graph/value.hpp"
@@ -21,13 +22,22 @@ struct Scope {
   // A point given in unit-box coordinates, in world space.
   glm::dvec3 to_world(const glm::dvec3& unit) const { return origin + frame * (unit * size); }
 
+  // The size along an axis. (glm's operator[] on a vector is a switch over
+  // the index; the derivation's hot path asks for sizes by runtime axis.)
+  double extent(Axis axis) const { return glm::value_ptr(size)[static_cast<int>(axis)]; }
+
   // The part [from, from + length) along an axis.
   Scope slice(Axis axis, double from, double length) const {
     Scope s = *this;
-    const auto a = static_cast<int>(axis);
-    s.origin += frame[a] * from;
-    s.size[a] = length;
+    s.slice_in_place(axis, from, length);
     return s;
+  }
+
+  // The same, on this scope when it is a copy already.
+  void slice_in_place(Axis axis, double from, double length) {
+    const auto a = static_cast<int>(axis);
+    origin += frame[a] * from;
+    glm::value_ptr(size)[a] = length;
   }
 
   friend bool operator==(const Scope&, const Scope&) = default;

@@ -7,6 +7,8 @@
 #include <mutex>
 #include <thread>
 
+#include "forward/program.hpp"
+
 namespace vern {
 
 std::string variant_name(std::uint32_t index) {
@@ -23,6 +25,8 @@ std::vector<Derivation> derive_variants(const Grammar& grammar, const VariantOpt
   std::atomic<std::uint32_t> done{0};
   std::atomic<bool> failed{false};
   std::mutex progress_mutex;
+  // Compiled once, read by every thread.
+  const Program program = compile(grammar);
 
   auto worker = [&] {
     while (!failed.load(std::memory_order_relaxed)) {
@@ -31,7 +35,7 @@ std::vector<Derivation> derive_variants(const Grammar& grammar, const VariantOpt
       try {
         DeriveOptions o = options.derive;
         o.seed = options.derive.seed + i;
-        out[i] = derive(grammar, o);
+        out[i] = derive(program, o);
       } catch (...) {
         errors[i] = std::current_exception();
         failed = true;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <utility>
 
 #include <glm/gtc/quaternion.hpp>
@@ -176,6 +177,22 @@ class AccessorReader {
   bool normalized_ = false;
 };
 
+// translation * rotation * scale, as glTF composes them; the rotation is
+// x, y, z, w as glTF stores it.
+glm::dmat4 trs_matrix(const glm::dvec3* translation, const glm::dvec4* rotation, const glm::dvec3* scale) {
+  glm::dmat4 m(1.0);
+  if (translation) m[3] = glm::dvec4(*translation, 1.0);
+  if (rotation) {
+    const glm::dquat q(rotation->w, rotation->x, rotation->y, rotation->z);
+    const glm::dmat3 r = glm::mat3_cast(glm::normalize(q));
+    for (int c = 0; c < 3; ++c) m[c] = glm::dvec4(r[c], 0.0);
+  }
+  if (scale) {
+    for (int c = 0; c < 3; ++c) m[c] *= (*scale)[c];
+  }
+  return m;
+}
+
 glm::dmat4 local_matrix(const tinygltf::Node& n) {
   if (n.matrix.size() == 16) {
     glm::dmat4 m(1.0);
@@ -183,17 +200,62 @@ glm::dmat4 local_matrix(const tinygltf::Node& n) {
       for (int r = 0; r < 4; ++r) m[c][r] = n.matrix[static_cast<std::size_t>(4 * c + r)];
     return m;
   }
-  glm::dmat4 m(1.0);
-  if (n.translation.size() == 3) m[3] = glm::dvec4(n.translation[0], n.translation[1], n.translation[2], 1.0);
-  if (n.rotation.size() == 4) {
-    const glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);  // glTF stores x, y, z, w
-    const glm::dmat3 r = glm::mat3_cast(glm::normalize(q));
-    for (int c = 0; c < 3; ++c) m[c] = glm::dvec4(r[c], 0.0);
+  const auto& t = n.translation;
+  const auto& r = n.rotation;
+  const auto& s = n.scale;
+  const glm::dvec3 translation = t.size() == 3 ? glm::dvec3(t[0], t[1], t[2]) : glm::dvec3(0.0);
+  const glm::dvec4 rotation = r.size() == 4 ? glm::dvec4(r[0], r[1], r[2], r[3]) : glm::dvec4(0.0);
+  const glm::dvec3 scale = s.size() == 3 ? glm::dvec3(s[0], s[1], s[2]) : glm::dvec3(1.0);
+  return trs_matrix(t.size() == 3 ? &translation : nullptr, r.size() == 4 ? &rotation : nullptr,
+                    s.size() == 3 ? &scale : nullptr);
+}
+
+// EXT_mesh_gpu_instancing (what `generate --instancing` writes): the node's
+// mesh is drawn once per instance, each placed by its own translation,
+// rotation and scale before the node's own world matrix. Returns each
+// instance's matrix, or nothing when the node is not instanced.
+std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& model, const tinygltf::Node& node,
+                                                         const std::string& source, const std::string& who) {
+  const auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
+  if (ext == node.extensions.end()) return std::nullopt;
+  auto broken = [&](const std::string& problem) {
+    fail(ErrorKind::Input, source, {}, who + ": its EXT_mesh_gpu_instancing " + problem,
+         "export the file again, or check it with scripts/validate-gltf");
+  };
+  if (!ext->second.IsObject() || !ext->second.Has("attributes") || !ext->second.Get("attributes").IsObject())
+    broken("extension has no attributes");
+  const tinygltf::Value& attributes = ext->second.Get("attributes");
+  struct Attribute {
+    const char* name;
+    int components;
+    std::optional<AccessorReader> reader;
+  };
+  Attribute wanted[3] = {{"TRANSLATION", 3, {}}, {"ROTATION", 4, {}}, {"SCALE", 3, {}}};
+  std::optional<std::size_t> count;
+  for (Attribute& a : wanted) {
+    if (!attributes.Has(a.name)) continue;
+    const tinygltf::Value& index = attributes.Get(a.name);
+    if (!index.IsInt()) broken(std::string(a.name) + " is not an accessor index");
+    a.reader.emplace(model, index.GetNumberAsInt(), source, who + ": its instance " + a.name + " accessor");
+    if (a.reader->components() != a.components)
+      broken(std::string(a.name) + " must hold " + std::to_string(a.components) + " numbers per instance");
+    if (count && *count != a.reader->count()) broken("attributes hold different numbers of instances");
+    count = a.reader->count();
   }
-  if (n.scale.size() == 3) {
-    for (int c = 0; c < 3; ++c) m[c] *= n.scale[static_cast<std::size_t>(c)];
+  if (!count) broken("extension names none of TRANSLATION, ROTATION and SCALE");
+  std::vector<glm::dmat4> matrices;
+  matrices.reserve(*count);
+  for (std::size_t i = 0; i < *count; ++i) {
+    glm::dvec3 t(0.0), s(1.0);
+    glm::dvec4 r(0.0, 0.0, 0.0, 1.0);
+    if (wanted[0].reader) t = {wanted[0].reader->get(i, 0), wanted[0].reader->get(i, 1), wanted[0].reader->get(i, 2)};
+    if (wanted[1].reader)
+      r = {wanted[1].reader->get(i, 0), wanted[1].reader->get(i, 1), wanted[1].reader->get(i, 2),
+           wanted[1].reader->get(i, 3)};
+    if (wanted[2].reader) s = {wanted[2].reader->get(i, 0), wanted[2].reader->get(i, 1), wanted[2].reader->get(i, 2)};
+    matrices.push_back(trs_matrix(&t, &r, &s));
   }
-  return m;
+  return matrices;
 }
 
 // OBJ refuses such numbers where it reads them (obj_reader.hpp); so does glTF.
@@ -376,29 +438,40 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
                std::to_string(model.meshes.size()) + " mesh" + (model.meshes.size() == 1 ? "" : "es"),
            "export the file again, or check it with scripts/validate-gltf");
     }
-    if (ex.boxes.size() >= limits.max_parts) {
-      fail(ErrorKind::Limit, ex.source, {},
-           "more than " + std::to_string(limits.max_parts) + " labelled parts: reading stopped at " + who,
-           too_many_parts_hint(limits));
-    }
-
     if (node.name.empty()) {
       fail(ErrorKind::Input, ex.source, {}, who + " has a mesh but no name: inference cannot tell which primitive it is",
            "name each part's node after its primitive (e.g. `window.001`)");
     }
-    Mesh mesh;
-    append_mesh(model, model.meshes[static_cast<std::size_t>(node.mesh)], world, ex.source, who, mesh);
-    if (mesh.positions.empty()) {
-      fail(ErrorKind::Input, ex.source, {}, who + " has a mesh without vertex positions",
-           "export the file again with geometry for every named part");
+    const tinygltf::Mesh& gmesh = model.meshes[static_cast<std::size_t>(node.mesh)];
+    // An instanced node is one part per instance. Its name is the mesh's,
+    // "label" or "label colour_xxxxxx" (gltf_writer.hpp): the label is the
+    // first word.
+    const auto instances = instance_matrices(model, node, ex.source, who);
+    const std::size_t parts = instances ? instances->size() : 1;
+    const std::string name = instances ? node.name.substr(0, node.name.find(' ')) : node.name;
+    for (std::size_t i = 0; i < parts; ++i) {
+      const std::string part = instances ? who + " instance " + std::to_string(i) : who;
+      if (ex.boxes.size() >= limits.max_parts) {
+        fail(ErrorKind::Limit, ex.source, {},
+             "more than " + std::to_string(limits.max_parts) + " labelled parts: reading stopped at " + part,
+             too_many_parts_hint(limits));
+      }
+      Mesh mesh;
+      append_mesh(model, gmesh, instances ? world * (*instances)[i] : world, ex.source, part, mesh);
+      if (mesh.positions.empty()) {
+        fail(ErrorKind::Input, ex.source, {}, part + " has a mesh without vertex positions",
+             "export the file again with geometry for every named part");
+      }
+      // The part's shape becomes its primitive's mesh, which needs faces.
+      if (mesh.face_sizes.empty()) {
+        fail(ErrorKind::Input, ex.source, {}, part + " has no triangles: its mesh holds only points or lines",
+             "export the part as a surface (triangles), or leave it out");
+      }
+      LabelledBox box = box_of(name, 0, mesh, ex.meshes.size());
+      if (instances) box.object = node.name + " (instance " + std::to_string(i) + ")";
+      ex.boxes.push_back(std::move(box));
+      ex.meshes.push_back(std::move(mesh));
     }
-    // The part's shape becomes its primitive's mesh, which needs faces.
-    if (mesh.face_sizes.empty()) {
-      fail(ErrorKind::Input, ex.source, {}, who + " has no triangles: its mesh holds only points or lines",
-           "export the part as a surface (triangles), or leave it out");
-    }
-    ex.boxes.push_back(box_of(node.name, 0, mesh, ex.meshes.size()));
-    ex.meshes.push_back(std::move(mesh));
   }
   if (ex.boxes.empty()) {
     fail(ErrorKind::Input, ex.source, {}, "has no labelled objects; each part must be a named glTF node with a mesh",

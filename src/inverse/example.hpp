@@ -48,7 +48,8 @@ struct ExampleLimits {
 
 // Reads a labelled example: .obj (each object one part), .glb or .gltf
 // (each node with a mesh one part, its world transform applied; the name is
-// required). Throws vern::Error: Io when the file is missing or unreadable,
+// required; a node with EXT_mesh_gpu_instancing, as `generate --instancing`
+// writes, is one part per instance, labelled by the name's first word). Throws vern::Error: Io when the file is missing or unreadable,
 // Input when it holds no labelled parts, geometry without a name, a part
 // that is a single point (no extent on any axis, within
 // default_tolerance), a vertex that is not finite or beyond
