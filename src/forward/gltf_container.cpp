@@ -20,24 +20,21 @@ std::size_t padded(std::size_t n) { return (n + 3) & ~std::size_t{3}; }
 
 }  // namespace
 
-std::string glb_file(std::string file, std::string_view bin) {
+std::string glb_head(std::string file, std::string_view bin) {
   if (file.size() < kGlbJsonOffset) throw Error(ErrorKind::Internal, "error: GLB text without room for its header");
+  if (bin.size() % 4 != 0) throw Error(ErrorKind::Internal, "error: a GLB binary chunk not padded to 4 bytes");
   const std::size_t json = file.size() - kGlbJsonOffset;
   const std::size_t json_length = padded(json);
-  const std::size_t bin_length = padded(bin.size());
-  const std::size_t total = kGlbJsonOffset + json_length + (bin.empty() ? 0 : 8 + bin_length);
+  const std::size_t total = kGlbJsonOffset + json_length + (bin.empty() ? 0 : 8 + bin.size());
   if (total > 0xffffffffu) {
     fail(ErrorKind::Limit, "glTF output", {}, "the scene needs " + std::to_string(total >> 20) +
                                                   " MiB, more than a GLB file can hold (4 GiB)",
          "write fewer variants per file (-o a folder), or use --instancing to store terminals compactly");
   }
-  file.reserve(total);
   file.append(json_length - json, ' ');
   if (!bin.empty()) {
-    put_u32(file, static_cast<std::uint32_t>(bin_length));
+    put_u32(file, static_cast<std::uint32_t>(bin.size()));
     file.append("BIN\0", 4);
-    file.append(bin);
-    file.append(bin_length - bin.size(), '\0');
   }
   std::string header;
   header.append("glTF", 4);

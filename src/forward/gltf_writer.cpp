@@ -99,6 +99,17 @@ class BinaryBuffer {
     return static_cast<int>(views_.size() - 1);
   }
 
+  // A new view of `bytes` bytes to be filled through data(view) (aligned
+  // to 4): large arrays are written in place, not built and copied.
+  int reserve_view(std::size_t bytes, int target) {
+    bytes_.resize((bytes_.size() + 3) & ~std::size_t{3}, '\0');
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + bytes);
+    views_.push_back({at, bytes, target});
+    return static_cast<int>(views_.size() - 1);
+  }
+  float* floats(int view) { return reinterpret_cast<float*>(bytes_.data() + views_[static_cast<std::size_t>(view)].offset); }
+
   int add_accessor(Accessor a) {
     accessors_.push_back(std::move(a));
     return static_cast<int>(accessors_.size() - 1);
@@ -298,11 +309,20 @@ class Document {
   // first use, their transforms in three views (T, R, S) that every group's
   // accessors slice.
   void gather_instances() {
-    std::vector<float> translations, rotations, scales;
-    struct Slice {
-      std::size_t first = 0, count = 0;
-    };
-    std::vector<Slice> slices;
+    const std::size_t total = mesh_of_terminal_.size();
+    if (total == 0) {
+      groups_per_variant_.assign(scene_.variants.size(), 0);
+      return;
+    }
+    // The transforms go straight into the buffer (about 40 bytes a
+    // terminal: a thousand city blocks hold two million).
+    const int t = buffer_.reserve_view(total * 12, kNoTarget);
+    const int r = buffer_.reserve_view(total * 16, kNoTarget);
+    const int s = buffer_.reserve_view(total * 12, kNoTarget);
+    float* translations = buffer_.floats(t);
+    float* rotations = buffer_.floats(r);
+    float* scales = buffer_.floats(s);
+    std::size_t written = 0;  // instances so far
     std::vector<int> group_of_mesh(meshes_.size(), -1);
     std::size_t next = 0;  // index into mesh_of_terminal_
     for (const Variant& variant : scene_.variants) {
@@ -318,29 +338,26 @@ class Document {
         }
         members[static_cast<std::size_t>(group) - first_group].push_back(static_cast<std::uint32_t>(i));
       }
-      for (const std::vector<std::uint32_t>& group : members) {
-        slices.push_back({translations.size() / 3, group.size()});
-        for (const std::uint32_t i : group) append_instance(variant.terminals[i].scope, translations, rotations, scales);
+      for (std::size_t k = 0; k < members.size(); ++k) {
+        InstanceGroup& g = groups_[first_group + k];
+        const std::size_t count = members[k].size();
+        g.translation = buffer_.add_accessor({t, written * 12, kFloat, "VEC3", count, {}, {}});
+        g.rotation = buffer_.add_accessor({r, written * 16, kFloat, "VEC4", count, {}, {}});
+        g.scale = buffer_.add_accessor({s, written * 12, kFloat, "VEC3", count, {}, {}});
+        for (const std::uint32_t i : members[k]) {
+          write_instance(variant.terminals[i].scope, translations + 3 * written, rotations + 4 * written,
+                         scales + 3 * written);
+          ++written;
+        }
       }
       groups_per_variant_.push_back(groups_.size() - first_group);
       next += variant.terminals.size();
-    }
-    if (groups_.empty()) return;
-    const int t = buffer_.add_view(std::span<const float>(translations), kNoTarget);
-    const int r = buffer_.add_view(std::span<const float>(rotations), kNoTarget);
-    const int s = buffer_.add_view(std::span<const float>(scales), kNoTarget);
-    for (std::size_t g = 0; g < groups_.size(); ++g) {
-      const Slice& slice = slices[g];
-      groups_[g].translation = buffer_.add_accessor({t, slice.first * 12, kFloat, "VEC3", slice.count, {}, {}});
-      groups_[g].rotation = buffer_.add_accessor({r, slice.first * 16, kFloat, "VEC4", slice.count, {}, {}});
-      groups_[g].scale = buffer_.add_accessor({s, slice.first * 12, kFloat, "VEC3", slice.count, {}, {}});
     }
   }
 
   // T, R, S of a scope: frame * diag(size) = rotation * diag(scale). A
   // mirrored frame (determinant -1) moves its mirror into the x scale.
-  static void append_instance(const Scope& scope, std::vector<float>& translations, std::vector<float>& rotations,
-                              std::vector<float>& scales) {
+  static void write_instance(const Scope& scope, float* translation, float* rotation, float* scale) {
     glm::dmat3 frame = scope.frame;
     glm::dvec3 size = drawable_size(scope);
     if (glm::determinant(frame) < 0.0) {
@@ -348,9 +365,12 @@ class Document {
       size.x = -size.x;
     }
     const glm::dquat q = glm::normalize(glm::quat_cast(frame));
-    for (int i = 0; i < 3; ++i) translations.push_back(static_cast<float>(scope.origin[i]));
-    for (const double c : {q.x, q.y, q.z, q.w}) rotations.push_back(static_cast<float>(c));
-    for (int i = 0; i < 3; ++i) scales.push_back(static_cast<float>(size[i]));
+    const double xyzw[4] = {q.x, q.y, q.z, q.w};
+    for (int i = 0; i < 3; ++i) {
+      translation[i] = static_cast<float>(scope.origin[i]);
+      scale[i] = static_cast<float>(size[i]);
+    }
+    for (int i = 0; i < 4; ++i) rotation[i] = static_cast<float>(xyzw[i]);
   }
 
   void write_scene_list(JsonText& json) const {
@@ -453,8 +473,10 @@ class Document {
 
 std::string glb_bytes(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options) {
   Document document(scene, library, options);
-  const std::string& bin = document.binary();
-  return glb_file(document.json(nullptr, kGlbJsonOffset), bin);
+  const std::string& bin = document.binary();  // padded to 4 bytes
+  std::string file = glb_head(document.json(nullptr, kGlbJsonOffset), bin);
+  file.append(bin);
+  return file;
 }
 
 std::string gltf_text(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options) {
@@ -469,7 +491,13 @@ void write_gltf(const Scene& scene, const PrimitiveLibrary& library, const std::
                 GltfOptions options) {
   const std::string ext = path.extension().string();
   if (ext == ".glb" || ext == ".GLB") {
-    write_file_atomically(path, glb_bytes(scene, library, options));
+    // Head and binary chunk written one after the other: a thousand city
+    // blocks' buffer is not copied into one string first.
+    Document document(scene, library, options);
+    const std::string& bin = document.binary();
+    const std::string head = glb_head(document.json(nullptr, kGlbJsonOffset), bin);
+    const std::string_view pieces[] = {head, bin};
+    write_file_atomically(path, pieces);
   } else if (ext == ".gltf" || ext == ".GLTF") {
     write_file_atomically(path, gltf_text(scene, library, options));
   } else {

@@ -58,6 +58,10 @@ void install_interrupt_cleanup() {
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  write_file_atomically(path, std::span<const std::string_view>(&content, 1));
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::span<const std::string_view> pieces) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
@@ -68,17 +72,19 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   const int fd = mkstemp(temp.data());
   if (fd < 0) io_error(path, "cannot create a temporary file in " + folder.string(), errno);
   PendingGuard guard(temp.c_str());
-  std::size_t written = 0;
-  while (written < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      const int err = errno;
-      ::close(fd);
-      ::unlink(temp.c_str());
-      io_error(path, "cannot write", err);
+  for (const std::string_view content : pieces) {
+    std::size_t written = 0;
+    while (written < content.size()) {
+      const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        const int err = errno;
+        ::close(fd);
+        ::unlink(temp.c_str());
+        io_error(path, "cannot write", err);
+      }
+      written += static_cast<std::size_t>(n);
     }
-    written += static_cast<std::size_t>(n);
   }
   // mkstemp creates 0600; outputs are ordinary files.
   fchmod(fd, 0644);
