@@ -381,5 +381,40 @@ TEST(BoxSplit, HundredThousandGuillotineBoxesSplitIntoAsManyLeaves) {
   EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(n));
 }
 
+// The same shape: kinds, axes and boxes equal, extents within tolerance.
+void expect_same_shape(const SplitTree& a, const SplitTree& b, double tolerance, std::size_t& differences) {
+  if (a.kind != b.kind || a.axis != b.axis || a.box != b.box || a.children.size() != b.children.size()) {
+    ++differences;
+    return;
+  }
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(a.min[i] - b.min[i]) > tolerance || std::abs(a.max[i] - b.max[i]) > tolerance) ++differences;
+  for (std::size_t i = 0; i < a.children.size(); ++i) expect_same_shape(a.children[i], b.children[i], tolerance, differences);
+}
+
+// Thousands of parts (the sort takes its radix path) whose every bound an
+// exporter moved by float noise: snapping gives the tree of the exact
+// parts, though no coordinate is shared exactly any more.
+TEST(BoxSplit, NoiseOnEveryBoundOfALargeBuildingChangesNothing) {
+  std::mt19937_64 rng(99);
+  std::vector<LabelledBox> exact;
+  guillotine({0, 0, 0}, {400, 300, 200}, 20'000, rng, exact);
+  std::vector<LabelledBox> noisy = exact;
+  std::uniform_real_distribution<double> noise(-2e-9, 2e-9);
+  for (LabelledBox& b : noisy) {
+    for (int a = 0; a < 3; ++a) {
+      b.min[a] += noise(rng);
+      b.max[a] += noise(rng);
+    }
+  }
+  const double tolerance = default_tolerance(test::example_of(exact));
+  const SplitTree t = split_boxes(exact, {tolerance});
+  const SplitTree u = split_boxes(noisy, {tolerance});
+  EXPECT_EQ(split_tree_stats(u).leaves, exact.size());
+  std::size_t differences = 0;
+  expect_same_shape(t, u, 1e-8, differences);
+  EXPECT_EQ(differences, 0u);
+}
+
 }  // namespace
 }  // namespace vern

@@ -523,12 +523,15 @@ std::string write_grammar(const Grammar& g, const WriteOptions& options) {
   if (g.rules.empty()) cannot_write("a grammar with no rules");
   if (g.start_rule >= g.rules.size()) cannot_write("the start rule does not exist");
   const Rule& start = g.rules[g.start_rule];
-  if (!start.params.empty()) cannot_write("the start rule '" + start.label + "' takes parameters");
 
   std::vector<std::string> header;
   // Reading without @start starts at the first rule; a grammar that starts
   // elsewhere says so even if its @start was never written.
-  if (g.start_written || start.label != g.rules.front().label) header.push_back("@start " + start.label);
+  const bool named_start = g.start_written || start.label != g.rules.front().label;
+  // The parser lets a default start rule take parameters (generate --start
+  // may name another), but not one that @start names.
+  if (named_start && !start.params.empty()) cannot_write("the start rule '" + start.label + "' takes parameters");
+  if (named_start) header.push_back("@start " + start.label);
 
   std::string scope;
   if (!g.scope[0].empty()) {

@@ -14,6 +14,23 @@
 // O(n), and each round of three sweeps makes the tree at least one level
 // deeper: O(n log n + n m) for n boxes and a tree m levels deep.
 //
+// How it is laid out here (same results, measured 5x faster at 1,000,000
+// boxes): a container's sweep reads only its own boxes' bounds, so instead
+// of one sweep over all bounds per axis, each container owns one segment of
+// the three sorted arrays of bounds (the same positions in all three: every
+// box has two bounds per axis) and is swept on its own, the counter kept in
+// a register. Cutting a container along an axis leaves that axis's segment
+// already grouped by piece; the other two axes' segments are regrouped by a
+// stable counting pass, so every segment stays sorted. The work per tree
+// level is the same O(n) as the thesis's, but it streams through memory
+// instead of jumping between containers, and nothing is allocated per
+// container. Containers are taken from a stack, not level by level: a
+// container's result does not depend on when it is cut. The axes a
+// container tries are those a global round of x, y, z sweeps would give it:
+// the root x, y, z; a piece of a cut along a, a + 1 and then a + 2 (along a
+// it was already swept). The bounds are sorted by radix sort on their
+// order-preserving bit patterns (11 bits a pass), ties in input order.
+//
 // What this file adds to the thesis:
 //   - Snapping: per axis, the sorted coordinates fall into runs whose
 //     neighbours lie within the tolerance; each run is one rank. Every
@@ -38,7 +55,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 #include "graph/error.hpp"
@@ -75,28 +95,20 @@ struct Span {
   }
 };
 
-// A bound in an axis's sweep order, carrying what the sweep reads so that
-// the sweep streams through memory instead of chasing boxes.
-struct Event {
-  std::uint32_t box_close = 0;  // box << 1 | (1 for a max bound)
-  Rank rank = 0;
-  double value = 0;  // the coordinate
-};
+// An event is a bound in an axis's sweep order, written box << 1 | (1 for a
+// max bound): 4 bytes, so sweeps and regrouping stream little memory. Its
+// rank and coordinate are looked up only where a piece begins or ends.
+using Event = std::uint32_t;
 
-enum class State : std::uint8_t { Active, Leaf, Split, Unsplittable };
-
-struct Container {
+// A container waiting to be cut: its segment [begin, end) of every axis's
+// events, its extent, and the axes it has still to try.
+struct Work {
+  SplitTree* node = nullptr;  // where its result goes
+  std::uint32_t begin = 0, end = 0;
   std::array<Rank, 3> lo{}, hi{};
-  std::array<double, 3> lo_val{}, hi_val{};  // the extent's coordinates
-  State state = State::Active;
-  int axis = -1;
-  std::uint8_t fails = 0;                // consecutive sweeps that did not divide it
-  std::vector<std::uint32_t> boxes;      // while Active, and when final: its boxes
-  std::vector<std::uint32_t> children;   // Split: child containers in order
-  // The current sweep's state.
-  std::uint32_t pass = kNone;
-  std::uint32_t unmatched = 0;
-  std::vector<Span> spans;
+  std::array<double, 3> lo_val{}, hi_val{};
+  int first_axis = 0;  // tries first_axis, first_axis + 1, ... (mod 3)
+  int tries = 3;
 };
 
 std::string amount(double v) {
@@ -105,238 +117,388 @@ std::string amount(double v) {
   return text;
 }
 
+// A double's bits as an unsigned integer in the same order (no NaNs here;
+// -0 sorts just before +0, which the rank pass treats as equal).
+std::uint64_t ordered_bits(double v) {
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  return (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t{1} << 63);
+}
+
+double from_ordered_bits(std::uint64_t k) {
+  return std::bit_cast<double>((k >> 63) != 0 ? k & ~(std::uint64_t{1} << 63) : ~k);
+}
+
+// A bound to sort: its coordinate's ordered bits and box << 1 | is_max.
+// Packed to 12 bytes: the radix sort's passes move a quarter less memory.
+struct __attribute__((packed)) Bound {
+  std::uint64_t key = 0;
+  std::uint32_t id = 0;
+};
+
+// Stable LSD radix sort of bounds by key, 11 bits a pass (2048 buckets keep
+// the scatter's write streams in cache); passes whose digit is the same
+// for every key are skipped. Small inputs use std::sort: ids ascend within
+// a key there too, as the stable sort leaves them.
+void radix_sort(std::vector<Bound>& bounds) {
+  const std::size_t n = bounds.size();
+  if (n < 4096) {
+    std::sort(bounds.begin(), bounds.end(),
+              [](const Bound& p, const Bound& q) { return p.key != q.key ? p.key < q.key : p.id < q.id; });
+    return;
+  }
+  constexpr int kBits = 11, kPasses = 6;
+  constexpr std::uint64_t kMask = (1u << kBits) - 1;
+  std::vector<std::array<std::uint32_t, 1u << kBits>> counts(kPasses);
+  for (auto& c : counts) c.fill(0);
+  for (const Bound& b : bounds)
+    for (int d = 0; d < kPasses; ++d) ++counts[static_cast<std::size_t>(d)][(b.key >> (kBits * d)) & kMask];
+  std::vector<Bound> other(n);
+  for (int d = 0; d < kPasses; ++d) {
+    auto& count = counts[static_cast<std::size_t>(d)];
+    const int shift = kBits * d;
+    if (count[(bounds[0].key >> shift) & kMask] == n) continue;
+    std::uint32_t sum = 0;
+    for (auto& c : count) {
+      const std::uint32_t here = c;
+      c = sum;
+      sum += here;
+    }
+    for (const Bound& b : bounds) other[count[(b.key >> shift) & kMask]++] = b;
+    bounds.swap(other);
+  }
+}
+
 class Splitter {
  public:
   Splitter(const std::vector<LabelledBox>& boxes, double tolerance, const std::string& source)
-      : boxes_(boxes), source_(source), lo_(boxes.size()), hi_(boxes.size()), owner_(boxes.size(), 0),
-        span_of_(boxes.size(), 0) {
-    for (int a = 0; a < 3; ++a) rank_axis(a, tolerance);
+      : boxes_(boxes), source_(source), span_of_(boxes.size(), 0) {
+    // One pass over the boxes (they are large; the bounds are not): check
+    // them, measure the root, and list every axis's bounds to sort.
+    const std::size_t n = boxes.size();
+    std::array<std::vector<Bound>, 3> bounds;
+    for (auto& list : bounds) list.resize(2 * n);
+    root_lo_.fill(std::numeric_limits<double>::infinity());
+    root_hi_.fill(-std::numeric_limits<double>::infinity());
+    for (std::uint32_t b = 0; b < n; ++b) {
+      const LabelledBox& box = boxes[b];
+      for (glm::length_t a = 0; a < 3; ++a) {
+        if (!(box.min[a] <= box.max[a])) {  // also catches NaN
+          fail(ErrorKind::Input, source, {box.line, box.line != 0 ? 1u : 0u},
+               "object " + describe_object(box) + " has a box whose minimum exceeds its maximum (or is not a number)",
+               "give each part real geometry");
+        }
+        const auto ax = static_cast<std::size_t>(a);
+        root_lo_[ax] = std::min(root_lo_[ax], box.min[a]);
+        root_hi_[ax] = std::max(root_hi_[ax], box.max[a]);
+        bounds[ax][2 * b] = {ordered_bits(box.min[a]), b << 1};
+        bounds[ax][2 * b + 1] = {ordered_bits(box.max[a]), (b << 1) | 1u};
+      }
+    }
+    for (std::size_t a = 0; a < 3; ++a) {
+      radix_sort(bounds[a]);
+      rank_axis(a, bounds[a], tolerance);
+      bounds[a] = {};
+    }
+    scratch_.resize(2 * n);
+    scratch2_.resize(2 * n);
+    starts_.resize(2 * n + 1);
   }
 
   SplitTree run() {
     // The root is the bounds of all boxes.
-    Container root;
+    SplitTree root;
+    Work w;
+    w.node = &root;
+    w.end = static_cast<std::uint32_t>(2 * boxes_.size());
     for (std::size_t a = 0; a < 3; ++a) {
-      root.lo[a] = 0;
-      root.hi[a] = ranks_[a] - 1;
-      root.lo_val[a] = std::numeric_limits<double>::infinity();
-      root.hi_val[a] = -std::numeric_limits<double>::infinity();
-      for (const LabelledBox& b : boxes_) {
-        root.lo_val[a] = std::min(root.lo_val[a], b.min[static_cast<glm::length_t>(a)]);
-        root.hi_val[a] = std::max(root.hi_val[a], b.max[static_cast<glm::length_t>(a)]);
-      }
+      w.lo[a] = 0;
+      w.hi[a] = ranks_[a] - 1;
     }
-    root.boxes.resize(boxes_.size());
-    for (std::uint32_t b = 0; b < boxes_.size(); ++b) root.boxes[b] = b;
-    containers_.push_back(std::move(root));
-    active_ = 1;
-    settle(0);
-
-    // Each sweep divides or fails every active container, and a container
-    // failing on all three axes is final, so this ends; the guard only
-    // turns a broken invariant into an error instead of a hang.
-    const std::uint64_t max_passes = 3 * (6 * static_cast<std::uint64_t>(boxes_.size()) + 4);
-    for (std::uint32_t pass = 0; active_ > 0; ++pass) {
-      if (pass > max_passes) {
-        throw Error(ErrorKind::Internal, format_message(source_, {}, "box splitting did not finish (a bug)"));
-      }
-      sweep(static_cast<int>(pass % 3), pass);
+    w.lo_val = root_lo_;
+    w.hi_val = root_hi_;
+    stack_.push_back(w);
+    while (!stack_.empty()) {
+      const Work next = stack_.back();
+      stack_.pop_back();
+      cut(next);
     }
     check_overlaps();
-    return build(0);
+    return root;
   }
 
  private:
-  // Snaps and ranks the coordinates along axis a, and sorts the sweep events.
-  void rank_axis(int a, double tolerance) {
-    const auto ax = static_cast<std::size_t>(a);
+  // Snaps and ranks the coordinates along axis a (its bounds sorted), and
+  // puts the sweep events in order.
+  void rank_axis(std::size_t ax, const std::vector<Bound>& bounds, double tolerance) {
     const std::size_t n = boxes_.size();
-    std::vector<std::pair<double, std::uint32_t>> bounds;  // (coordinate, box << 1 | is_max)
-    bounds.reserve(2 * n);
-    for (std::uint32_t b = 0; b < n; ++b) {
-      bounds.emplace_back(boxes_[b].min[a], b << 1);
-      bounds.emplace_back(boxes_[b].max[a], (b << 1) | 1u);
-    }
-    std::sort(bounds.begin(), bounds.end());
-    Rank ranks = 0;
+    // A new rank starts where the gap to the previous coordinate exceeds
+    // the tolerance: coordinates within tolerance of a neighbour share one.
+    std::vector<Rank>& lo = lo_[ax];
+    std::vector<Rank>& hi = hi_[ax];
+    lo.resize(n);
+    hi.resize(n);
+    std::vector<std::uint32_t> run_start;  // first position of each rank
+    double previous = 0;
     for (std::size_t i = 0; i < bounds.size(); ++i) {
-      // A new rank starts where the gap to the previous coordinate exceeds
-      // the tolerance: coordinates within tolerance of a neighbour share one.
-      if (i == 0 || bounds[i].first - bounds[i - 1].first > tolerance) ++ranks;
-      const Rank rank = ranks - 1;
-      const std::uint32_t b = bounds[i].second >> 1;
-      ((bounds[i].second & 1u) != 0 ? hi_[b] : lo_[b])[ax] = rank;
+      const double v = from_ordered_bits(bounds[i].key);
+      if (i == 0 || v - previous > tolerance) run_start.push_back(static_cast<std::uint32_t>(i));
+      previous = v;
+      const auto rank = static_cast<Rank>(run_start.size() - 1);
+      ((bounds[i].id & 1u) != 0 ? hi : lo)[bounds[i].id >> 1] = rank;
     }
-    ranks_[ax] = ranks;
+    ranks_[ax] = static_cast<Rank>(run_start.size());
+    run_start.push_back(static_cast<std::uint32_t>(bounds.size()));
 
-    std::vector<std::uint64_t> keys;
-    keys.reserve(2 * n);
-    for (std::uint32_t b = 0; b < n; ++b) {
-      const bool flat = lo_[b][ax] == hi_[b][ax];
-      keys.push_back(key(lo_[b][ax], flat ? kOpenFlat : kOpenSolid, b));
-      keys.push_back(key(hi_[b][ax], flat ? kCloseFlat : kCloseSolid, b));
-    }
-    std::sort(keys.begin(), keys.end());
+    // Within a rank, events go by order class, then by box. A rank whose
+    // bounds all have one coordinate (bit for bit) keeps it, so the sweep
+    // need not visit the boxes there; NaN marks a rank of snapped values.
     std::vector<Event>& events = events_[ax];
-    events.reserve(keys.size());
-    for (std::uint64_t k : keys) {
-      const std::uint64_t order = (k >> 32) & 3u;
-      const bool close = order == kCloseSolid || order == kCloseFlat;
-      const auto b = static_cast<std::uint32_t>(k & 0xffffffffu);
-      events.push_back({(b << 1) | (close ? 1u : 0u), static_cast<Rank>(k >> 34),
-                        close ? boxes_[b].max[a] : boxes_[b].min[a]});
+    events.resize(2 * n);
+    std::vector<double>& value = rank_value_[ax];
+    value.resize(ranks_[ax]);
+    std::vector<std::uint64_t> order;  // class << 32 | box
+    for (Rank r = 0; r < ranks_[ax]; ++r) {
+      const std::uint32_t from = run_start[r], to = run_start[r + 1];
+      value[r] = bounds[from].key == bounds[to - 1].key ? from_ordered_bits(bounds[from].key)
+                                                        : std::numeric_limits<double>::quiet_NaN();
+      if (to - from == 1) {  // alone at its rank: not flat (a flat box has both bounds here)
+        events[from] = bounds[from].id;
+        continue;
+      }
+      order.clear();
+      for (std::uint32_t i = from; i < to; ++i) {
+        const std::uint32_t b = bounds[i].id >> 1;
+        const bool flat = lo[b] == hi[b];
+        const bool close = (bounds[i].id & 1u) != 0;
+        const std::uint64_t cls = close ? (flat ? kCloseFlat : kCloseSolid) : (flat ? kOpenFlat : kOpenSolid);
+        order.push_back((cls << 32) | b);
+      }
+      std::sort(order.begin(), order.end());
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        const std::uint64_t cls = order[k] >> 32;
+        const auto b = static_cast<std::uint32_t>(order[k] & 0xffffffffu);
+        const bool close = cls == kCloseSolid || cls == kCloseFlat;
+        events[from + k] = (b << 1) | (close ? 1u : 0u);
+      }
     }
   }
 
-  static std::uint64_t key(Rank rank, std::uint64_t order, std::uint32_t box) {
-    return (static_cast<std::uint64_t>(rank) << 34) | (order << 32) | box;
+  // An event's rank and coordinate along axis a.
+  Rank rank_of(std::size_t a, Event e) const { return ((e & 1u) != 0 ? hi_[a] : lo_[a])[e >> 1]; }
+  double value_of(std::size_t a, Event e) const {
+    const LabelledBox& b = boxes_[e >> 1];
+    return (e & 1u) != 0 ? b.max[static_cast<glm::length_t>(a)] : b.min[static_cast<glm::length_t>(a)];
   }
 
-  // One sweep along axis a over every active container (9.1.3, boxesToOp).
-  void sweep(int a, std::uint32_t pass) {
+  // A container: a leaf if it holds one box that fills it (a PrimContainer),
+  // else cut along the first of its axes that divides it, else unsplittable.
+  void cut(const Work& w) {
+    if (w.end - w.begin == 2) {
+      const std::uint32_t b = events_[0][w.begin] >> 1;
+      bool fills = true;
+      for (std::size_t a = 0; a < 3; ++a) fills = fills && lo_[a][b] == w.lo[a] && hi_[a][b] == w.hi[a];
+      if (fills) {
+        set_extent(*w.node, w.lo_val, w.hi_val);
+        w.node->kind = SplitTree::Kind::Leaf;
+        w.node->box = b;
+        return;
+      }
+    }
+    for (int i = 0; i < w.tries; ++i) {
+      const int a = (w.first_axis + i) % 3;
+      if (w.lo[static_cast<std::size_t>(a)] == w.hi[static_cast<std::size_t>(a)]) continue;  // flat along a
+      if (sweep(w, a)) return;
+    }
+    unsplittable(w);
+  }
+
+  // One sweep along axis a over the container's bounds (9.1.3, boxesToOp);
+  // cuts it into its pieces and returns true, or returns false.
+  bool sweep(const Work& w, int a) {
     const auto ax = static_cast<std::size_t>(a);
-    touched_.clear();
-    std::vector<Event>& events = events_[ax];
-    std::size_t keep = 0;
-    for (std::size_t i = 0; i < events.size(); ++i) {
+    // The counter of open boxes: a piece starts at a min bound when nothing
+    // is open and ends where the counter next returns to zero; each box
+    // belongs to the piece its bounds fall in (addToChild). Without
+    // branches: the counter is zero only before a min bound, and a box's
+    // two bounds name the same piece.
+    const std::uint32_t begin = w.begin, end = w.end;  // locals: the stores below may not alias them
+    const Event* events = events_[ax].data();
+    std::uint32_t* span_of = span_of_.data();
+    std::uint32_t* starts = starts_.data();  // room for every event, allocated once
+    std::uint32_t span_count = 0, unmatched = 0;
+    for (std::uint32_t i = begin; i < end; ++i) {
       const Event e = events[i];
-      const std::uint32_t b = e.box_close >> 1;
-      Container& c = containers_[owner_[b]];
-      if (c.state != State::Active) continue;  // final: its events are dropped for good
-      events[keep++] = e;
-      if (c.pass != pass) {
-        c.pass = pass;
-        c.unmatched = 0;
-        c.spans.clear();
-        touched_.push_back(owner_[b]);
+      starts[span_count] = i;
+      span_count += unmatched == 0 ? 1u : 0u;
+      unmatched += 1u - 2u * (e & 1u);  // wraps to -1 and back: unsigned arithmetic
+      span_of[e >> 1] = span_count - 1;
+    }
+    starts[span_count] = end;
+
+    // Each piece's ranks are its first and last bounds' (the events are in
+    // rank order, and a piece ends on a max bound). Its coordinates there:
+    // the smallest min bound at its first rank, the largest max bound at
+    // its last (and its first bound's, for a piece of zero length).
+    spans_.resize(span_count);
+    const std::vector<double>& rank_value = rank_value_[ax];
+    for (std::size_t s = 0; s < span_count; ++s) {
+      const std::uint32_t from = starts[s], to = starts[s + 1];
+      Span& span = spans_[s];
+      span.lo = rank_of(ax, events[from]);
+      span.hi = rank_of(ax, events[to - 1]);
+      span.count = (to - from) / 2;
+      span.lo_val = rank_value[span.lo];
+      if (std::isnan(span.lo_val)) {
+        span.lo_val = value_of(ax, events[from]);
+        for (std::uint32_t i = from + 1; i < to && rank_of(ax, events[i]) == span.lo; ++i)
+          if ((events[i] & 1u) == 0) span.lo_val = std::min(span.lo_val, value_of(ax, events[i]));
       }
-      if (c.lo[ax] == c.hi[ax]) continue;  // flat along a: nothing to cut
-      if ((e.box_close & 1u) == 0) {
-        // A min bound: a new piece starts when nothing is open.
-        if (c.unmatched == 0) {
-          c.spans.push_back({e.rank, e.rank, e.value, e.value, 0});
-        } else if (e.rank == c.spans.back().lo) {
-          c.spans.back().lo_val = std::min(c.spans.back().lo_val, e.value);
-        }
-        ++c.unmatched;
-      } else {
-        // A max bound (addToChild): the box joins the current piece, which
-        // can be cut off once no box is open.
-        --c.unmatched;
-        Span& s = c.spans.back();
-        if (e.rank > s.hi) {
-          s.hi = e.rank;
-          s.hi_val = e.value;
-        } else if (e.rank == s.hi) {
-          s.hi_val = std::max(s.hi_val, e.value);
-        }
-        ++s.count;
-        span_of_[b] = static_cast<std::uint32_t>(c.spans.size() - 1);
+      span.hi_val = rank_value[span.hi];
+      if (std::isnan(span.hi_val)) {
+        span.hi_val = span.hi == span.lo ? value_of(ax, events[from]) : -std::numeric_limits<double>::infinity();
+        for (std::uint32_t i = to; i > from && rank_of(ax, events[i - 1]) == span.hi; --i)
+          if ((events[i - 1] & 1u) != 0) span.hi_val = std::max(span.hi_val, value_of(ax, events[i - 1]));
       }
     }
-    events.resize(keep);
-    for (std::uint32_t c : touched_) finish(c, a);
-  }
-
-  // After a sweep: cut the container into its pieces, or count a failure.
-  void finish(std::uint32_t id, int a) {
-    const auto ax = static_cast<std::size_t>(a);
-    Container& c = containers_[id];
-    if (c.lo[ax] == c.hi[ax]) return no_cut(id);
 
     // A piece of zero length (flat boxes only) joins the piece before it,
     // or the one after it when it comes first.
-    std::vector<Span> pieces;
-    std::vector<std::uint32_t> target(c.spans.size());
-    for (std::size_t s = 0; s < c.spans.size(); ++s) {
-      const Span& span = c.spans[s];
-      if (!pieces.empty() && (span.lo == span.hi || pieces.back().lo == pieces.back().hi)) {
-        pieces.back().absorb(span);
+    pieces_.clear();
+    target_.resize(spans_.size());
+    for (std::size_t s = 0; s < spans_.size(); ++s) {
+      const Span& span = spans_[s];
+      if (!pieces_.empty() && (span.lo == span.hi || pieces_.back().lo == pieces_.back().hi)) {
+        pieces_.back().absorb(span);
       } else {
-        pieces.push_back(span);
+        pieces_.push_back(span);
       }
-      target[s] = static_cast<std::uint32_t>(pieces.size() - 1);
+      target_[s] = static_cast<std::uint32_t>(pieces_.size() - 1);
     }
-    c.spans = {};
-    if (pieces.size() == 1 &&
-        ((pieces[0].lo == c.lo[ax] && pieces[0].hi == c.hi[ax]) || pieces[0].lo == pieces[0].hi)) {
-      return no_cut(id);
+    if (pieces_.size() == 1 &&
+        ((pieces_[0].lo == w.lo[ax] && pieces_[0].hi == w.hi[ax]) || pieces_[0].lo == pieces_[0].hi)) {
+      return false;
     }
 
-    c.state = State::Split;
-    c.axis = a;
     // Pieces meeting at a rank share one cut, at the smallest of their
     // coordinates there; pieces at the container's ends keep its bounds.
-    for (std::size_t i = 0; i + 1 < pieces.size(); ++i) {
-      if (pieces[i].hi == pieces[i + 1].lo) {
-        pieces[i].hi_val = pieces[i + 1].lo_val = std::min(pieces[i].hi_val, pieces[i + 1].lo_val);
+    for (std::size_t i = 0; i + 1 < pieces_.size(); ++i) {
+      if (pieces_[i].hi == pieces_[i + 1].lo) {
+        pieces_[i].hi_val = pieces_[i + 1].lo_val = std::min(pieces_[i].hi_val, pieces_[i + 1].lo_val);
       }
     }
-    if (pieces.front().lo == c.lo[ax]) pieces.front().lo_val = c.lo_val[ax];
-    if (pieces.back().hi == c.hi[ax]) pieces.back().hi_val = c.hi_val[ax];
+    if (pieces_.front().lo == w.lo[ax]) pieces_.front().lo_val = w.lo_val[ax];
+    if (pieces_.back().hi == w.hi[ax]) pieces_.back().hi_val = w.hi_val[ax];
 
-    std::vector<std::uint32_t> boxes = std::move(c.boxes);
-    const Container shape = extent_of(c);
-    std::vector<std::uint32_t> ids;
-    ids.reserve(pieces.size());
-    for (const Span& p : pieces) {
-      Container child = shape;
-      child.lo[ax] = p.lo;
-      child.hi[ax] = p.hi;
-      child.lo_val[ax] = p.lo_val;
-      child.hi_val[ax] = p.hi_val;
-      child.fails = 1;  // a piece cannot be cut again along a: this sweep would have
-      child.boxes.reserve(p.count);
-      ids.push_back(static_cast<std::uint32_t>(containers_.size()));
-      containers_.push_back(std::move(child));  // invalidates c
+    // Each piece's segment: along a the events already come piece by piece
+    // (a piece ends where the counter returns to zero); the other axes'
+    // events are regrouped, stably, so each segment stays sorted.
+    offsets_.resize(pieces_.size() + 1);
+    offsets_[0] = w.begin;
+    for (std::size_t p = 0; p < pieces_.size(); ++p) offsets_[p + 1] = offsets_[p] + 2 * pieces_[p].count;
+    // Both axes in one loop: two independent chains of counter updates.
+    const std::uint32_t* target = target_.data();
+    const std::size_t o1 = (ax + 1) % 3, o2 = (ax + 2) % 3;
+    Event* from1 = events_[o1].data();
+    Event* from2 = events_[o2].data();
+    Event* to1 = scratch_.data();
+    Event* to2 = scratch2_.data();
+    next_.assign(offsets_.begin(), offsets_.end() - 1);
+    next2_.assign(offsets_.begin(), offsets_.end() - 1);
+    std::uint32_t* next1 = next_.data();
+    std::uint32_t* next2 = next2_.data();
+    if (pieces_.size() == spans_.size()) {  // no piece joined another: span = piece
+      for (std::uint32_t i = begin; i < end; ++i) {
+        const Event e1 = from1[i];
+        const Event e2 = from2[i];
+        to1[next1[span_of[e1 >> 1]]++] = e1;
+        to2[next2[span_of[e2 >> 1]]++] = e2;
+      }
+    } else {
+      for (std::uint32_t i = begin; i < end; ++i) {
+        const Event e1 = from1[i];
+        const Event e2 = from2[i];
+        to1[next1[target[span_of[e1 >> 1]]]++] = e1;
+        to2[next2[target[span_of[e2 >> 1]]]++] = e2;
+      }
     }
-    for (std::uint32_t b : boxes) {
-      const std::uint32_t child = ids[target[span_of_[b]]];
-      containers_[child].boxes.push_back(b);
-      owner_[b] = child;
+    std::memcpy(from1 + begin, to1 + begin, sizeof(Event) * (end - begin));
+    std::memcpy(from2 + begin, to2 + begin, sizeof(Event) * (end - begin));
+
+    // The node: pieces in order, with empty space before, between and
+    // after them (toOp).
+    SplitTree& node = *w.node;
+    set_extent(node, w.lo_val, w.hi_val);
+    node.kind = SplitTree::Kind::Split;
+    node.axis = a;
+    std::size_t children = pieces_.size();
+    Rank previous = w.lo[ax];
+    for (const Span& p : pieces_) {
+      if (p.lo > previous) ++children;
+      previous = p.hi;
     }
-    --active_;
-    active_ += ids.size();
-    for (std::uint32_t child : ids) settle(child);
-    containers_[id].children = std::move(ids);
+    if (previous < w.hi[ax]) ++children;
+    node.children.resize(children);
+
+    std::size_t at = 0;
+    previous = w.lo[ax];
+    double previous_val = w.lo_val[ax];
+    auto gap = [&](double from_val, double to_val) {
+      std::array<double, 3> lo = w.lo_val, hi = w.hi_val;
+      lo[ax] = from_val;
+      hi[ax] = to_val;
+      set_extent(node.children[at++], lo, hi);  // Kind::Empty
+    };
+    const std::size_t first_work = stack_.size();
+    for (std::size_t p = 0; p < pieces_.size(); ++p) {
+      const Span& piece = pieces_[p];
+      if (piece.lo > previous) gap(previous_val, piece.lo_val);
+      Work child = w;
+      child.node = &node.children[at++];
+      child.begin = offsets_[p];
+      child.end = offsets_[p + 1];
+      child.lo[ax] = piece.lo;
+      child.hi[ax] = piece.hi;
+      child.lo_val[ax] = piece.lo_val;
+      child.hi_val[ax] = piece.hi_val;
+      child.first_axis = (a + 1) % 3;  // a piece cannot be cut again along a
+      child.tries = 2;
+      stack_.push_back(child);
+      previous = piece.hi;
+      previous_val = piece.hi_val;
+    }
+    if (previous < w.hi[ax]) gap(previous_val, w.hi_val[ax]);
+    // First piece on top: depth first, in order.
+    std::reverse(stack_.begin() + static_cast<std::ptrdiff_t>(first_work), stack_.end());
+    return true;
   }
 
-  // Only a container's extent (ranks and coordinates).
-  static Container extent_of(const Container& c) {
-    Container e;
-    e.lo = c.lo;
-    e.hi = c.hi;
-    e.lo_val = c.lo_val;
-    e.hi_val = c.hi_val;
-    return e;
-  }
-
-  // The sweep did not divide the container; after three in a row, no axis can.
-  void no_cut(std::uint32_t id) {
-    Container& c = containers_[id];
-    if (++c.fails >= 3) {
-      c.state = State::Unsplittable;
-      --active_;
+  // No straight cut divides the container: its boxes, in index order.
+  void unsplittable(const Work& w) {
+    std::vector<std::uint32_t> group;
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const std::uint32_t e = events_[0][i];
+      if ((e & 1u) == 0) group.push_back(e >> 1);
     }
-  }
-
-  // A container holding one box that fills it is a leaf (a PrimContainer).
-  void settle(std::uint32_t id) {
-    Container& c = containers_[id];
-    if (c.boxes.size() == 1 && lo_[c.boxes[0]] == c.lo && hi_[c.boxes[0]] == c.hi) {
-      c.state = State::Leaf;
-      --active_;
+    std::sort(group.begin(), group.end());
+    SplitTree& node = *w.node;
+    set_extent(node, w.lo_val, w.hi_val);
+    node.kind = SplitTree::Kind::Unsplittable;
+    node.children.resize(group.size());
+    for (std::size_t i = 0; i < group.size(); ++i) {
+      SplitTree& leaf = node.children[i];
+      leaf.min = boxes_[group[i]].min;
+      leaf.max = boxes_[group[i]].max;
+      leaf.kind = SplitTree::Kind::Leaf;
+      leaf.box = group[i];
     }
+    if (group.size() >= 2) groups_.push_back(std::move(group));
   }
 
   // Overlapping boxes share an unsplittable container; look for them there.
   void check_overlaps() const {
     std::size_t count = 0;
     std::pair<std::uint32_t, std::uint32_t> first{kNone, kNone};
-    for (const Container& c : containers_) {
-      if (c.state != State::Unsplittable || c.boxes.size() < 2) continue;
-      overlaps_in(c.boxes, count, first);
-    }
+    for (const auto& group : groups_) overlaps_in(group, count, first);
     if (count == 0) return;
     const LabelledBox& a = boxes_[first.first];
     const LabelledBox& b = boxes_[first.second];
@@ -357,8 +519,8 @@ class Splitter {
   // boxes share more than a face, a flat box lies strictly inside a solid
   // one, or two flat boxes lie at the same rank.
   std::array<std::int64_t, 2> inside(std::uint32_t b, std::size_t a) const {
-    const auto l = static_cast<std::int64_t>(lo_[b][a]);
-    const auto h = static_cast<std::int64_t>(hi_[b][a]);
+    const auto l = static_cast<std::int64_t>(lo_[a][b]);
+    const auto h = static_cast<std::int64_t>(hi_[a][b]);
     if (l == h) return {4 * l - 1, 4 * l + 1};
     return {4 * l + 1, 4 * h - 1};
   }
@@ -393,74 +555,25 @@ class Splitter {
     fail(ErrorKind::Input, source_, {box.line, box.line != 0 ? 1u : 0u}, message, hint);
   }
 
-  SplitTree build(std::uint32_t id) const {
-    const Container& c = containers_[id];
-    SplitTree t = extent(c.lo_val, c.hi_val);
-    switch (c.state) {
-      case State::Leaf:
-        t.kind = SplitTree::Kind::Leaf;
-        t.box = c.boxes[0];
-        break;
-      case State::Unsplittable: {
-        t.kind = SplitTree::Kind::Unsplittable;
-        std::vector<std::uint32_t> boxes = c.boxes;
-        std::sort(boxes.begin(), boxes.end());
-        for (std::uint32_t b : boxes) {
-          SplitTree leaf;
-          leaf.min = boxes_[b].min;
-          leaf.max = boxes_[b].max;
-          leaf.kind = SplitTree::Kind::Leaf;
-          leaf.box = b;
-          t.children.push_back(std::move(leaf));
-        }
-        break;
-      }
-      case State::Split: {
-        // Gaps before, between and after the pieces are empty space (toOp).
-        t.kind = SplitTree::Kind::Split;
-        t.axis = c.axis;
-        const auto ax = static_cast<std::size_t>(c.axis);
-        auto gap = [&](double from, double to) {
-          std::array<double, 3> lo = c.lo_val, hi = c.hi_val;
-          lo[ax] = from;
-          hi[ax] = to;
-          t.children.push_back(extent(lo, hi));  // Kind::Empty
-        };
-        Rank previous = c.lo[ax];
-        double previous_val = c.lo_val[ax];
-        for (std::uint32_t child : c.children) {
-          const Container& k = containers_[child];
-          if (k.lo[ax] > previous) gap(previous_val, k.lo_val[ax]);
-          t.children.push_back(build(child));
-          previous = k.hi[ax];
-          previous_val = k.hi_val[ax];
-        }
-        if (previous < c.hi[ax]) gap(previous_val, c.hi_val[ax]);
-        break;
-      }
-      case State::Active:
-        throw Error(ErrorKind::Internal, format_message(source_, {}, "box splitting left a container unfinished (a bug)"));
-    }
-    return t;
-  }
-
-  static SplitTree extent(const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
-    SplitTree t;
+  static void set_extent(SplitTree& t, const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
     t.min = glm::dvec3(lo[0], lo[1], lo[2]);
     t.max = glm::dvec3(hi[0], hi[1], hi[2]);
-    return t;
   }
 
   const std::vector<LabelledBox>& boxes_;
   const std::string& source_;
-  std::vector<std::array<Rank, 3>> lo_, hi_;       // per box: ranks of its bounds
-  std::array<Rank, 3> ranks_{};                    // per axis: how many ranks
-  std::array<std::vector<Event>, 3> events_;       // per axis, in sweep order
-  std::vector<std::uint32_t> owner_;    // per box: its smallest container
-  std::vector<std::uint32_t> span_of_;  // per box: its piece in the current sweep
-  std::vector<Container> containers_;
-  std::vector<std::uint32_t> touched_;
-  std::size_t active_ = 0;
+  std::array<std::vector<Rank>, 3> lo_, hi_;  // per axis, per box: ranks of its bounds
+  std::array<Rank, 3> ranks_{};               // per axis: how many ranks
+  std::array<double, 3> root_lo_{}, root_hi_{};  // the bounds of all boxes
+  std::array<std::vector<Event>, 3> events_;  // per axis: each container's segment in sweep order
+  std::array<std::vector<double>, 3> rank_value_;  // per axis, per rank: its one coordinate, or NaN
+  std::vector<Event> scratch_, scratch2_;     // regrouping buffers, as long as an axis's events
+  std::vector<std::uint32_t> span_of_;        // per box: its piece in the current sweep
+  std::vector<Work> stack_;                   // containers still to cut
+  std::vector<std::vector<std::uint32_t>> groups_;  // unsplittable containers' boxes
+  // The current sweep's pieces (reused: nothing is allocated per container).
+  std::vector<Span> spans_, pieces_;
+  std::vector<std::uint32_t> starts_, target_, offsets_, next_, next2_;
 };
 
 void count(const SplitTree& t, std::size_t depth, SplitTreeStats& s) {
@@ -482,15 +595,6 @@ SplitTree split_boxes(const std::vector<LabelledBox>& boxes, const BoxSplitOptio
   if (boxes.size() >= (std::size_t{1} << 29)) {
     fail(ErrorKind::Limit, source, {}, "too many parts to split (" + std::to_string(boxes.size()) + ")",
          "split the example into smaller buildings");
-  }
-  for (const LabelledBox& b : boxes) {
-    for (int a = 0; a < 3; ++a) {
-      if (!(b.min[a] <= b.max[a])) {  // also catches NaN
-        fail(ErrorKind::Input, source, {b.line, b.line != 0 ? 1u : 0u},
-             "object " + describe_object(b) + " has a box whose minimum exceeds its maximum (or is not a number)",
-             "give each part real geometry");
-      }
-    }
   }
   return Splitter(boxes, std::max(0.0, options.tolerance), source).run();
 }

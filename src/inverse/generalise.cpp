@@ -24,24 +24,28 @@ struct Frame {
 
 class Generaliser {
  public:
-  Generaliser(Grammar& g, const MergeOptions& o) : g_(g), opt_(o) {}
+  Generaliser(Grammar& g, const MergeOptions& o)
+      : g_(g), opt_(o), references_(g.node_count(), 0), rebuilt_(g.node_count(), kNone) {}
 
   NodeId run(NodeId root, bool& changed) {
+    changed = false;
     collect(root);
-    std::unordered_map<NodeId, NodeId> replace;
+    std::vector<NodeId> replace(g_.node_count(), kNone);  // by node id
     for (auto& [key, frame] : frames_) {
       if (frame.members.size() < 2) continue;
       if (auto merged = generalise(frame)) {
+        changed = true;
         for (NodeId m : frame.members) replace[m] = *merged;
       }
     }
-    changed = !replace.empty();
     return changed ? substitute(root, replace) : root;
   }
 
  private:
   // Every split below root, grouped by frame; references counted, since a
   // part used in two places was seen twice.
+  static constexpr NodeId kNone = static_cast<NodeId>(-1);
+
   void collect(NodeId id) {
     if (references_[id]++ > 0) return;
     const Operation& op = g_.op(id);
@@ -69,16 +73,18 @@ class Generaliser {
     const Split first = std::get<Split>(g_.op(frame.members.front()));
     const std::size_t n = first.parts.size();
     // What each position held, with how often.
+    // (Each position's children in order of first appearance, found by a
+    // hash index: a frame of many members must not search them linearly.)
     std::vector<std::vector<std::pair<NodeId, double>>> seen(n);
+    std::vector<std::unordered_map<NodeId, std::size_t>> where(n);
     std::size_t busiest = 0;
     for (NodeId m : frame.members) {
       const auto& s = std::get<Split>(g_.op(m));
-      const double weight = references_.at(m);
+      const double weight = references_[m];
       for (std::size_t i = 0; i < n; ++i) {
-        auto& at = seen[i];
-        auto it = std::find_if(at.begin(), at.end(), [&](const auto& e) { return e.first == s.parts[i].child; });
-        if (it == at.end()) at.emplace_back(s.parts[i].child, weight);
-        else it->second += weight;
+        auto [it, fresh] = where[i].try_emplace(s.parts[i].child, seen[i].size());
+        if (fresh) seen[i].emplace_back(s.parts[i].child, weight);
+        else seen[i][it->second].second += weight;
       }
     }
     for (const auto& at : seen) busiest = std::max(busiest, at.size());
@@ -111,9 +117,9 @@ class Generaliser {
   }
 
   // Rebuilds the graph below root with some nodes replaced.
-  NodeId substitute(NodeId id, const std::unordered_map<NodeId, NodeId>& replace) {
-    if (auto it = replace.find(id); it != replace.end()) return it->second;
-    if (auto it = rebuilt_.find(id); it != rebuilt_.end()) return it->second;
+  NodeId substitute(NodeId id, const std::vector<NodeId>& replace) {
+    if (replace[id] != kNone) return replace[id];
+    if (rebuilt_[id] != kNone) return rebuilt_[id];
     Operation op = g_.op(id);
     bool any = false;
     auto child = [&](NodeId& c) {
@@ -140,15 +146,15 @@ class Generaliser {
                },
                op);
     const NodeId out = any ? g_.intern({std::move(op), g_.node(id).loc}) : id;
-    rebuilt_.emplace(id, out);
+    rebuilt_[id] = out;
     return out;
   }
 
   Grammar& g_;
   const MergeOptions& opt_;
-  std::unordered_map<NodeId, int> references_;
+  std::vector<int> references_;  // by node id, below the root
   std::map<std::string, Frame> frames_;
-  std::unordered_map<NodeId, NodeId> rebuilt_;
+  std::vector<NodeId> rebuilt_;  // by node id: its substitute, or kNone
 };
 
 }  // namespace

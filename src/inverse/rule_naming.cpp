@@ -2,8 +2,8 @@
 
 #include <cctype>
 #include <functional>
-#include <set>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "graph/overload.hpp"
 #include "graph/reserved_words.hpp"
@@ -14,7 +14,9 @@ namespace {
 
 class RuleMaker {
  public:
-  RuleMaker(const Grammar& from, const NamingOptions& o) : from_(from), opt_(o) {
+  RuleMaker(const Grammar& from, const NamingOptions& o)
+      : from_(from), opt_(o), uses_(from.node_count(), 0), rules_(from.node_count(), kNone),
+        leaf_copies_(from.node_count(), kNone), labels_(from.node_count()) {
     out_.scope = from.scope;
     out_.primitives = from.primitives;
   }
@@ -46,18 +48,29 @@ class RuleMaker {
 
   bool needs_rule(NodeId id) const {
     if (std::holds_alternative<Choose>(from_.op(id))) return true;
-    return !is_leaf(id) && uses_.at(id) > 1;
+    return !is_leaf(id) && uses_[id] > 1;
   }
 
-  // The primitive labels beneath a node, in order of first appearance.
-  void labels_below(NodeId id, std::vector<std::string>& out, std::set<NodeId>& seen) const {
-    if (!seen.insert(id).second || out.size() >= 3) return;
+  // The first three primitive labels beneath a node, in order of first
+  // appearance (depth first). Kept per node: a rule's name would otherwise
+  // search its whole subgraph when it holds fewer than three labels, every
+  // rule again. A node's list is its children's lists run together, since
+  // a label past a child's third comes after three distinct ones.
+  const std::vector<LabelId>& labels_below(NodeId id) {
+    Labels& known = labels_[id];  // labels_ never grows: the reference stays valid
+    if (known.done) return known.labels;
     if (const auto* p = std::get_if<Primitive>(&from_.op(id))) {
-      const std::string& l = from_.label(p->label);
-      if (std::find(out.begin(), out.end(), l) == out.end()) out.push_back(l);
-      return;
+      known.labels.push_back(p->label);
+    } else {
+      for (NodeId child : node_children(from_.op(id))) {
+        if (known.labels.size() >= 3) break;
+        for (LabelId l : labels_below(child))
+          if (known.labels.size() < 3 && std::find(known.labels.begin(), known.labels.end(), l) == known.labels.end())
+            known.labels.push_back(l);
+      }
     }
-    for (NodeId child : node_children(from_.op(id))) labels_below(child, out, seen);
+    known.done = true;
+    return known.labels;
   }
 
   static std::string word(const std::string& label, bool first) {
@@ -91,35 +104,40 @@ class RuleMaker {
   }
 
   std::string name_for(NodeId id) {
-    std::vector<std::string> labels;
-    std::set<NodeId> seen;
-    labels_below(id, labels, seen);
+    const std::vector<LabelId> labels = labels_below(id);
     std::string base;
-    for (std::size_t i = 0; i < labels.size(); ++i) base += word(labels[i], i == 0);
+    for (std::size_t i = 0; i < labels.size(); ++i) base += word(from_.label(labels[i]), i == 0);
     if (base.empty() || !std::isalpha(static_cast<unsigned char>(base[0]))) base = "empty" + base;
     base += suffix(id);
     return unique(base);
   }
 
+  // base, else base2, base3, ...: the first name not taken. Each base
+  // remembers where its search stopped (names are never given back), so a
+  // thousand rules of one base cost a thousand tries, not half a million.
   std::string unique(const std::string& base) {
-    std::string name = base;
-    for (int n = 2; taken_.count(name) || is_operation_word(name); ++n) name = base + std::to_string(n);
+    auto [it, fresh] = next_suffix_.try_emplace(base, 2);
+    int& n = it->second;
+    std::string name = fresh ? base : base + std::to_string(n++);
+    while (taken_.count(name) || is_operation_word(name)) name = base + std::to_string(n++);
     taken_.insert(name);
     return name;
   }
 
   RuleId rule_for(NodeId id, const std::string& forced_name = {}) {
-    if (auto it = rules_.find(id); it != rules_.end()) return it->second;
+    if (rules_[id] != kNone) return rules_[id];
     const auto rule = static_cast<RuleId>(out_.rules.size());
     out_.rules.push_back({forced_name.empty() ? name_for(id) : unique(forced_name), {}, 0, {}});
-    rules_.emplace(id, rule);
+    rules_[id] = rule;
     pending_.emplace_back(rule, id);
     return rule;
   }
 
-  // Copies a node; children that are rules become calls.
+  // Copies a node; children that are rules become calls. A leaf is copied
+  // once, however often it is used.
   NodeId copy(NodeId id, bool as_body) {
     if (!as_body && needs_rule(id)) return out_.intern({Call{rule_for(id), {}}, {}});
+    if (leaf_copies_[id] != kNone) return leaf_copies_[id];
     Operation op = from_.op(id);
     std::visit(Overload{
                    [&](Split& s) {
@@ -142,16 +160,28 @@ class RuleMaker {
                },
                op);
     // A choose that is not a rule's body must be one: handled by needs_rule.
-    return out_.intern({std::move(op), {}});
+    const NodeId out = out_.intern({std::move(op), {}});
+    if (is_leaf(id)) leaf_copies_[id] = out;
+    return out;
   }
+
+  static constexpr std::uint32_t kNone = static_cast<std::uint32_t>(-1);
+
+  struct Labels {
+    std::vector<LabelId> labels;  // at most three
+    bool done = false;
+  };
 
   const Grammar& from_;
   const NamingOptions& opt_;
   Grammar out_;
-  std::unordered_map<NodeId, int> uses_;
-  std::unordered_map<NodeId, RuleId> rules_;
+  std::vector<int> uses_;          // by node id
+  std::vector<RuleId> rules_;      // by node id: its rule, or kNone
+  std::vector<NodeId> leaf_copies_;  // by node id: a leaf's copy in out_, or kNone
+  std::vector<Labels> labels_;     // by node id: see labels_below
   std::vector<std::pair<RuleId, NodeId>> pending_;
-  std::set<std::string> taken_;
+  std::unordered_set<std::string> taken_;
+  std::unordered_map<std::string, int> next_suffix_;  // base -> the suffix to try next
 };
 
 }  // namespace
