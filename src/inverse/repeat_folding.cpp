@@ -2,7 +2,7 @@
 
 #include <cmath>
 #include <optional>
-#include <unordered_map>
+#include <vector>
 
 #include "graph/structural.hpp"
 #include "inverse/tidy_numbers.hpp"
@@ -16,34 +16,42 @@ class Folder {
   Folder(Grammar& g, double tolerance) : g_(g), tol_(tolerance) {}
 
   NodeId run(NodeId id) {
-    if (auto it = memo_.find(id); it != memo_.end()) return it->second;
-    const Operation op = g_.op(id);  // a copy: interning below may grow the arena
+    if (id < memo_.size() && memo_[id] != kNotYet) return memo_[id];
+    // Children first, by id: running them may intern nodes and move the
+    // arena, so the operation is copied only when it must be rebuilt.
+    const std::vector<NodeId> children = node_children(g_.op(id));
+    std::vector<NodeId> done;
+    done.reserve(children.size());
+    bool changed = false;
+    for (const NodeId c : children) {
+      done.push_back(run(c));
+      changed = changed || done.back() != c;
+    }
     NodeId out = id;
-    if (const auto* s = std::get_if<Split>(&op)) {
-      out = fold_split(*s);
-    } else if (std::holds_alternative<Choose>(op) || std::holds_alternative<Rotate>(op) ||
-               std::holds_alternative<Repeat>(op) || std::holds_alternative<RepeatN>(op)) {
-      Operation copy = op;
-      bool changed = false;
+    if (std::holds_alternative<Split>(g_.op(id))) {
+      Split s = std::get<Split>(g_.op(id));
+      for (std::size_t i = 0; i < s.parts.size(); ++i) s.parts[i].child = done[i];
+      out = fold_split(s, changed);
+      if (out == kNotYet) out = id;
+    } else if (changed) {
+      Operation copy = g_.op(id);
+      std::size_t k = 0;
       std::visit(
           [&](auto& o) {
             using T = std::decay_t<decltype(o)>;
             if constexpr (std::is_same_v<T, Choose>) {
-              for (auto& option : o.options) {
-                const NodeId c = run(option.child);
-                changed = changed || c != option.child;
-                option.child = c;
-              }
-            } else if constexpr (std::is_same_v<T, Rotate> || std::is_same_v<T, Repeat> || std::is_same_v<T, RepeatN>) {
-              const NodeId c = run(o.child);
-              changed = c != o.child;
-              o.child = c;
+              for (auto& option : o.options) option.child = done[k++];
+            } else if constexpr (std::is_same_v<T, Comp>) {
+              for (auto& part : o.parts) part.child = done[k++];
+            } else if constexpr (requires { o.child; }) {
+              o.child = done[k++];
             }
           },
           copy);
-      if (changed) out = g_.intern({std::move(copy), {}});
+      out = g_.intern({std::move(copy), {}});
     }
-    memo_.emplace(id, out);
+    if (memo_.size() <= id) memo_.resize(std::max<std::size_t>(g_.node_count(), id + 1), kNotYet);
+    memo_[id] = out;
     return out;
   }
 
@@ -126,13 +134,13 @@ class Folder {
     return SplitPart{{Expr::number(total), parts[r.start].size.relative}, tiles};
   }
 
-  NodeId fold_split(const Split& s) {
-    std::vector<SplitPart> parts;
+  // The split with its parts' children already folded; kNotYet when
+  // nothing changes (children_changed false and no run folded).
+  NodeId fold_split(const Split& s, bool children_changed) {
+    std::vector<SplitPart> parts = s.parts;
     bool literal = s.axis.nodes().size() == 1 && s.axis.node(0).kind == ExprKind::Axis;
-    for (const SplitPart& p : s.parts) {
-      parts.push_back({p.size, run(p.child)});
-      literal = literal && p.size.value.literal();
-    }
+    for (const SplitPart& p : parts) literal = literal && p.size.value.literal();
+    bool changed = children_changed;
     if (literal) {
       // Adjacent empty parts are one empty part.
       std::vector<SplitPart> joined;
@@ -140,6 +148,7 @@ class Folder {
         if (!joined.empty() && is_nil(p.child) && is_nil(joined.back().child) &&
             joined.back().size.relative == p.size.relative) {
           joined.back().size.value = Expr::number(*joined.back().size.value.literal() + *p.size.value.literal());
+          changed = true;
         } else {
           joined.push_back(p);
         }
@@ -147,25 +156,27 @@ class Folder {
       parts = std::move(joined);
       // Only a run of three parts or more that is (almost) the whole split
       // is folded: the walls or margins at its ends may differ. A run
-      // inside a mixed row (a | a | b)
-      // is left to merging, which lines alike rows up first and finds what
-      // combines freely there.
+      // inside a mixed row (a | a | b) is left to merging, which lines
+      // alike rows up first and finds what combines freely there.
       if (const auto r = best_run(parts); r && r->parts() >= 3 && r->parts() + 2 >= parts.size()) {
         if (const std::optional<SplitPart> folded = fold(s.axis, parts, *r)) {
           parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(r->start),
                       parts.begin() + static_cast<std::ptrdiff_t>(r->start + r->parts()));
           parts.insert(parts.begin() + static_cast<std::ptrdiff_t>(r->start), *folded);
+          changed = true;
         }
       }
     }
     if (parts.size() == 1 && parts[0].size.relative) return parts[0].child;
+    if (!changed) return kNotYet;
     return g_.intern({Split{s.axis, std::move(parts)}, {}});
   }
 
   static constexpr std::size_t kMaxPeriod = 4;
+  static constexpr NodeId kNotYet = static_cast<NodeId>(-1);
   Grammar& g_;
   double tol_;
-  std::unordered_map<NodeId, NodeId> memo_;
+  std::vector<NodeId> memo_;  // by node id; kNotYet until folded
 };
 
 }  // namespace
