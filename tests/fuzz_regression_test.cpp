@@ -1,0 +1,114 @@
+// Every input a fuzzer ever turned into a finding (fuzz/regressions/<target>/)
+// and the seed corpus (fuzz/corpus/<target>/) run through the same entry
+// functions as the libFuzzer programs, so the ordinary test suite keeps them
+// fixed forever, with any compiler. Plus the harness's own judgement: what
+// counts as a finding and what does not.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "entries/entries.hpp"
+#include "entries/layout.hpp"
+#include "entries/verdict.hpp"
+#include "graph/error.hpp"
+
+namespace fs = std::filesystem;
+using namespace vern;
+
+namespace vern::fuzz {
+// Test names and messages show the target's name, not its bytes.
+void PrintTo(const Target& target, std::ostream* os) { *os << target.name; }
+}  // namespace vern::fuzz
+
+namespace {
+
+std::vector<std::uint8_t> file_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::uint8_t> bytes_of(std::string_view text) { return {text.begin(), text.end()}; }
+
+// The inputs in fuzz/<kind>/<target>/, sorted (READMEs are notes, not inputs).
+std::vector<fs::path> inputs(const std::string& kind, std::string_view target) {
+  const fs::path folder = fs::path(VERN_SOURCE_DIR) / "fuzz" / kind / target;
+  std::vector<fs::path> files;
+  if (!fs::is_directory(folder)) return files;
+  for (const auto& e : fs::directory_iterator(folder))
+    if (e.is_regular_file() && !e.path().filename().string().starts_with("README")) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+class FuzzTarget : public ::testing::TestWithParam<fuzz::Target> {};
+
+TEST_P(FuzzTarget, SavedFindingsStayFixed) {
+  for (const fs::path& file : inputs("regressions", GetParam().name)) {
+    const std::vector<std::uint8_t> data = file_bytes(file);
+    EXPECT_EQ(GetParam().run(data), "") << file;
+  }
+}
+
+TEST_P(FuzzTarget, SeedCorpusRunsClean) {
+  const std::vector<fs::path> files = inputs("corpus", GetParam().name);
+  EXPECT_GE(files.size(), 5u) << "the seed corpus of " << GetParam().name << " is missing";
+  for (const fs::path& file : files) {
+    const std::vector<std::uint8_t> data = file_bytes(file);
+    EXPECT_EQ(GetParam().run(data), "") << file;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Fuzz, FuzzTarget, ::testing::ValuesIn(fuzz::targets().begin(), fuzz::targets().end()),
+                         [](const ::testing::TestParamInfo<fuzz::Target>& target) { return std::string(target.param.name); });
+
+TEST(FuzzVerdict, ExpectedErrorsThatSayWhereAreNotFindings) {
+  const auto input_error = [] { fail(ErrorKind::Input, "a.grm", {3, 4}, "bad"); return std::string(); };
+  EXPECT_EQ(fuzz::judged(input_error, {ErrorKind::Input}, "a.grm"), "");
+  // The same error without the file name, or of a kind not expected, is one.
+  EXPECT_NE(fuzz::judged(input_error, {ErrorKind::Input}, "b.grm"), "");
+  EXPECT_NE(fuzz::judged(input_error, {ErrorKind::Limit}, "a.grm"), "");
+  const auto internal = [] { fail(ErrorKind::Internal, "a.grm", {}, "broken"); return std::string(); };
+  EXPECT_NE(fuzz::judged(internal, {ErrorKind::Input}, "a.grm").find("Internal"), std::string::npos);
+  const auto other = []() -> std::string { throw std::out_of_range("vector"); };
+  EXPECT_NE(fuzz::judged(other, {ErrorKind::Input}, "a.grm").find("vector"), std::string::npos);
+  EXPECT_EQ(fuzz::judged([] { return std::string("oracle failed"); }, {ErrorKind::Input}, ""), "oracle failed");
+}
+
+TEST(FuzzEntries, AcceptGoodInputAndRefuseBadInputWithoutAFinding) {
+  EXPECT_EQ(fuzz::grammar_reader(bytes_of("p --> split(x){ ~1 : I(a) | 2 : nil }")), "");
+  EXPECT_EQ(fuzz::grammar_reader(bytes_of("p --> split(x){ ~1 : I(a) |")), "");  // a syntax error
+  EXPECT_EQ(fuzz::grammar_reader(bytes_of("p --> p")), "");                       // the depth limit
+  EXPECT_EQ(fuzz::obj_loader(bytes_of("o wall\nv 0 0 0\nv 1 0 0\nv 0 1 1\nf 1 2 3\n")), "");
+  EXPECT_EQ(fuzz::obj_loader(bytes_of("v 0 0 0\nf 1 2 7\n")), "");  // an index out of range
+  EXPECT_EQ(fuzz::gltf_loader(bytes_of("{\"asset\": {\"version\": \"2.0\"}}")), "");  // no parts
+  EXPECT_EQ(fuzz::gltf_loader(bytes_of("glTF\x02")), "");                            // a truncated GLB
+}
+
+TEST(FuzzLayout, BytesDescribeACutBoxAndInferenceDerivesIt) {
+  // One example, unit 1; a tree: a 4 x 1 x 2 box split along x (byte 0x1A:
+  // split, axis x, 3 parts) into weights 1, 2, 1: part a, empty, part b.
+  const std::vector<std::uint8_t> bytes{0x00, 0x01, 3, 0, 1, 0x1A, 0, 1, 0, 0x00, 0x01, 0x04};
+  const fuzz::Layout layout = fuzz::decode_layout(bytes);
+  ASSERT_EQ(layout.examples.size(), 1u);
+  EXPECT_TRUE(layout.valid_by_construction);
+  const auto& boxes = layout.examples[0].boxes;
+  ASSERT_EQ(boxes.size(), 2u);
+  EXPECT_EQ(boxes[0].label, "a");
+  EXPECT_EQ(boxes[0].max, glm::dvec3(1, 1, 2));
+  EXPECT_EQ(boxes[1].label, "b");
+  EXPECT_EQ(boxes[1].min, glm::dvec3(3, 0, 0));
+  EXPECT_EQ(fuzz::infer_layout(bytes), "");
+  // Free boxes that overlap: inference refuses them, which is no finding.
+  const std::vector<std::uint8_t> overlap{0x00, 0x02, 0, 0, 0, 0, 4, 4, 4, 1, 1, 1, 1, 4, 4, 4};
+  EXPECT_FALSE(fuzz::decode_layout(overlap).valid_by_construction);
+  EXPECT_EQ(fuzz::infer_layout(overlap), "");
+}
+
+}  // namespace
