@@ -132,6 +132,19 @@ TEST(Infer, GarageExamplesGiveAFewRulesWithTheHeightRangeFitted) {
 namespace vern {
 namespace {
 
+// Splitting examples on several threads changes nothing in the result.
+TEST(Infer, ThreadsGiveTheSameGrammar) {
+  const Grammar source = read_grammar_file(VERN_SOURCE_DIR "/data/grammars/modern_houses.grm");
+  std::vector<Example> examples;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    examples.push_back(test::example_of(test::derived_parts(derive_seed(source, seed))));
+  }
+  InferOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  EXPECT_EQ(write_grammar(infer(examples, one).grammar), write_grammar(infer(examples, two).grammar));
+}
+
 // Issue 4, "sizes that scale" and "repeats that stretch": terraces on plots
 // of different widths. The learnt grammar keeps the end walls 0.6 m thick
 // on any plot, and a wider plot gets more windows, not wider ones.

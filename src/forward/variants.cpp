@@ -1,13 +1,10 @@
 #include "forward/variants.hpp"
 
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <exception>
-#include <mutex>
-#include <thread>
 
 #include "forward/program.hpp"
+#include "graph/parallel_for.hpp"
 
 namespace vern {
 
@@ -20,44 +17,18 @@ std::string variant_name(std::uint32_t index) {
 std::vector<Derivation> derive_variants(const Grammar& grammar, const VariantOptions& options) {
   const std::uint32_t n = options.count;
   std::vector<Derivation> out(n);
-  std::vector<std::exception_ptr> errors(n);
-  std::atomic<std::uint32_t> next{0};
-  std::atomic<std::uint32_t> done{0};
-  std::atomic<bool> failed{false};
-  std::mutex progress_mutex;
   // Compiled once, read by every thread.
   const Program program = compile(grammar);
-
-  auto worker = [&] {
-    while (!failed.load(std::memory_order_relaxed)) {
-      const std::uint32_t i = next.fetch_add(1);
-      if (i >= n) return;
-      try {
+  parallel_for(
+      n, options.threads,
+      [&](std::size_t i) {
         DeriveOptions o = options.derive;
         o.seed = options.derive.seed + i;
         out[i] = derive(program, o);
-      } catch (...) {
-        errors[i] = std::current_exception();
-        failed = true;
-      }
-      const std::uint32_t finished = ++done;
-      if (options.progress) {
-        std::lock_guard lock(progress_mutex);
-        options.progress(finished, n);
-      }
-    }
-  };
-
-  unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  threads = std::min<unsigned>(threads, std::max<std::uint32_t>(n, 1));
-  if (threads <= 1) {
-    worker();
-  } else {
-    std::vector<std::jthread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
-  }
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
+      },
+      [&](std::size_t finished) {
+        if (options.progress) options.progress(static_cast<std::uint32_t>(finished), n);
+      });
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "graph/parallel_for.hpp"
 #include "inverse/box_split.hpp"
 #include "inverse/merge.hpp"
 #include "inverse/orientation.hpp"
@@ -23,11 +24,22 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
       orient_parts(examples, options.primitives ? *options.primitives : PrimitiveLibrary::builtin(), out.tolerance);
   out.unturned_parts = oriented.unmatched;
 
+  // Examples split in parallel; their graphs go into one interned grammar,
+  // in order, on this thread.
+  std::vector<SplitTree> trees(examples.size());
+  parallel_for(
+      examples.size(), options.threads,
+      [&](std::size_t i) {
+        trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{out.tolerance}, examples[i].source);
+      },
+      [&](std::size_t done) {
+        if (options.progress) options.progress(done, examples.size());
+      });
   Grammar graph;
   std::vector<NodeId> roots;
   for (std::size_t i = 0; i < examples.size(); ++i) {
-    roots.push_back(example_graph(graph, examples[i], BoxSplitOptions{out.tolerance}, oriented.turns[i]));
-    if (options.progress) options.progress(i + 1, examples.size());
+    roots.push_back(split_graph(graph, trees[i], examples[i].boxes, examples[i].source, oriented.turns[i]));
+    trees[i] = {};  // done with it: large examples hold big trees
   }
   MergeOptions merge;
   merge.tolerance = out.tolerance;

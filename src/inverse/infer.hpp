@@ -29,7 +29,9 @@ struct InferOptions {
   // null: the built-in primitives. A label's first part's own mesh stands
   // in where the library's is not one of its turns.
   const PrimitiveLibrary* primitives = nullptr;
-  // Called after each example is split: (done, total).
+  // Threads that split examples (0: one per core); the result is the same.
+  unsigned threads = 0;
+  // Called as examples are split: (done, total), one call at a time.
   std::function<void(std::size_t, std::size_t)> progress;
 };
 
