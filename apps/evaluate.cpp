@@ -72,13 +72,8 @@ int run(int argc, char** argv) {
   if (args.has("--variants"))
     options.variants = static_cast<std::uint32_t>(CommandLine::integer(args, "--variants", 1, 100000));
   if (args.has("--threads")) options.threads = static_cast<unsigned>(CommandLine::integer(args, "--threads", 1, 1024));
-  if (args.has("--distributions")) {
-    const std::string kind = args.value("--distributions");
-    if (kind != "fitted" && kind != "uniform")
-      throw Error(ErrorKind::Usage, "evaluate: error: unknown --distributions '" + kind +
-                                        "'\n  hint: fitted (the best of constant, choice, rand, tnormal) or uniform");
-    options.uniform_distributions = kind == "uniform";
-  }
+  if (args.has("--distributions"))
+    options.uniform_distributions = CommandLine::one_of(args, "--distributions", {"fitted", "uniform"}) == "uniform";
   const bool quiet = args.has("--quiet");
   std::error_code ec;
   if (args.has("--keep") && !fs::is_directory(args.value("--keep"), ec))

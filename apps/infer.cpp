@@ -97,12 +97,8 @@ int run(int argc, char** argv) {
     if (!(options.tolerance > 0)) usage("--tolerance must be > 0, got " + args.value("--tolerance"), "for example --tolerance 0.001");
   }
   if (args.has("--threads")) options.threads = static_cast<unsigned>(CommandLine::integer(args, "--threads", 1, 1024));
-  if (args.has("--distributions")) {
-    const std::string kind = args.value("--distributions");
-    if (kind != "fitted" && kind != "uniform")
-      usage("unknown --distributions '" + kind + "'", "fitted (the best of constant, choice, rand, tnormal) or uniform");
-    options.uniform_distributions = kind == "uniform";
-  }
+  if (args.has("--distributions"))
+    options.uniform_distributions = CommandLine::one_of(args, "--distributions", {"fitted", "uniform"}) == "uniform";
   if (args.has("--start")) {
     options.start = args.value("--start");
     if (!is_rule_name(options.start))

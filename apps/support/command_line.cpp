@@ -117,4 +117,13 @@ long long CommandLine::integer(const ParsedCommandLine& cl, const std::string& n
   return v;
 }
 
+const std::string& CommandLine::one_of(const ParsedCommandLine& cl, const std::string& name,
+                                       const std::vector<std::string>& allowed) {
+  const std::string& text = cl.value(name);
+  if (std::find(allowed.begin(), allowed.end(), text) != allowed.end()) return text;
+  std::string list;
+  for (std::size_t i = 0; i < allowed.size(); ++i) list += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + allowed[i];
+  usage_error(cl.program, "unknown " + name + " '" + text + "'", "give " + list);
+}
+
 }  // namespace vern

@@ -42,6 +42,9 @@ class CommandLine {
   // Typed values, with Usage errors that name the option.
   static double number(const ParsedCommandLine& cl, const std::string& name, std::size_t i = 0);
   static long long integer(const ParsedCommandLine& cl, const std::string& name, long long min, long long max);
+  // The option's value, which must be one of `allowed` (Usage error naming them).
+  static const std::string& one_of(const ParsedCommandLine& cl, const std::string& name,
+                                   const std::vector<std::string>& allowed);
 
  private:
   const OptionSpec* find(const std::string& arg) const;
