@@ -36,7 +36,7 @@ TEST(ParallelFor, TheLowestFailingIndexIsReported) {
   }
 }
 
-TEST(ParallelFor, NothingToDoIsFine) {
+TEST(ParallelFor, AnEmptyRangeRunsNothing) {
   bool called = false;
   parallel_for(0, 4, [&](std::size_t) { called = true; });
   EXPECT_FALSE(called);
