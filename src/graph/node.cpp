@@ -63,6 +63,29 @@ std::vector<NodeId> node_children(const Operation& op) {
   return out;
 }
 
+std::vector<NodeId*> child_slots(Operation& op) {
+  std::vector<NodeId*> out;
+  std::visit(Overload{
+                 [&](Split& s) {
+                   for (auto& p : s.parts) out.push_back(&p.child);
+                 },
+                 [&](Repeat& r) { out.push_back(&r.child); },
+                 [&](RepeatN& r) { out.push_back(&r.child); },
+                 [&](Choose& c) {
+                   for (auto& o : c.options) out.push_back(&o.child);
+                 },
+                 [&](Translate& t) { out.push_back(&t.child); },
+                 [&](Scale& s) { out.push_back(&s.child); },
+                 [&](Rotate& r) { out.push_back(&r.child); },
+                 [&](Comp& c) {
+                   for (auto& p : c.parts) out.push_back(&p.child);
+                 },
+                 [](auto&) {},
+             },
+             op);
+  return out;
+}
+
 std::vector<const Expr*> node_expressions(const Operation& op) {
   std::vector<const Expr*> out;
   std::visit(Overload{

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -147,6 +148,24 @@ struct Node {
 
 // The node's children in order (split parts, choose options, ...).
 std::vector<NodeId> node_children(const Operation& op);
+
+// The same children as places to rewrite them, in the same order.
+std::vector<NodeId*> child_slots(Operation& op);
+
+// The children mapped through f, and whether any changed. The ids are read
+// before f runs, so f may add nodes to the grammar op lives in (which can
+// move its arena): op is not touched after the first call.
+template <class F>
+std::pair<std::vector<NodeId>, bool> map_children(const Operation& op, F f) {
+  std::vector<NodeId> children = node_children(op);
+  bool changed = false;
+  for (NodeId& c : children) {
+    const NodeId mapped = f(c);
+    changed = changed || mapped != c;
+    c = mapped;
+  }
+  return {std::move(children), changed};
+}
 
 // The node's own expressions in order (axes, sizes, conditions,
 // priorities, arguments, ...); empty ones (an absent condition) included.

@@ -42,30 +42,6 @@ namespace {
 // An empty list means unknown: the range joined values that were not kept.
 using SampleBook = std::unordered_map<NodeId, std::vector<std::vector<Observation>>>;
 
-// The child slots of an operation, to rewrite its children in place.
-std::vector<NodeId*> child_slots(Operation& op) {
-  std::vector<NodeId*> out;
-  std::visit(Overload{
-                 [&](Split& s) {
-                   for (auto& p : s.parts) out.push_back(&p.child);
-                 },
-                 [&](Repeat& r) { out.push_back(&r.child); },
-                 [&](RepeatN& r) { out.push_back(&r.child); },
-                 [&](Choose& c) {
-                   for (auto& o : c.options) out.push_back(&o.child);
-                 },
-                 [&](Translate& t) { out.push_back(&t.child); },
-                 [&](Scale& s) { out.push_back(&s.child); },
-                 [&](Rotate& r) { out.push_back(&r.child); },
-                 [&](Comp& c) {
-                   for (auto& p : c.parts) out.push_back(&p.child);
-                 },
-                 [](auto&) {},
-             },
-             op);
-  return out;
-}
-
 // In how many examples each node occurs: a value seen in three examples
 // is three observations of the style, while one example's six equal
 // windows are one decision, observed once.
@@ -424,14 +400,8 @@ class Simplifier {
 
   NodeId simplify_split(NodeId id) {
     // Children first: simplifying them may add nodes, which moves the arena.
-    std::vector<NodeId> children = node_children(g_.op(id));
-    bool same = true;
-    for (NodeId& c : children) {
-      const NodeId simplified = run(c);
-      same = same && simplified == c;
-      c = simplified;
-    }
-    if (same) {
+    const auto [children, changed] = map_children(g_.op(id), [&](NodeId c) { return run(c); });
+    if (!changed) {
       // Unchanged unless a part flattens, parts repeat, or one part is all.
       const Split& s = std::get<Split>(g_.op(id));
       const bool has_axis = literal_axis(s).has_value();

@@ -19,14 +19,7 @@ class Folder {
     if (id < memo_.size() && memo_[id] != kNotYet) return memo_[id];
     // Children first, by id: running them may intern nodes and move the
     // arena, so the operation is copied only when it must be rebuilt.
-    const std::vector<NodeId> children = node_children(g_.op(id));
-    std::vector<NodeId> done;
-    done.reserve(children.size());
-    bool changed = false;
-    for (const NodeId c : children) {
-      done.push_back(run(c));
-      changed = changed || done.back() != c;
-    }
+    const auto [done, changed] = map_children(g_.op(id), [&](NodeId c) { return run(c); });
     NodeId out = id;
     if (std::holds_alternative<Split>(g_.op(id))) {
       Split s = std::get<Split>(g_.op(id));
@@ -35,19 +28,8 @@ class Folder {
       if (out == kNotYet) out = id;
     } else if (changed) {
       Operation copy = g_.op(id);
-      std::size_t k = 0;
-      std::visit(
-          [&](auto& o) {
-            using T = std::decay_t<decltype(o)>;
-            if constexpr (std::is_same_v<T, Choose>) {
-              for (auto& option : o.options) option.child = done[k++];
-            } else if constexpr (std::is_same_v<T, Comp>) {
-              for (auto& part : o.parts) part.child = done[k++];
-            } else if constexpr (requires { o.child; }) {
-              o.child = done[k++];
-            }
-          },
-          copy);
+      const std::vector<NodeId*> slots = child_slots(copy);
+      for (std::size_t i = 0; i < slots.size(); ++i) *slots[i] = done[i];
       out = g_.intern({std::move(copy), {}});
     }
     if (memo_.size() <= id) memo_.resize(std::max<std::size_t>(g_.node_count(), id + 1), kNotYet);

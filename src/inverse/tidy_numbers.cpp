@@ -147,13 +147,8 @@ class Tidier {
   }
 
   NodeId tidy_split(NodeId id) {
-    std::vector<NodeId> children = node_children(g_.op(id));
-    bool same = true;
-    for (NodeId& c : children) {
-      const NodeId tidied = run(c);
-      same = same && tidied == c;
-      c = tidied;
-    }
+    const auto [children, changed] = map_children(g_.op(id), [&](NodeId c) { return run(c); });
+    bool same = !changed;
     // The new sizes: literals as numbers, anything else as an expression.
     const Split& s = std::get<Split>(g_.op(id));  // no nodes are added until the end
     const std::size_t n = s.parts.size();
