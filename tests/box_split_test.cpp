@@ -145,6 +145,56 @@ TEST(BoxSplit, GapsBecomeEmptyPartsOfTheRightSize) {
   EXPECT_EQ(low.children[1].max, glm::dvec3(4, 2, 1));
 }
 
+// The cut a container is, along which axis and into how many pieces.
+testing::AssertionResult cut_along(const SplitTree& t, int axis, std::size_t pieces) {
+  if (t.kind != Kind::Split) return testing::AssertionFailure() << "not a split";
+  if (t.axis != axis || t.children.size() != pieces)
+    return testing::AssertionFailure() << "cut along " << t.axis << " into " << t.children.size();
+  return testing::AssertionSuccess();
+}
+
+TEST(BoxSplit, ARowOfBuildingsIsCutIntoBuildingsBeforeTheAirAboveIt) {
+  // Two buildings side by side along x, 3 and 5 high, in a strip cut off
+  // along y by a street: the strip is cut along x into the two buildings,
+  // each with its own air, not along z under the taller one's top first.
+  const SplitTree t = split({part("rect", {0, 0, 0}, {2, 2, 3}, 0), part("rect", {2, 0, 0}, {4, 2, 5}, 1),
+                             part("rect", {0, 3, 0}, {4, 5, 6}, 2)});
+  ASSERT_TRUE(cut_along(t, 1, 3));  // no cut along x crosses the whole plot
+  const SplitTree& strip = t.children[0];
+  ASSERT_TRUE(cut_along(strip, 0, 2));
+  for (std::uint32_t b = 0; b < 2; ++b) {
+    ASSERT_TRUE(cut_along(strip.children[b], 2, 2));
+    EXPECT_EQ(strip.children[b].children[0].box, b);
+    EXPECT_EQ(strip.children[b].children[1].kind, Kind::Empty);
+  }
+}
+
+TEST(BoxSplit, ABlockIsCutIntoPlotsBeforeSlicingItUnderATowersUpperStorey) {
+  // In a strip cut off along y, a low building beside a tower whose upper
+  // storey (on a smaller footprint) starts above the low building's roof:
+  // a cut along z at 3 exists, but the strip is cut along x first.
+  const SplitTree t = split({part("rect", {0, 0, 0}, {2, 2, 2}, 0), part("rect", {2, 0, 0}, {4, 2, 3}, 1),
+                             part("rect", {2.5, 0.5, 3}, {3.5, 1.5, 6}, 2), part("rect", {0, 3, 0}, {4, 5, 6}, 3)});
+  ASSERT_TRUE(cut_along(t, 1, 3));
+  const SplitTree& strip = t.children[0];
+  ASSERT_TRUE(cut_along(strip, 0, 2));
+  const SplitTree& tower = strip.children[1];
+  ASSERT_EQ(tower.kind, Kind::Split);
+  EXPECT_EQ(tower.axis, 2);
+  EXPECT_EQ(tower.children[0].box, 1u);
+}
+
+TEST(BoxSplit, AnOnlyCutThatPeelsAirOffIsStillMade) {
+  // A box under air along z, with nothing beside it: z is the only cut.
+  const SplitTree t = split({part("rect", {0, 0, 0}, {2, 2, 1}, 0), part("rect", {0, 2, 0}, {2, 4, 3}, 1)});
+  ASSERT_EQ(t.kind, Kind::Split);
+  EXPECT_EQ(t.axis, 1);
+  ASSERT_EQ(t.children[0].kind, Kind::Split);
+  EXPECT_EQ(t.children[0].axis, 2);
+  EXPECT_EQ(t.children[0].children[0].box, 0u);
+  EXPECT_EQ(t.children[0].children[1].kind, Kind::Empty);
+}
+
 // Five boxes around a square, each pushing the next: no straight cut
 // separates any of them.
 std::vector<LabelledBox> pinwheel(glm::dvec3 at = glm::dvec3(0.0)) {

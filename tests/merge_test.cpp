@@ -4,24 +4,16 @@
 
 #include <gtest/gtest.h>
 
-#include "graph/import.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
 #include "inverse/rule_naming.hpp"
+#include "support/example_graphs.hpp"
 
 namespace vern {
 namespace {
 
-// Each text is one example's graph, as inference builds them: splits with
-// relative sizes in metres. All go into one interned grammar.
-std::vector<NodeId> examples(Grammar& g, const std::vector<std::string>& texts) {
-  std::vector<NodeId> roots;
-  for (const auto& t : texts) {
-    const Grammar parsed = parse_grammar("e --> " + t);
-    roots.push_back(import_subgraph(g, parsed, parsed.rules[0].body));
-  }
-  return roots;
-}
+// Each text one example's graph (support/example_graphs.hpp).
+constexpr auto examples = test::example_graphs;
 
 // The thesis's min-max ranges, which these tests of unification read off.
 const MergeOptions kUniform{1e-9, true};
@@ -163,10 +155,25 @@ TEST(Merge, PlacesThatCombineFreelyBecomeChoicesAndCoupledOnesStay) {
     rows.push_back(t + " }");
   }
   const NodeId free_rows = merge_examples(g, examples(g, rows), {});
-  // Each cell saw a, b and c: one choice, so a row is three of it, and the
-  // three equal rows are one repeated row: repeatN(y, 3){ repeatN(x, 3){ choice } }.
-  const auto* column = std::get_if<RepeatN>(&g.op(free_rows));
+  // Each cell saw a, b and c: one choice, so a row is three of it, and
+  // each example is three of that row. Where an example's three rows could
+  // trade places (each label in two rows or more), they are the tiles of a
+  // stretching repeat(y, ~1); the third example's are not (only one row
+  // holds b), and merging found its three equal rows, repeatN(y, 3). Both
+  // forms hold the one row: repeatN(x, 3){ choice }.
+  const auto* forms = std::get_if<Choose>(&g.op(free_rows));
+  ASSERT_NE(forms, nullptr);
+  ASSERT_EQ(forms->options.size(), 2u);
+  const auto* stretching = std::get_if<Repeat>(&g.op(forms->options[0].child));
+  const auto* column = std::get_if<RepeatN>(&g.op(forms->options[1].child));
+  ASSERT_NE(stretching, nullptr);
   ASSERT_NE(column, nullptr);
+  ASSERT_TRUE(stretching->size.literal().has_value());
+  EXPECT_GT(*stretching->size.literal(), 1.0);  // three tiles on the examples' 3 units
+  EXPECT_LT(*stretching->size.literal(), 1.5);
+  EXPECT_EQ(forms->options[0].priority.literal(), 2.0);
+  EXPECT_EQ(column->count.literal(), 3.0);
+  EXPECT_EQ(stretching->child, column->child);
   const auto* row = std::get_if<RepeatN>(&g.op(column->child));
   ASSERT_NE(row, nullptr);
   const auto* cell = std::get_if<Choose>(&g.op(row->child));

@@ -82,5 +82,87 @@ TEST(RepeatFolding, AdjacentEmptyPartsJoin) {
   EXPECT_NE(out.find("split(x){ ~1 : I(a) | ~3 : nil | ~1 : I(b) }"), std::string::npos) << out;
 }
 
+// Rows of unlike buildings (UnlikeTiles::Fold). A choose cannot be written
+// inside an operation, so these read the folded graph.
+
+// The start rule's body folded, in a grammar kept for reading it.
+struct Folded {
+  Grammar g;
+  NodeId body = 0;
+};
+Folded fold_text(const std::string& text, UnlikeTiles unlike = UnlikeTiles::Fold) {
+  Folded f{parse_grammar(text), 0};
+  f.body = fold_repeats(f.g, f.g.rules[0].body, 1e-6, unlike);
+  return f;
+}
+
+const std::string kLow = "split(z){ ~1 : I(rect) | ~3 : nil }";
+const std::string kTall = "split(z){ ~3 : I(rect) | ~1 : nil }";
+
+TEST(RepeatFolding, UnlikeBuildingsOfOneWidthBecomeARepeatOfTheirChoice) {
+  const Folded f = fold_text("a --> split(x){ ~2 : " + kLow + " | ~2 : " + kTall + " | ~2 : " + kLow + " }\n");
+  const auto* row = std::get_if<Repeat>(&f.g.op(f.body));
+  ASSERT_NE(row, nullptr);
+  ASSERT_TRUE(row->size.literal().has_value());
+  EXPECT_GT(*row->size.literal(), 2.0);  // just above the tile: three tiles on 6
+  EXPECT_LT(*row->size.literal(), 2.02);
+  const auto* choice = std::get_if<Choose>(&f.g.op(row->child));
+  ASSERT_NE(choice, nullptr);
+  ASSERT_EQ(choice->options.size(), 2u);
+  EXPECT_EQ(choice->options[0].priority.literal(), 2.0);  // the low building, twice
+  EXPECT_EQ(choice->options[1].priority.literal(), 1.0);
+  EXPECT_EQ(flat(write_operation(f.g, choice->options[1].child, {})), "split(z){ ~3 : I(rect) | ~1 : nil }");
+}
+
+TEST(RepeatFolding, OneExampleKeepsItsRowOfUnlikeBuildings) {
+  const std::string text = "a --> split(x){ ~2 : " + kLow + " | ~2 : " + kTall + " | ~2 : " + kLow + " }\n";
+  const Folded f = fold_text(text, UnlikeTiles::Keep);
+  EXPECT_EQ(flat(write_operation(f.g, f.body, {})), flat(write_operation(f.g, f.g.rules[0].body, {})));
+  EXPECT_TRUE(std::holds_alternative<Split>(f.g.op(f.body)));
+}
+
+TEST(RepeatFolding, PrimitivesOfOneWidthKeepTheirPlaces) {
+  // A door between two windows is not a window: no choice of the three.
+  const Folded f = fold_text("a --> split(x){ ~1 : I(window) | ~1 : I(door) | ~1 : I(window) }\n");
+  EXPECT_TRUE(std::holds_alternative<Split>(f.g.op(f.body)));
+}
+
+TEST(RepeatFolding, AGroundFloorWithTheOnlyDoorStaysBelowTheStoreysWhichFold) {
+  const Folded f = fold_text(
+      "a --> split(z){ ~3 : split(x){ ~1 : I(door) | ~2 : I(wall) } | ~3 : split(x){ ~1 : I(window) | ~2 : I(wall) } |"
+      " ~3 : split(x){ ~2 : I(wall) | ~1 : I(window) } | ~3 : split(x){ ~1 : I(window) | ~2 : I(wall) } }\n");
+  const auto* house = std::get_if<Split>(&f.g.op(f.body));
+  ASSERT_NE(house, nullptr);
+  ASSERT_EQ(house->parts.size(), 2u);
+  EXPECT_EQ(flat(write_operation(f.g, house->parts[0].child, {})), "split(x){ ~1 : I(door) | ~2 : I(wall) }");
+  EXPECT_EQ(house->parts[1].size.value.literal(), 9.0);
+  const auto* storeys = std::get_if<Repeat>(&f.g.op(house->parts[1].child));
+  ASSERT_NE(storeys, nullptr);
+  const auto* choice = std::get_if<Choose>(&f.g.op(storeys->child));
+  ASSERT_NE(choice, nullptr);
+  EXPECT_EQ(choice->options.size(), 2u);  // window left (twice) or right
+}
+
+TEST(RepeatFolding, APlotOfSeveralStripsIsOneTile) {
+  // Three plots of 3: a low building, a cluster of three tower strips, a
+  // tall building. The strips' cuts are no plot boundaries.
+  const Folded f = fold_text("a --> split(x){ ~3 : " + kLow + " | ~1 : " + kTall + " | ~1 : " + kLow + " | ~1 : " + kTall +
+                             " | ~3 : " + kTall + " }\n");
+  const auto* row = std::get_if<Repeat>(&f.g.op(f.body));
+  ASSERT_NE(row, nullptr);
+  const auto* choice = std::get_if<Choose>(&f.g.op(row->child));
+  ASSERT_NE(choice, nullptr);
+  ASSERT_EQ(choice->options.size(), 3u);
+  // The cluster's three strips are a row of unlike towers in turn.
+  const auto* cluster = std::get_if<Repeat>(&f.g.op(choice->options[1].child));
+  ASSERT_NE(cluster, nullptr);
+  ASSERT_TRUE(cluster->size.literal().has_value());
+  EXPECT_GT(*cluster->size.literal(), 1.0);
+  EXPECT_LE(*cluster->size.literal(), 1.01);  // at most a percent above
+  const auto* towers = std::get_if<Choose>(&f.g.op(cluster->child));
+  ASSERT_NE(towers, nullptr);
+  EXPECT_EQ(towers->options.size(), 2u);
+}
+
 }  // namespace
 }  // namespace vern

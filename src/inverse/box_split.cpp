@@ -26,9 +26,11 @@
 // instead of jumping between containers, and nothing is allocated per
 // container. Containers are taken from a stack, not level by level: a
 // container's result does not depend on when it is cut. The axes a
-// container tries are those a global round of x, y, z sweeps would give it:
-// the root x, y, z; a piece of a cut along a, a + 1 and then a + 2 (along a
-// it was already swept). The bounds are sorted by radix sort on their
+// container tries: the root x, y, z; a piece of a cut along a the other
+// two, the horizontal one before z (the thesis's global rounds would give
+// a piece of a y-cut z first); and a cut that only peels empty space off a
+// container's ends waits for an axis that divides its parts (see cut).
+// The bounds are sorted by radix sort on their
 // order-preserving bit patterns (11 bits a pass), ties in input order.
 //
 // What this file adds to the thesis:
@@ -107,8 +109,8 @@ struct Work {
   std::uint32_t begin = 0, end = 0;
   std::array<Rank, 3> lo{}, hi{};
   std::array<double, 3> lo_val{}, hi_val{};
-  int first_axis = 0;  // tries first_axis, first_axis + 1, ... (mod 3)
-  int tries = 3;
+  std::array<int, 3> axes{0, 1, 2};  // the axes to try, in order
+  int tries = 3;                     // how many of them
 };
 
 std::string amount(double v) {
@@ -304,17 +306,46 @@ class Splitter {
         return;
       }
     }
+    // The axes in order, but a cut that only peels empty space off the
+    // ends (one piece: a row of buildings under the air above its lowest
+    // roofs) waits while another axis divides the parts themselves: the row
+    // is cut into buildings and each building keeps its own air, as a
+    // person would model it, and rows of different heights share one
+    // structure.
+    int peel = -1;
     for (int i = 0; i < w.tries; ++i) {
-      const int a = (w.first_axis + i) % 3;
+      const int a = w.axes[static_cast<std::size_t>(i)];
       if (w.lo[static_cast<std::size_t>(a)] == w.hi[static_cast<std::size_t>(a)]) continue;  // flat along a
-      if (sweep(w, a)) return;
+      if (!find_pieces(w, a)) continue;
+      if (pieces_.size() > 1) {
+        cut_along(w, a);
+        return;
+      }
+      if (peel < 0) peel = a;
+    }
+    if (peel >= 0) {
+      find_pieces(w, peel);
+      cut_along(w, peel);
+      return;
     }
     unsplittable(w);
   }
 
-  // One sweep along axis a over the container's bounds (9.1.3, boxesToOp);
-  // cuts it into its pieces and returns true, or returns false.
-  bool sweep(const Work& w, int a) {
+  // The axes a piece of a cut along a tries: not a again (it was swept),
+  // the other horizontal axis before z. Plots are laid out before they are
+  // built up: a block with one tall tower is cut into its rows of
+  // buildings, not into a slab of all its low buildings under the tower's
+  // upper storeys.
+  static std::array<int, 3> axes_after(int a) {
+    if (a == 0) return {1, 2, 0};
+    if (a == 1) return {0, 2, 1};
+    return {0, 1, 2};
+  }
+
+  // One sweep along axis a over the container's bounds (9.1.3, boxesToOp):
+  // finds the pieces a cut along a would make (pieces_, and which piece each
+  // box falls in), or returns false when no cut along a divides it.
+  bool find_pieces(const Work& w, int a) {
     const auto ax = static_cast<std::size_t>(a);
     // The counter of open boxes: a piece starts at a min bound when nothing
     // is open and ends where the counter next returns to zero; each box
@@ -378,6 +409,14 @@ class Splitter {
         ((pieces_[0].lo == w.lo[ax] && pieces_[0].hi == w.hi[ax]) || pieces_[0].lo == pieces_[0].hi)) {
       return false;
     }
+    return true;
+  }
+
+  // Cuts the container into the pieces find_pieces(w, a) found last.
+  void cut_along(const Work& w, int a) {
+    const auto ax = static_cast<std::size_t>(a);
+    const std::uint32_t begin = w.begin, end = w.end;
+    const std::uint32_t* span_of = span_of_.data();
 
     // Pieces meeting at a rank share one cut, at the smallest of their
     // coordinates there; pieces at the container's ends keep its bounds.
@@ -460,7 +499,7 @@ class Splitter {
       child.hi[ax] = piece.hi;
       child.lo_val[ax] = piece.lo_val;
       child.hi_val[ax] = piece.hi_val;
-      child.first_axis = (a + 1) % 3;  // a piece cannot be cut again along a
+      child.axes = axes_after(a);
       child.tries = 2;
       stack_.push_back(child);
       previous = piece.hi;
@@ -469,7 +508,6 @@ class Splitter {
     if (previous < w.hi[ax]) gap(previous_val, w.hi_val[ax]);
     // First piece on top: depth first, in order.
     std::reverse(stack_.begin() + static_cast<std::ptrdiff_t>(first_work), stack_.end());
-    return true;
   }
 
   // No straight cut divides the container: its boxes, in index order.

@@ -6,7 +6,7 @@
 #include <set>
 #include <unordered_map>
 
-#include "graph/overload.hpp"
+#include "inverse/substitute.hpp"
 
 namespace vern {
 
@@ -25,12 +25,12 @@ struct Frame {
 class Generaliser {
  public:
   Generaliser(Grammar& g, const MergeOptions& o)
-      : g_(g), opt_(o), references_(g.node_count(), 0), rebuilt_(g.node_count(), kNone) {}
+      : g_(g), opt_(o), references_(g.node_count(), 0) {}
 
   NodeId run(NodeId root, bool& changed) {
     changed = false;
     collect(root);
-    std::vector<NodeId> replace(g_.node_count(), kNone);  // by node id
+    std::vector<NodeId> replace(g_.node_count(), kNoReplacement);  // by node id
     for (auto& [key, frame] : frames_) {
       if (frame.members.size() < 2) continue;
       if (auto merged = generalise(frame)) {
@@ -38,14 +38,12 @@ class Generaliser {
         for (NodeId m : frame.members) replace[m] = *merged;
       }
     }
-    return changed ? substitute(root, replace) : root;
+    return changed ? substitute(g_, root, replace) : root;
   }
 
  private:
   // Every split below root, grouped by frame; references counted, since a
   // part used in two places was seen twice.
-  static constexpr NodeId kNone = static_cast<NodeId>(-1);
-
   void collect(NodeId id) {
     if (references_[id]++ > 0) return;
     const Operation& op = g_.op(id);
@@ -116,45 +114,10 @@ class Generaliser {
     return g_.intern({std::move(merged), {}});
   }
 
-  // Rebuilds the graph below root with some nodes replaced.
-  NodeId substitute(NodeId id, const std::vector<NodeId>& replace) {
-    if (replace[id] != kNone) return replace[id];
-    if (rebuilt_[id] != kNone) return rebuilt_[id];
-    Operation op = g_.op(id);
-    bool any = false;
-    auto child = [&](NodeId& c) {
-      const NodeId n = substitute(c, replace);
-      any = any || n != c;
-      c = n;
-    };
-    std::visit(Overload{
-                   [&](Split& s) {
-                     for (auto& p : s.parts) child(p.child);
-                   },
-                   [&](Repeat& r) { child(r.child); },
-                   [&](RepeatN& r) { child(r.child); },
-                   [&](Choose& c) {
-                     for (auto& o : c.options) child(o.child);
-                   },
-                   [&](Translate& t) { child(t.child); },
-                   [&](Scale& s) { child(s.child); },
-                   [&](Rotate& r) { child(r.child); },
-                   [&](Comp& c) {
-                     for (auto& p : c.parts) child(p.child);
-                   },
-                   [](auto&) {},
-               },
-               op);
-    const NodeId out = any ? g_.intern({std::move(op), g_.node(id).loc}) : id;
-    rebuilt_[id] = out;
-    return out;
-  }
-
   Grammar& g_;
   const MergeOptions& opt_;
   std::vector<int> references_;  // by node id, below the root
   std::map<std::string, Frame> frames_;
-  std::vector<NodeId> rebuilt_;  // by node id: its substitute, or kNone
 };
 
 }  // namespace

@@ -4,8 +4,10 @@
 #include "inverse/fit_distribution.hpp"
 #include "inverse/repeat_folding.hpp"
 #include "inverse/size_plan.hpp"
+#include "inverse/tile_choices.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <optional>
 #include <string_view>
@@ -62,6 +64,61 @@ std::vector<double> example_counts(const Grammar& g, const std::vector<NodeId>& 
   return counts;
 }
 
+// Repeats whose tiles differ in length by a wide gap are different kinds
+// of repeat, though alike in structure: a block's strips of buildings and
+// a tower cluster's strips a third as wide. Ranging one tile size over
+// both would give blocks of a dozen slivers and clusters of two towers.
+// The kinds: per axis, the repeats' tile lengths (ranges, once merged) in
+// order, a new kind wherever the next length is more than kLengthGap
+// times the longest so far.
+class TileLengths {
+ public:
+  static constexpr double kLengthGap = 1.25;
+
+  TileLengths() = default;
+  TileLengths(const Grammar& g, NodeId root) {
+    std::vector<bool> seen(g.node_count(), false);
+    std::vector<NodeId> stack{root};
+    std::array<std::vector<Range>, 3> lengths;
+    while (!stack.empty()) {
+      const NodeId id = stack.back();
+      stack.pop_back();
+      if (seen[id]) continue;
+      seen[id] = true;
+      const Operation& op = g.op(id);
+      if (const auto* r = std::get_if<Repeat>(&op))
+        if (const auto axis = axis_of(*r); axis && literal_range(r->size)) lengths[*axis].push_back(*literal_range(r->size));
+      for (NodeId c : node_children(op)) stack.push_back(c);
+    }
+    for (std::size_t a = 0; a < 3; ++a) {
+      std::sort(lengths[a].begin(), lengths[a].end(), [](const Range& x, const Range& y) { return x.lo < y.lo; });
+      for (const Range& r : lengths[a]) {
+        if (starts_[a].empty() || r.lo > kLengthGap * longest_[a]) starts_[a].push_back(r.lo);
+        longest_[a] = starts_[a].size() == 1 && longest_[a] == 0 ? r.hi : std::max(longest_[a], r.hi);
+      }
+    }
+  }
+
+  // The repeat's kind: 1 + the index of its length's kind on its axis
+  // (0 for a repeat without a literal axis and length).
+  std::size_t kind(const Repeat& r) const {
+    const auto axis = axis_of(r);
+    const auto length = literal_range(r.size);
+    if (!axis || !length) return 0;
+    const auto& starts = starts_[*axis];
+    return static_cast<std::size_t>(std::upper_bound(starts.begin(), starts.end(), length->lo) - starts.begin());
+  }
+
+ private:
+  static std::optional<std::size_t> axis_of(const Repeat& r) {
+    if (r.axis.nodes().size() != 1 || r.axis.node(0).kind != ExprKind::Axis) return std::nullopt;
+    return static_cast<std::size_t>(r.axis.node(0).op);
+  }
+
+  std::array<std::vector<double>, 3> starts_;  // per axis: each kind's shortest length, ascending
+  std::array<double, 3> longest_{};            // per axis: the longest length so far (while building)
+};
+
 // Unifies nodes of equal structure anywhere below a root (thesis 10.3):
 // the same operation, axis, relative flags, counts and children (after
 // unification), whatever their sizes. Each group becomes one node whose
@@ -76,6 +133,7 @@ class Unifier {
       : g_(g), opt_(o), book_(book), counts_(counts), group_of_(g.node_count(), kNoGroup) {}
 
   NodeId run(NodeId root) {
+    tile_lengths_ = TileLengths(g_, root);
     visit(root);
     std::vector<NodeId> built(groups_.size(), 0);
     for (std::size_t k = 0; k < groups_.size(); ++k) built[k] = build(groups_[k], built);
@@ -105,11 +163,12 @@ class Unifier {
   struct Key {
     std::size_t form = 0;
     std::vector<std::size_t> children;
+    std::size_t lengths = 0;  // a repeat's kind of tile length (TileLengths)
     friend bool operator==(const Key&, const Key&) = default;
   };
   struct KeyHash {
     std::size_t operator()(const Key& k) const {
-      std::size_t h = hash_combine(k.children.size(), k.form);
+      std::size_t h = hash_combine(hash_combine(k.children.size(), k.form), k.lengths);
       for (std::size_t c : k.children) h = hash_combine(h, c);
       return h;
     }
@@ -156,7 +215,9 @@ class Unifier {
       visit_choose(id, *c, children);
       return;
     }
-    auto [it, fresh] = group_by_key_.emplace(Key{form_id(op), children}, groups_.size());
+    std::size_t lengths = 0;
+    if (const auto* r = std::get_if<Repeat>(&op)) lengths = tile_lengths_.kind(*r);
+    auto [it, fresh] = group_by_key_.emplace(Key{form_id(op), children, lengths}, groups_.size());
     if (fresh) {
       groups_.emplace_back();
       groups_.back().first = id;
@@ -284,6 +345,7 @@ class Unifier {
 
   Grammar& g_;
   const MergeOptions& opt_;
+  TileLengths tile_lengths_;
   SampleBook& book_;
   const std::vector<double>& counts_;  // by node id: examples it occurs in
   std::vector<Group> groups_;
@@ -561,7 +623,8 @@ class Fitter {
 
 NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeOptions& options) {
   std::vector<NodeId> folded;
-  for (NodeId r : roots) folded.push_back(fold_repeats(g, r, options.tolerance));
+  const UnlikeTiles unlike = roots.size() > 1 ? UnlikeTiles::Fold : UnlikeTiles::Keep;
+  for (NodeId r : roots) folded.push_back(fold_repeats(g, r, options.tolerance, unlike));
   Choose all;
   for (NodeId r : folded) all.options.push_back({Expr{}, Expr::number(1.0), r});
   const NodeId examples = g.intern({std::move(all), {}});
@@ -578,10 +641,15 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   // Free combinations make parents alike, which unify, which may show more
   // free combinations above: repeat until nothing changes (a few rounds:
   // each round generalises at least one frame, and frames only merge).
+  // Rows of one kind sharing their tiles' choices works the same way.
   for (int round = 0; round < 16; ++round) {
     bool changed = false;
     merged = generalise_free_parts(g, merged, options, changed);
-    if (!changed) break;
+    const TileChoiceUnion united = unite_tile_choices(g, merged);
+    for (const auto& [old, rebuilt] : united.replaced)
+      if (const auto it = book.find(old); it != book.end()) book[rebuilt] = it->second;
+    merged = united.root;
+    if (!changed && united.replaced.empty()) break;
     merged = Unifier(g, options, book, counts).run(merged);
   }
   merged = Fitter(g, options, book).run(merged);

@@ -1,6 +1,10 @@
 #include "inverse/repeat_folding.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <map>
+#include <unordered_map>
 #include <optional>
 #include <vector>
 
@@ -13,7 +17,7 @@ namespace {
 
 class Folder {
  public:
-  Folder(Grammar& g, double tolerance) : g_(g), tol_(tolerance) {}
+  Folder(Grammar& g, double tolerance, UnlikeTiles unlike) : g_(g), tol_(tolerance), unlike_(unlike) {}
 
   NodeId run(NodeId id) {
     if (id < memo_.size() && memo_[id] != kNotYet) return memo_[id];
@@ -97,23 +101,135 @@ class Folder {
       if (std::abs(at - cuts[i]) > tol_) return std::nullopt;
     }
     NodeId body = parts[r.start].child;
-    if (r.period > 1) {
-      Split s{axis, {}};
-      for (std::size_t j = 0; j < r.period; ++j) {
-        s.parts.push_back({{parts[r.start + j].size.value, true}, parts[r.start + j].child});
-      }
-      body = g_.intern({std::move(s), {}});
-    }
+    if (r.period > 1) body = group(axis, parts, r.start, r.start + r.period);
+    return repeat_part(axis, total, r.copies, body, parts[r.start].size.relative);
+  }
+
+  // The parts [from, to) as one split of relative sizes (their lengths).
+  NodeId group(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from, std::size_t to) {
+    Split s{axis, {}};
+    for (std::size_t j = from; j < to; ++j) s.parts.push_back({{parts[j].size.value, true}, parts[j].child});
+    return g_.intern({std::move(s), {}});
+  }
+
+  // copies tiles of body on a part of length total, as repeat(axis, tile).
+  SplitPart repeat_part(const Expr& axis, double total, std::size_t copies, NodeId body, bool relative) {
     // The written tile size: any size in (L / n, L / (n - 1)] makes n tiles
     // on L, and a size exactly L / n would make n + 1 once rounding nudges
     // L up. So the shortest decimal a hair above the tile, within a
     // percent (and a half tile count) of it: 2.9 for 2.8999997, not the
     // noise.
-    const double n = static_cast<double>(r.copies);
+    const double n = static_cast<double>(copies);
+    const double tile = total / n;
     const double low = tile * (1 + 1e-5), high = tile * (1 + std::min(0.01, 0.5 / n));
     const double written = shortest_decimal((low + high) / 2, (high - low) / 2);
     const NodeId tiles = g_.intern({Repeat{axis, Expr::number(written), body}, {}});
-    return SplitPart{{Expr::number(total), parts[r.start].size.relative}, tiles};
+    return SplitPart{{Expr::number(total), relative}, tiles};
+  }
+
+  // Equal tiles holding different things (issue 4, "repeats that
+  // stretch", for rows of unlike buildings): parts [from, to) cut into
+  // k >= 3 pieces of one length at cuts the split already has, each piece
+  // one part or a group of parts (a plot of three tower strips), become
+  // repeat(axis, tile){ choose{ what the pieces hold } }, weighted by how
+  // often each occurs. Only where the pieces are built, not bare
+  // primitives: a window and a door of one width in a row keep their
+  // places. nullopt when no such tiling exists or it would move a cut by
+  // more than the tolerance.
+  std::optional<SplitPart> fold_unlike(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from,
+                                       std::size_t to) {
+    if (to - from < 3) return std::nullopt;
+    std::vector<double> at{0};  // cut positions from parts[from]
+    for (std::size_t i = from; i < to; ++i) at.push_back(at.back() + *parts[i].size.value.literal());
+    const double total = at.back();
+    // The first tile ends at one of the first cuts; the largest count wins.
+    for (std::size_t m = 1; m < at.size() - 1 && m <= kMaxPartsPerTile; ++m) {
+      const auto k = static_cast<std::size_t>(std::lround(total / at[m]));
+      if (k < 3 || k > to - from) continue;
+      const double tile = total / static_cast<double>(k);
+      std::vector<std::size_t> starts{0};  // each tile's first part, from `from`
+      for (std::size_t j = 1, i = 1; j < k && i < at.size(); ++j) {
+        while (i < at.size() && at[i] < static_cast<double>(j) * tile - tol_) ++i;
+        if (i == at.size() || std::abs(at[i] - static_cast<double>(j) * tile) > tol_) break;
+        starts.push_back(i);
+      }
+      if (starts.size() != k) continue;
+      starts.push_back(to - from);
+      if (auto part = fold_tiles(axis, parts, from, at, starts, tile)) return part;
+    }
+    return std::nullopt;
+  }
+
+  std::optional<SplitPart> fold_tiles(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from,
+                                      const std::vector<double>& at, const std::vector<std::size_t>& starts,
+                                      double tile) {
+    const std::size_t k = starts.size() - 1;
+    // Every cut stays where it was: inside a tile, its parts keep their
+    // shares of the tile.
+    for (std::size_t t = 0; t < k; ++t) {
+      const double begin = at[starts[t]], length = at[starts[t + 1]] - begin;
+      for (std::size_t i = starts[t]; i <= starts[t + 1]; ++i) {
+        const double moved = static_cast<double>(t) * tile + (at[i] - begin) * (tile / length);
+        if (std::abs(moved - at[i]) > tol_) return std::nullopt;
+      }
+    }
+    std::vector<std::pair<NodeId, double>> held;  // distinct tiles, with counts
+    bool built = false, empty = false;
+    for (std::size_t t = 0; t < k; ++t) {
+      const std::size_t a = from + starts[t], b = from + starts[t + 1];
+      NodeId piece = parts[a].child;
+      if (b - a > 1) {
+        const Split grouped = std::get<Split>(g_.op(group(axis, parts, a, b)));
+        piece = fold_split(grouped, true);
+      }
+      built = built || !is_primitive(piece);
+      empty = empty || is_nil(piece);
+      auto it = std::find_if(held.begin(), held.end(), [&](const auto& h) {
+        return h.first == piece || structurally_equal(g_, h.first, g_, piece);
+      });
+      if (it == held.end()) held.emplace_back(piece, 1.0);
+      else it->second += 1;
+    }
+    if (held.size() > 1 && (!built || empty || !exchangeable(held))) return std::nullopt;
+    NodeId body = held[0].first;
+    if (held.size() > 1) {
+      Choose choose;
+      for (const auto& [piece, count] : held) choose.options.push_back({Expr{}, Expr::number(count), piece});
+      body = g_.intern({std::move(choose), {}});
+    }
+    return repeat_part(axis, at.back(), k, body, parts[from].size.relative);
+  }
+
+  // Tiles that may trade places: none holds a primitive that no other
+  // tile holds. A ground floor with the only door, under storeys of
+  // windows, is not one of the storeys; the storeys above it are.
+  bool exchangeable(const std::vector<std::pair<NodeId, double>>& held) {
+    std::map<LabelId, std::size_t> tiles_with;  // label -> tiles holding it
+    for (const auto& [piece, count] : held)
+      for (LabelId label : labels_below(piece)) tiles_with[label] += static_cast<std::size_t>(count);
+    return std::all_of(tiles_with.begin(), tiles_with.end(), [](const auto& l) { return l.second >= 2; });
+  }
+
+  // The labels of the primitives below a node, ascending (memoised).
+  const std::vector<LabelId>& labels_below(NodeId id) {
+    if (const auto it = labels_.find(id); it != labels_.end()) return it->second;
+    std::vector<LabelId> out;
+    if (const auto* p = std::get_if<Primitive>(&g_.op(id))) out.push_back(p->label);
+    for (NodeId c : node_children(g_.op(id))) {
+      const std::vector<LabelId>& below = labels_below(c);
+      std::vector<LabelId> both;
+      std::set_union(out.begin(), out.end(), below.begin(), below.end(), std::back_inserter(both));
+      out = std::move(both);
+    }
+    return labels_[id] = std::move(out);
+  }
+
+  // A primitive, turned or not, or empty space: what a tile may hold only
+  // when all tiles hold the same.
+  bool is_primitive(NodeId id) const {
+    const Operation& op = g_.op(id);
+    if (const auto* r = std::get_if<Rotate>(&op)) return is_primitive(r->child);
+    return std::holds_alternative<Primitive>(op) || std::holds_alternative<Nil>(op);
   }
 
   // The split with its parts' children already folded; kNotYet when
@@ -140,12 +256,27 @@ class Folder {
       // is folded: the walls or margins at its ends may differ. A run
       // inside a mixed row (a | a | b) is left to merging, which lines
       // alike rows up first and finds what combines freely there.
+      auto replace = [&](std::size_t from, std::size_t to, const SplitPart& folded) {
+        parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(from), parts.begin() + static_cast<std::ptrdiff_t>(to));
+        parts.insert(parts.begin() + static_cast<std::ptrdiff_t>(from), folded);
+        changed = true;
+      };
+      bool folded = false;
       if (const auto r = best_run(parts); r && r->parts() >= 3 && r->parts() + 2 >= parts.size()) {
-        if (const std::optional<SplitPart> folded = fold(s.axis, parts, *r)) {
-          parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(r->start),
-                      parts.begin() + static_cast<std::ptrdiff_t>(r->start + r->parts()));
-          parts.insert(parts.begin() + static_cast<std::ptrdiff_t>(r->start), *folded);
-          changed = true;
+        if (const std::optional<SplitPart> part = fold(s.axis, parts, *r)) {
+          replace(r->start, r->start + r->parts(), *part);
+          folded = true;
+        }
+      }
+      // Else equal tiles of unlike contents, over the whole split or all
+      // but one or two end parts (the most parts first).
+      for (std::size_t outside = 0; unlike_ == UnlikeTiles::Fold && !folded && outside <= 2 && outside + 3 <= parts.size(); ++outside) {
+        for (std::size_t head = 0; head <= outside && !folded; ++head) {
+          const std::size_t from = head, to = parts.size() - (outside - head);
+          if (auto part = fold_unlike(s.axis, parts, from, to)) {
+            replace(from, to, *part);
+            folded = true;
+          }
         }
       }
     }
@@ -155,14 +286,19 @@ class Folder {
   }
 
   static constexpr std::size_t kMaxPeriod = 4;
+  static constexpr std::size_t kMaxPartsPerTile = 16;
   static constexpr NodeId kNotYet = static_cast<NodeId>(-1);
   Grammar& g_;
   double tol_;
+  UnlikeTiles unlike_;
   std::vector<NodeId> memo_;  // by node id; kNotYet until folded
+  std::unordered_map<NodeId, std::vector<LabelId>> labels_;  // labels_below, by node
 };
 
 }  // namespace
 
-NodeId fold_repeats(Grammar& g, NodeId root, double tolerance) { return Folder(g, tolerance).run(root); }
+NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike) {
+  return Folder(g, tolerance, unlike).run(root);
+}
 
 }  // namespace vern

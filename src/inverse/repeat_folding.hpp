@@ -20,14 +20,31 @@
 // split of the pattern with the parts' lengths as relative sizes. Runs of
 // empty space are joined into one empty part instead. A split left with a
 // single relative part is that part's operation.
+//
+// Rows of unlike things (UnlikeTiles::Fold): where no such run covers a
+// split, equal tiles holding different buildings become
+//   repeat(axis, tile){ choose{ what the tiles held, weighted by count } }
+// when the split, or all but one or two parts at its ends, cuts into k >= 3
+// pieces of one length at cuts it already has (a piece may be several
+// parts: a plot holding three strips of towers), and the pieces are
+// exchangeable: not bare primitives or empty space, and no piece the only
+// one to hold some label (a ground floor with the door stays below the
+// storeys, which fold). Merging then unites the choices of rows of one kind
+// (tile_choices.hpp).
 #pragma once
 
 #include "graph/grammar.hpp"
 
 namespace vern {
 
+// What folding may do besides runs of equal parts.
+enum class UnlikeTiles {
+  Keep,  // one example alone: it must come back exactly as it is
+  Fold,  // equal tiles of unlike contents become a repeat of a choice
+};
+
 // Rewrites every split below root whose sizes are literals; returns the new
 // root (nodes interned in g).
-NodeId fold_repeats(Grammar& g, NodeId root, double tolerance);
+NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike = UnlikeTiles::Fold);
 
 }  // namespace vern

@@ -1,0 +1,41 @@
+#include "inverse/substitute.hpp"
+
+namespace vern {
+
+namespace {
+
+class Substitution {
+ public:
+  Substitution(Grammar& g, const std::vector<NodeId>& replace)
+      : g_(g), replace_(replace), rebuilt_(g.node_count(), kNoReplacement) {}
+
+  NodeId run(NodeId id) {
+    if (id < replace_.size() && replace_[id] != kNoReplacement) return replace_[id];
+    if (id < rebuilt_.size() && rebuilt_[id] != kNoReplacement) return rebuilt_[id];
+    // Children first, by id: rebuilding them may move the arena.
+    const auto [children, changed] = map_children(g_.op(id), [&](NodeId c) { return run(c); });
+    NodeId out = id;
+    if (changed) {
+      Operation op = g_.op(id);
+      const std::vector<NodeId*> slots = child_slots(op);
+      for (std::size_t i = 0; i < slots.size(); ++i) *slots[i] = children[i];
+      out = g_.intern({std::move(op), g_.node(id).loc});
+    }
+    if (id >= rebuilt_.size()) rebuilt_.resize(id + 1, kNoReplacement);
+    rebuilt_[id] = out;
+    return out;
+  }
+
+ private:
+  Grammar& g_;
+  const std::vector<NodeId>& replace_;
+  std::vector<NodeId> rebuilt_;  // by node id: what it became, or kNoReplacement
+};
+
+}  // namespace
+
+NodeId substitute(Grammar& g, NodeId root, const std::vector<NodeId>& replace) {
+  return Substitution(g, replace).run(root);
+}
+
+}  // namespace vern

@@ -1,0 +1,21 @@
+// Rebuilding a graph with some of its nodes replaced: what every merging
+// step that decides "these nodes become that one" needs after deciding.
+#pragma once
+
+#include <vector>
+
+#include "graph/grammar.hpp"
+
+namespace vern {
+
+// Node ids that stand for no replacement in a replacement table.
+inline constexpr NodeId kNoReplacement = static_cast<NodeId>(-1);
+
+// The graph below root with every node n for which replace[n] is not
+// kNoReplacement replaced by replace[n] (replace is indexed by node id and
+// may be shorter than the grammar: ids past its end are kept). Nodes whose
+// children change are interned anew, keeping their source location;
+// nothing else is copied. Memoised: a DAG is rebuilt in one pass.
+NodeId substitute(Grammar& g, NodeId root, const std::vector<NodeId>& replace);
+
+}  // namespace vern

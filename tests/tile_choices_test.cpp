@@ -1,0 +1,108 @@
+// Rows of one kind share what their tiles may hold (tile_choices.hpp), and
+// repeats of far-apart tile lengths stay different kinds (merge.cpp's
+// TileLengths): through merge_examples, on example graphs as inference
+// builds them.
+#include "inverse/tile_choices.hpp"
+
+#include <gtest/gtest.h>
+
+#include "graph/parser.hpp"
+#include "graph/writer.hpp"
+#include "inverse/merge.hpp"
+#include "support/example_graphs.hpp"
+
+namespace vern {
+namespace {
+
+// Each text one example's graph (support/example_graphs.hpp).
+constexpr auto examples = test::example_graphs;
+
+// Three kinds of building, each its own structure whatever its sizes.
+std::string plain(double h) { return "split(z){ ~" + std::to_string(h) + " : I(rect) | ~" + std::to_string(10 - h) + " : nil }"; }
+const std::string kRoofed = "split(z){ ~3 : I(rect) | ~1 : I(roof) | ~6 : nil }";
+const std::string kTwin = "split(x){ ~1 : " + plain(4) + " | ~1 : " + plain(6) + " }";
+const std::string kGlass = "split(z){ ~5 : I(glass) | ~5 : nil }";
+const std::string kGlassRoofed = "split(z){ ~5 : I(glass) | ~1 : I(roof) | ~4 : nil }";
+
+// A row of three plots of width w.
+std::string row(double w, const std::string& a, const std::string& b, const std::string& c) {
+  const std::string s = "~" + std::to_string(w) + " : ";
+  return "split(x){ " + s + a + " | " + s + b + " | " + s + c + " }";
+}
+
+// The repeat a merged example is (through a choose of one example's form).
+const Repeat& repeat_at(const Grammar& g, NodeId id) { return std::get<Repeat>(g.op(id)); }
+
+// The labels' alternatives of a tile's choice, written, in order.
+std::vector<std::string> alternatives(const Grammar& g, const Repeat& r) {
+  std::vector<std::string> out;
+  if (const auto* c = std::get_if<Choose>(&g.op(r.child))) {
+    for (const auto& o : c->options) out.push_back(write_operation(g, o.child, {}) + " : " + std::to_string(int(*o.priority.literal())));
+  } else {
+    out.push_back(write_operation(g, r.child, {}));
+  }
+  return out;
+}
+
+TEST(TileChoices, RowsSharingABuildingKindShareEveryKindTheyHeld) {
+  // Both rows hold plain buildings; one also roofed ones, the other twin
+  // towers: one row kind choosing among all three. (A roofed building
+  // alone in its row would be the row's odd one out, which folding keeps
+  // in its place: repeat_folding_test.)
+  Grammar g;
+  const auto roots = examples(g, {row(2, kRoofed, plain(5), kRoofed), row(2, plain(4), kTwin, plain(2))});
+  const NodeId merged = merge_examples(g, roots, {1e-9, true});
+  const Repeat& r = repeat_at(g, merged);
+  const auto held = alternatives(g, r);
+  ASSERT_EQ(held.size(), 3u) << ::testing::PrintToString(held);
+  EXPECT_NE(held[0].find("I(roof)"), std::string::npos) << held[0];
+  EXPECT_NE(held[0].find(" : 2"), std::string::npos) << held[0];  // two roofed plots
+  EXPECT_NE(held[1].find("rand(2, 6)"), std::string::npos) << held[1];  // plain, over all five heights
+  EXPECT_NE(held[1].find(" : 3"), std::string::npos) << held[1];
+  EXPECT_NE(held[2].find("repeatN(x, 2)"), std::string::npos) << held[2];  // the twin towers
+}
+
+TEST(TileChoices, RowsSharingNothingStayApart) {
+  // A row of brick buildings and a row of glass ones: no alternative in
+  // common, so each keeps its own choice.
+  Grammar g;
+  const auto roots = examples(g, {row(2, kRoofed, plain(5), kRoofed), row(2, kGlassRoofed, kGlass, kGlassRoofed)});
+  const NodeId merged = merge_examples(g, roots, {1e-9, true});
+  const auto& forms = std::get<Choose>(g.op(merged));
+  ASSERT_EQ(forms.options.size(), 2u);
+  EXPECT_EQ(alternatives(g, repeat_at(g, forms.options[0].child)).size(), 2u);
+  EXPECT_EQ(alternatives(g, repeat_at(g, forms.options[1].child)).size(), 2u);
+}
+
+TEST(TileChoices, TilesOfFarApartLengthsAreDifferentKinds) {
+  // Plots 2 and 2.2 wide are one kind of row; strips 0.5 wide, holding the
+  // same kinds of building, are another: their tile lengths stay apart
+  // instead of ranging from 0.5 to 2.2.
+  Grammar g;
+  const auto roots = examples(g, {row(2, kRoofed, plain(5), kRoofed), row(2.2, plain(4), kRoofed, kRoofed),
+                                  row(0.5, plain(4), kTwin, plain(2))});
+  const NodeId merged = merge_examples(g, roots, {1e-9, true});
+  const auto& forms = std::get<Choose>(g.op(merged));
+  ASSERT_EQ(forms.options.size(), 2u);
+  const Repeat& plots = repeat_at(g, forms.options[0].child);
+  const Repeat& strips = repeat_at(g, forms.options[1].child);
+  const auto plot_tile = literal_range(plots.size);
+  const auto strip_tile = literal_range(strips.size);
+  ASSERT_TRUE(plot_tile && strip_tile);
+  EXPECT_GT(plot_tile->lo, 2.0);
+  EXPECT_LT(plot_tile->hi, 2.3);
+  EXPECT_GT(strip_tile->lo, 0.5);
+  EXPECT_LT(strip_tile->hi, 0.51);
+  EXPECT_EQ(forms.options[0].priority.literal(), 2.0);
+}
+
+TEST(TileChoices, NothingToUniteLeavesTheGraphAsItIs) {
+  Grammar g;
+  const auto roots = examples(g, {row(2, plain(3), plain(3), plain(3))});
+  const TileChoiceUnion u = unite_tile_choices(g, roots[0]);
+  EXPECT_EQ(u.root, roots[0]);
+  EXPECT_TRUE(u.replaced.empty());
+}
+
+}  // namespace
+}  // namespace vern
