@@ -3,6 +3,7 @@
 #include "inverse/generalise.hpp"
 #include "inverse/fit_distribution.hpp"
 #include "inverse/repeat_folding.hpp"
+#include "inverse/size_clusters.hpp"
 #include "inverse/size_plan.hpp"
 #include "inverse/tile_choices.hpp"
 
@@ -134,7 +135,23 @@ class Unifier {
 
   NodeId run(NodeId root) {
     tile_lengths_ = TileLengths(g_, root);
-    visit(root);
+    // Level by level from the leaves: a node's key names its children's
+    // groups, and a group is settled (split into its size kinds) only once
+    // all its members are known, so children's groups are final before any
+    // parent is keyed. A node's level is its height above the leaves.
+    std::vector<NodeId> order;
+    std::vector<bool> seen(g_.node_count(), false);
+    collect(root, seen, order);
+    std::vector<std::uint32_t> height(g_.node_count(), 0);
+    for (NodeId id : order)
+      for (NodeId c : node_children(g_.op(id))) height[id] = std::max(height[id], height[c] + 1);
+    std::stable_sort(order.begin(), order.end(), [&](NodeId a, NodeId b) { return height[a] < height[b]; });
+    for (std::size_t i = 0; i < order.size();) {
+      std::size_t j = i;
+      while (j < order.size() && height[order[j]] == height[order[i]]) ++j;
+      settle(order.data() + i, order.data() + j);
+      i = j;
+    }
     std::vector<NodeId> built(groups_.size(), 0);
     for (std::size_t k = 0; k < groups_.size(); ++k) built[k] = build(groups_[k], built);
     return built[group_of_.at(root)];
@@ -164,11 +181,12 @@ class Unifier {
     std::size_t form = 0;
     std::vector<std::size_t> children;
     std::size_t lengths = 0;  // a repeat's kind of tile length (TileLengths)
+    std::size_t sizes = 0;    // the kind of its sizes among its structure's (size_clusters)
     friend bool operator==(const Key&, const Key&) = default;
   };
   struct KeyHash {
     std::size_t operator()(const Key& k) const {
-      std::size_t h = hash_combine(hash_combine(k.children.size(), k.form), k.lengths);
+      std::size_t h = hash_combine(hash_combine(hash_combine(k.children.size(), k.form), k.lengths), k.sizes);
       for (std::size_t c : k.children) h = hash_combine(h, c);
       return h;
     }
@@ -202,36 +220,69 @@ class Unifier {
     group_of_[id] = it->second;
   }
 
-  // Post-order: children's groups exist before their parents' keys.
-  void visit(NodeId id) {
-    if (group_of_[id] != kNoGroup) return;
-    const Operation& op = g_.op(id);  // visiting children adds no nodes: stays valid
-    std::vector<std::size_t> children;
-    for (NodeId c : node_children(op)) {
-      visit(c);
-      children.push_back(group_of_[c]);
-    }
-    if (const auto* c = std::get_if<Choose>(&op); c && plain(*c)) {
-      visit_choose(id, *c, children);
-      return;
-    }
-    std::size_t lengths = 0;
-    if (const auto* r = std::get_if<Repeat>(&op)) lengths = tile_lengths_.kind(*r);
-    auto [it, fresh] = group_by_key_.emplace(Key{form_id(op), children, lengths}, groups_.size());
-    if (fresh) {
-      groups_.emplace_back();
-      groups_.back().first = id;
-      groups_.back().children = std::move(children);
-    }
-    Group& group = groups_[it->second];
-    std::vector<const Expr*> sizes;  // what ranges: split part sizes, a repeat's tile size
+  // Every node below id once, children before parents.
+  void collect(NodeId id, std::vector<bool>& seen, std::vector<NodeId>& order) const {
+    if (seen[id]) return;
+    seen[id] = true;
+    for (NodeId c : node_children(g_.op(id))) collect(c, seen, order);
+    order.push_back(id);
+  }
+
+  // What ranges in a node: split part sizes, a repeat's tile size.
+  static std::vector<const Expr*> sized(const Operation& op) {
+    std::vector<const Expr*> sizes;
     if (const auto* s = std::get_if<Split>(&op)) {
       for (const auto& p : s->parts) sizes.push_back(&p.size.value);
     } else if (const auto* r = std::get_if<Repeat>(&op)) {
       sizes.push_back(&r->size);
     }
-    if (!sizes.empty()) add_member(group, id, sizes);
-    group_of_[id] = it->second;
+    return sizes;
+  }
+
+  // Groups the nodes of one level: by key (operation form, child groups),
+  // then each key's members by the kinds of their sizes.
+  void settle(const NodeId* begin, const NodeId* end) {
+    std::unordered_map<Key, std::size_t, KeyHash> bucket_of;
+    std::vector<std::pair<Key, std::vector<NodeId>>> buckets;  // in order of first member
+    for (const NodeId* at = begin; at != end; ++at) {
+      const NodeId id = *at;
+      const Operation& op = g_.op(id);
+      std::vector<std::size_t> children;
+      for (NodeId c : node_children(op)) children.push_back(group_of_[c]);
+      if (const auto* c = std::get_if<Choose>(&op); c && plain(*c)) {
+        visit_choose(id, *c, children);
+        continue;
+      }
+      std::size_t lengths = 0;
+      if (const auto* r = std::get_if<Repeat>(&op)) lengths = tile_lengths_.kind(*r);
+      Key key{form_id(op), std::move(children), lengths, 0};
+      auto [it, fresh] = bucket_of.try_emplace(key, buckets.size());
+      if (fresh) buckets.emplace_back(std::move(key), std::vector<NodeId>{});
+      buckets[it->second].second.push_back(id);
+    }
+    for (auto& [key, members] : buckets) {
+      std::vector<SizedMember> sizes;
+      for (NodeId id : members) {
+        SizedMember m;
+        for (const Expr* e : sized(g_.op(id))) m.sizes.push_back(literal_range(*e));
+        m.weight = id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0;
+        sizes.push_back(std::move(m));
+      }
+      const std::vector<std::size_t> kinds = size_clusters(sizes);
+      for (std::size_t m = 0; m < members.size(); ++m) {
+        Key k = key;
+        k.sizes = kinds[m];
+        auto [it, fresh] = group_by_key_.emplace(std::move(k), groups_.size());
+        if (fresh) {
+          groups_.emplace_back();
+          groups_.back().first = members[m];
+          groups_.back().children = key.children;
+        }
+        const std::vector<const Expr*> exprs = sized(g_.op(members[m]));
+        if (!exprs.empty()) add_member(groups_[it->second], members[m], exprs);
+        group_of_[members[m]] = it->second;
+      }
+    }
   }
 
   // Widens the group's ranges by a member's sizes and notes their values.

@@ -1,0 +1,59 @@
+#include "inverse/size_clusters.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace vern {
+
+namespace {
+
+constexpr double kMinGap = 1.25;   // lengths within a quarter are never apart
+constexpr double kSpacings = 3.0;  // a gap this many average spacings wide is one
+
+// Each member's kind along one sized part.
+std::vector<std::size_t> clusters_of_part(const std::vector<SizedMember>& members, std::size_t part) {
+  std::vector<std::size_t> kind(members.size(), 0);
+  std::vector<std::size_t> order;
+  double lowest = 0, highest = 0, observations = 0;
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    const auto& r = members[m].sizes[part];
+    if (!r || !(r->lo > 0)) continue;
+    if (order.empty() || r->lo < lowest) lowest = r->lo;
+    if (order.empty() || r->hi > highest) highest = r->hi;
+    observations += members[m].weight;
+    order.push_back(m);
+  }
+  if (order.size() < 2 || observations <= 1) return kind;
+  const double spacing = std::log(highest / lowest) / (observations - 1);
+  const double gap = std::max(kMinGap, std::exp(kSpacings * spacing));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return members[a].sizes[part]->lo < members[b].sizes[part]->lo; });
+  std::size_t current = 0;
+  double longest = members[order[0]].sizes[part]->hi;
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    const Range& r = *members[order[i]].sizes[part];
+    if (r.lo > gap * longest) ++current;
+    longest = std::max(longest, r.hi);
+    kind[order[i]] = current;
+  }
+  return kind;
+}
+
+}  // namespace
+
+std::vector<std::size_t> size_clusters(const std::vector<SizedMember>& members) {
+  std::vector<std::vector<std::size_t>> rows(members.size());
+  const std::size_t parts = members.empty() ? 0 : members[0].sizes.size();
+  for (std::size_t p = 0; p < parts; ++p) {
+    const std::vector<std::size_t> kinds = clusters_of_part(members, p);
+    for (std::size_t m = 0; m < members.size(); ++m) rows[m].push_back(kinds[m]);
+  }
+  std::map<std::vector<std::size_t>, std::size_t> numbered;  // a row of part kinds -> its kind
+  std::vector<std::size_t> out;
+  for (const auto& row : rows) out.push_back(numbered.try_emplace(row, numbered.size()).first->second);
+  return out;
+}
+
+}  // namespace vern

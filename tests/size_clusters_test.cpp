@@ -1,0 +1,96 @@
+// Which members of a structural group are one kind by their sizes.
+#include "inverse/size_clusters.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "graph/import.hpp"
+#include "graph/parser.hpp"
+#include "graph/writer.hpp"
+#include "support/example_graphs.hpp"
+
+namespace vern {
+namespace {
+
+SizedMember member(std::vector<double> lengths, double weight = 1) {
+  SizedMember m;
+  for (double l : lengths) m.sizes.push_back(Range{l, l});
+  m.weight = weight;
+  return m;
+}
+
+TEST(SizeClusters, UnevenlySpreadPlotsAreOneKind) {
+  // Ten plots from 8 to 20 m, with a 27 % gap between 10.1 and 12.8: wide
+  // for a quarter, narrow for ten values spread over a factor of 2.5.
+  std::vector<SizedMember> plots;
+  for (double w : {8.0, 8.6, 9.5, 10.1, 12.8, 14.0, 15.5, 17.0, 18.2, 20.0}) plots.push_back(member({w}));
+  EXPECT_EQ(size_clusters(plots), std::vector<std::size_t>(10, 0));
+}
+
+TEST(SizeClusters, RailingsWallsAndSlabsSeenOftenAreThreeKinds) {
+  const std::vector<SizedMember> parts = {member({0.6}, 12), member({0.2}, 10), member({10}, 8), member({0.21}, 3),
+                                          member({9.5}, 2)};
+  EXPECT_EQ(size_clusters(parts), (std::vector<std::size_t>{0, 1, 2, 1, 2}));
+}
+
+TEST(SizeClusters, EveryPartMustAgree) {
+  // Alike in the first part, far apart in the second.
+  const std::vector<SizedMember> parts = {member({3, 0.2}, 5), member({3.1, 0.21}, 5), member({3.05, 8}, 5)};
+  EXPECT_EQ(size_clusters(parts), (std::vector<std::size_t>{0, 0, 1}));
+}
+
+TEST(SizeClusters, ValuesWithinAQuarterAreNeverApart) {
+  // Two values only, seen very often: their spacing is no evidence.
+  const std::vector<SizedMember> parts = {member({3}, 100), member({3.6}, 100)};
+  EXPECT_EQ(size_clusters(parts), (std::vector<std::size_t>{0, 0}));
+}
+
+TEST(SizeClusters, MergingKeepsABalconysRailingApartFromTheSlab) {
+  // The thesis's elongated balcony bars (its figure 12.6): thin railings
+  // and thick slabs, one structure, seen in many examples. Merged, each
+  // keeps its own size instead of one part ranging from 0.2 to 10.
+  Grammar g;
+  std::vector<std::string> texts;
+  for (int i = 0; i < 6; ++i) {
+    const double rail = 0.2 + 0.01 * i, slab = 9.6 + 0.1 * i;
+    texts.push_back("split(x){ ~1 : split(z){ ~" + std::to_string(rail) + " : I(rect) | ~3 : nil } | ~1 : split(z){ ~" +
+                    std::to_string(slab) + " : I(rect) | ~3 : nil } }");
+  }
+  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), {1e-9, true});
+  const auto& row = std::get<Split>(g.op(merged));
+  ASSERT_NE(row.parts[0].child, row.parts[1].child);
+  const auto rail = literal_range(std::get<Split>(g.op(row.parts[0].child)).parts[0].size.value);
+  const auto slab = literal_range(std::get<Split>(g.op(row.parts[1].child)).parts[0].size.value);
+  ASSERT_TRUE(rail && slab);
+  EXPECT_LE(rail->hi, 0.25);
+  EXPECT_GE(slab->lo, 9.6);
+}
+
+TEST(SizeClusters, ClearlyBimodalHeightsBecomeSeparateAlternatives) {
+  // Garages about 3 m high in four examples and about 6 m in four: two
+  // alternatives, each ranging over its own heights, not one from 3 to 6.3.
+  Grammar g;
+  std::vector<std::string> texts;
+  for (const double h : {3.0, 6.0, 3.1, 6.2, 3.05, 6.1, 3.15, 6.3})
+    texts.push_back("split(x){ ~6 : I(house) | ~3 : split(z){ ~" + std::to_string(h) + " : I(rect) | ~" +
+                    std::to_string(9 - h) + " : nil } }");
+  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), {1e-9, true});
+  const auto* alternatives = std::get_if<Choose>(&g.op(merged));
+  ASSERT_NE(alternatives, nullptr);
+  ASSERT_EQ(alternatives->options.size(), 2u);
+  std::vector<Range> heights;
+  for (const auto& o : alternatives->options) {
+    EXPECT_EQ(o.priority.literal(), 4.0);
+    const auto& garage = std::get<Split>(g.op(std::get<Split>(g.op(o.child)).parts[1].child));
+    heights.push_back(*literal_range(garage.parts[0].size.value));
+  }
+  std::sort(heights.begin(), heights.end(), [](const Range& a, const Range& b) { return a.lo < b.lo; });
+  EXPECT_EQ(heights[0].lo, 3.0);
+  EXPECT_EQ(heights[0].hi, 3.15);
+  EXPECT_EQ(heights[1].lo, 6.0);
+  EXPECT_EQ(heights[1].hi, 6.3);
+}
+
+}  // namespace
+}  // namespace vern
