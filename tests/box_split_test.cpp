@@ -93,7 +93,19 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 // {(0,4), (1,5), (2,5)}, {(5,9), (8,9)} and {(11,14)}. In 3-D each interval
 // is a box along x in its own row along y, so the groups can be split
 // further.
-TEST(BoxSplit, ThesisIntervalsFallIntoThreeGroups) {
+// The cut a container is, along which axis and into how many pieces.
+testing::AssertionResult cut_along(const SplitTree& t, int axis, std::size_t pieces) {
+  if (t.kind != Kind::Split) return testing::AssertionFailure() << "not a split";
+  if (t.axis != axis || t.children.size() != pieces)
+    return testing::AssertionFailure() << "cut along " << t.axis << " into " << t.children.size();
+  return testing::AssertionSuccess();
+}
+
+TEST(BoxSplit, ThesisIntervalsFallIntoThreeGroupsAndTheTouchingOnesStayOne) {
+  // The thesis's intervals (9.1.2): the sweep along x finds three groups,
+  // [0, 5], [5, 9] and [11, 14]. The first two touch, and empty space
+  // separates them from the third: touching parts make one thing, so the
+  // cut is made at the gap only, and [0, 9] is cut again on its own.
   const double intervals[6][2] = {{0, 4}, {1, 5}, {2, 5}, {5, 9}, {8, 9}, {11, 14}};
   std::vector<LabelledBox> boxes;
   for (std::uint32_t i = 0; i < 6; ++i) {
@@ -102,18 +114,50 @@ TEST(BoxSplit, ThesisIntervalsFallIntoThreeGroups) {
   const SplitTree t = split(boxes);
   ASSERT_EQ(t.kind, Kind::Split);
   EXPECT_EQ(t.axis, 0);
-  ASSERT_EQ(t.children.size(), 4u);
-  EXPECT_EQ(leaves(t.children[0]), (std::vector<std::uint32_t>{0, 1, 2}));
-  EXPECT_EQ(leaves(t.children[1]), (std::vector<std::uint32_t>{3, 4}));
-  EXPECT_EQ(t.children[2].kind, Kind::Empty);  // nothing between 9 and 11
-  EXPECT_EQ(t.children[2].min, glm::dvec3(9, 0, 0));
-  EXPECT_EQ(t.children[2].max, glm::dvec3(11, 6, 1));
-  EXPECT_EQ(leaves(t.children[3]), (std::vector<std::uint32_t>{5}));
-  EXPECT_EQ(t.children[0].max.x, 5.0);
-  EXPECT_EQ(t.children[1].min.x, 5.0);
+  ASSERT_EQ(t.children.size(), 3u);
+  EXPECT_EQ(leaves(t.children[0]), (std::vector<std::uint32_t>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(t.children[0].max.x, 9.0);
+  EXPECT_EQ(t.children[1].kind, Kind::Empty);  // nothing between 9 and 11
+  EXPECT_EQ(t.children[1].min, glm::dvec3(9, 0, 0));
+  EXPECT_EQ(t.children[1].max, glm::dvec3(11, 6, 1));
+  EXPECT_EQ(leaves(t.children[2]), (std::vector<std::uint32_t>{5}));
   const SplitTreeStats s = split_tree_stats(t);
   EXPECT_EQ(s.leaves, 6u);
   EXPECT_EQ(s.unsplittable, 0u);
+}
+
+TEST(BoxSplit, TouchingGroupsWithoutAGapAreCutApart) {
+  // The same groups without the third: no gap, so the cut at 5 is made.
+  const double intervals[5][2] = {{0, 4}, {1, 5}, {2, 5}, {5, 9}, {8, 9}};
+  std::vector<LabelledBox> boxes;
+  for (std::uint32_t i = 0; i < 5; ++i) {
+    boxes.push_back(part("rect", {intervals[i][0], i, 0}, {intervals[i][1], i + 1, 1}, i));
+  }
+  const SplitTree t = split(boxes);
+  ASSERT_EQ(t.kind, Kind::Split);
+  EXPECT_EQ(t.axis, 0);
+  ASSERT_EQ(t.children.size(), 2u);
+  EXPECT_EQ(leaves(t.children[0]), (std::vector<std::uint32_t>{0, 1, 2}));
+  EXPECT_EQ(leaves(t.children[1]), (std::vector<std::uint32_t>{3, 4}));
+  EXPECT_EQ(t.children[0].max.x, 5.0);
+}
+
+TEST(BoxSplit, ABlockBetweenStreetsStaysABlockWhetherOrNotItsRowsLineUp) {
+  // A column of a city along y: a block of two strips whose buildings line
+  // up into two rows across it, a street, and a block whose strips do not
+  // (and are cut at another x, so no cut along x crosses the column).
+  // Both blocks are pieces of the column, each cut into its strips along x.
+  const SplitTree t = split({part("rect", {0, 0, 0}, {2, 2, 3}, 0), part("rect", {0, 2, 0}, {2, 4, 4}, 1),
+                             part("rect", {2, 0, 0}, {4, 2, 2}, 2), part("rect", {2, 2, 0}, {4, 4, 5}, 3),
+                             part("rect", {0, 5, 0}, {1.5, 9, 3}, 4), part("rect", {1.5, 5, 0}, {4, 7, 2}, 5),
+                             part("rect", {1.5, 7, 0}, {4, 9, 4}, 6)});
+  ASSERT_TRUE(cut_along(t, 1, 3));
+  EXPECT_EQ(t.children[1].kind, Kind::Empty);
+  for (const std::size_t block : {0u, 2u}) {
+    SCOPED_TRACE(block);
+    ASSERT_TRUE(cut_along(t.children[block], 0, 2));
+  }
+  EXPECT_EQ(leaves(t.children[0].children[0]), (std::vector<std::uint32_t>{0, 1}));
 }
 
 TEST(BoxSplit, ASinglePartIsALeaf) {
@@ -143,14 +187,6 @@ TEST(BoxSplit, GapsBecomeEmptyPartsOfTheRightSize) {
   EXPECT_EQ(low.children[1].kind, Kind::Empty);
   EXPECT_EQ(low.children[1].min, glm::dvec3(3, 1, 0));
   EXPECT_EQ(low.children[1].max, glm::dvec3(4, 2, 1));
-}
-
-// The cut a container is, along which axis and into how many pieces.
-testing::AssertionResult cut_along(const SplitTree& t, int axis, std::size_t pieces) {
-  if (t.kind != Kind::Split) return testing::AssertionFailure() << "not a split";
-  if (t.axis != axis || t.children.size() != pieces)
-    return testing::AssertionFailure() << "cut along " << t.axis << " into " << t.children.size();
-  return testing::AssertionSuccess();
 }
 
 TEST(BoxSplit, ARowOfBuildingsIsCutIntoBuildingsBeforeTheAirAboveIt) {

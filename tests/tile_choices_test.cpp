@@ -75,12 +75,13 @@ TEST(TileChoices, RowsSharingNothingStayApart) {
 }
 
 TEST(TileChoices, TilesOfFarApartLengthsAreDifferentKinds) {
-  // Plots 2 and 2.2 wide are one kind of row; strips 0.5 wide, holding the
-  // same kinds of building, are another: their tile lengths stay apart
-  // instead of ranging from 0.5 to 2.2.
+  // Rows of plots 2 and 2.2 wide (three and four of them) are one kind of
+  // row; strips 0.5 wide, holding the same kinds of building, are another:
+  // their tile lengths stay apart instead of ranging from 0.5 to 2.5.
   Grammar g;
-  const auto roots = examples(g, {row(2, kRoofed, plain(5), kRoofed), row(2.2, plain(4), kRoofed, kRoofed),
-                                  row(0.5, plain(4), kTwin, plain(2))});
+  const std::string four = "split(x){ ~2.2 : " + kRoofed + " | ~2.2 : " + plain(4) + " | ~2.2 : " + kRoofed + " | ~2.2 : " +
+                           plain(6) + " }";
+  const auto roots = examples(g, {row(2, kRoofed, plain(5), kRoofed), four, row(0.5, plain(4), kTwin, plain(2))});
   const NodeId merged = merge_examples(g, roots, {1e-9, true});
   const auto& forms = std::get<Choose>(g.op(merged));
   ASSERT_EQ(forms.options.size(), 2u);
@@ -89,11 +90,23 @@ TEST(TileChoices, TilesOfFarApartLengthsAreDifferentKinds) {
   const auto plot_tile = literal_range(plots.size);
   const auto strip_tile = literal_range(strips.size);
   ASSERT_TRUE(plot_tile && strip_tile);
-  EXPECT_GT(plot_tile->lo, 2.0);
-  EXPECT_LT(plot_tile->hi, 2.3);
+  // Tile sizes from the middle of each count's range: 3 tiles on 6 from
+  // 6 / 2.5, 4 on 8.8 from 8.8 / 3.5, as short decimals.
+  EXPECT_EQ(plot_tile->lo, 2.4);
+  EXPECT_EQ(plot_tile->hi, 2.5);
   EXPECT_GT(strip_tile->lo, 0.5);
   EXPECT_LT(strip_tile->hi, 0.51);
   EXPECT_EQ(forms.options[0].priority.literal(), 2.0);
+}
+
+TEST(TileChoices, ASameCountOnDifferentLengthsIsThatManyTiles) {
+  // Clusters of three towers on plots 1.5 and 1.8 wide: repeatN(x, 3).
+  Grammar g;
+  const auto roots = examples(g, {row(0.5, plain(4), kTwin, plain(2)), row(0.6, plain(3), kTwin, plain(5))});
+  const NodeId merged = merge_examples(g, roots, {1e-9, true});
+  const auto* cluster = std::get_if<RepeatN>(&g.op(merged));
+  ASSERT_NE(cluster, nullptr);
+  EXPECT_EQ(cluster->count.literal(), 3.0);
 }
 
 TEST(TileChoices, NothingToUniteLeavesTheGraphAsItIs) {

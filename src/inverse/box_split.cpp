@@ -409,7 +409,38 @@ class Splitter {
         ((pieces_[0].lo == w.lo[ax] && pieces_[0].hi == w.hi[ax]) || pieces_[0].lo == pieces_[0].hi)) {
       return false;
     }
+    group_touching_pieces();
     return true;
+  }
+
+  // Empty space is what separates buildings; parts that touch make one
+  // thing. Where a sweep finds both gaps and pieces that touch (a column
+  // of a city: blocks of touching rows of buildings between streets), it
+  // cuts at the gaps only, and each run of touching pieces is one piece,
+  // cut again later (along the other axes first, then this one). So a
+  // block is always a block, whether or not its strips of buildings
+  // happen to line up into rows across it.
+  void group_touching_pieces() {
+    compound_.assign(pieces_.size(), false);
+    bool gap = false, touch = false;
+    for (std::size_t i = 0; i + 1 < pieces_.size(); ++i) (pieces_[i].hi == pieces_[i + 1].lo ? touch : gap) = true;
+    if (!gap || !touch) return;
+    std::vector<std::uint32_t> into(pieces_.size());
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < pieces_.size(); ++i) {
+      if (i > 0 && pieces_[kept - 1].hi == pieces_[i].lo) {
+        pieces_[kept - 1].absorb(pieces_[i]);
+        compound_[kept - 1] = true;
+      } else {
+        pieces_[kept] = pieces_[i];
+        compound_[kept] = false;
+        ++kept;
+      }
+      into[i] = static_cast<std::uint32_t>(kept - 1);
+    }
+    pieces_.resize(kept);
+    compound_.resize(kept);
+    for (std::uint32_t& t : target_) t = into[t];
   }
 
   // Cuts the container into the pieces find_pieces(w, a) found last.
@@ -500,7 +531,7 @@ class Splitter {
       child.lo_val[ax] = piece.lo_val;
       child.hi_val[ax] = piece.hi_val;
       child.axes = axes_after(a);
-      child.tries = 2;
+      child.tries = compound_[p] ? 3 : 2;  // a run of touching pieces is cut along a again, last
       stack_.push_back(child);
       previous = piece.hi;
       previous_val = piece.hi_val;
@@ -611,6 +642,7 @@ class Splitter {
   std::vector<std::vector<std::uint32_t>> groups_;  // unsplittable containers' boxes
   // The current sweep's pieces (reused: nothing is allocated per container).
   std::vector<Span> spans_, pieces_;
+  std::vector<bool> compound_;  // per piece: a run of touching pieces joined by group_touching_pieces
   std::vector<std::uint32_t> starts_, target_, offsets_, next_, next2_;
 };
 

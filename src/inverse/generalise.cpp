@@ -27,7 +27,7 @@ class Generaliser {
   Generaliser(Grammar& g, const MergeOptions& o)
       : g_(g), opt_(o), references_(g.node_count(), 0) {}
 
-  NodeId run(NodeId root, bool& changed) {
+  NodeId run(NodeId root, bool& changed, std::vector<std::pair<NodeId, NodeId>>* rebuilt) {
     changed = false;
     collect(root);
     std::vector<NodeId> replace(g_.node_count(), kNoReplacement);  // by node id
@@ -38,7 +38,7 @@ class Generaliser {
         for (NodeId m : frame.members) replace[m] = *merged;
       }
     }
-    return changed ? substitute(g_, root, replace) : root;
+    return changed ? substitute(g_, root, replace, rebuilt) : root;
   }
 
  private:
@@ -122,8 +122,9 @@ class Generaliser {
 
 }  // namespace
 
-NodeId generalise_free_parts(Grammar& g, NodeId root, const MergeOptions& options, bool& changed) {
-  return Generaliser(g, options).run(root, changed);
+NodeId generalise_free_parts(Grammar& g, NodeId root, const MergeOptions& options, bool& changed,
+                             std::vector<std::pair<NodeId, NodeId>>* rebuilt) {
+  return Generaliser(g, options).run(root, changed, rebuilt);
 }
 
 }  // namespace vern

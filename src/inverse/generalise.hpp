@@ -16,12 +16,17 @@
 // position's alternatives, and each size lies in its position's range.
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "graph/grammar.hpp"
 #include "inverse/merge.hpp"
 
 namespace vern {
 
-// Returns the new root, and whether anything was generalised.
-NodeId generalise_free_parts(Grammar& g, NodeId root, const MergeOptions& options, bool& changed);
+// Returns the new root, and whether anything was generalised; rebuilt
+// gets the nodes above a generalised frame that were rebuilt (substitute).
+NodeId generalise_free_parts(Grammar& g, NodeId root, const MergeOptions& options, bool& changed,
+                             std::vector<std::pair<NodeId, NodeId>>* rebuilt = nullptr);
 
 }  // namespace vern

@@ -5,6 +5,8 @@
 #include "inverse/repeat_folding.hpp"
 #include "inverse/size_clusters.hpp"
 #include "inverse/size_plan.hpp"
+#include "inverse/substitute.hpp"
+#include "inverse/tidy_numbers.hpp"
 #include "inverse/tile_choices.hpp"
 
 #include <algorithm>
@@ -130,8 +132,9 @@ class Unifier {
  public:
   // counts: in how many examples each node occurs (example_counts); a
   // node beyond it counts once.
-  Unifier(Grammar& g, const MergeOptions& o, SampleBook& book, const std::vector<double>& counts)
-      : g_(g), opt_(o), book_(book), counts_(counts), group_of_(g.node_count(), kNoGroup) {}
+  Unifier(Grammar& g, const MergeOptions& o, SampleBook& book, TileCounts& tile_counts,
+          const std::vector<double>& counts)
+      : g_(g), opt_(o), book_(book), tile_counts_(tile_counts), counts_(counts), group_of_(g.node_count(), kNoGroup) {}
 
   NodeId run(NodeId root) {
     tile_lengths_ = TileLengths(g_, root);
@@ -173,6 +176,10 @@ class Unifier {
     // Members whose sizes are all literals: their lengths, one row each.
     std::vector<std::vector<double>> lengths;
     std::size_t members = 0;
+    // Repeats: the tile counts the members made where folded, and whether
+    // every member's are known.
+    std::vector<TileSeen> tile_counts;
+    bool counted = true;
   };
 
   // What makes nodes one group: their form (the operation with its sizes
@@ -280,6 +287,12 @@ class Unifier {
         }
         const std::vector<const Expr*> exprs = sized(g_.op(members[m]));
         if (!exprs.empty()) add_member(groups_[it->second], members[m], exprs);
+        if (std::holds_alternative<Repeat>(g_.op(members[m]))) {
+          Group& group = groups_[it->second];
+          const auto counted = tile_counts_.find(members[m]);
+          if (counted == tile_counts_.end()) group.counted = false;
+          else group.tile_counts.insert(group.tile_counts.end(), counted->second.begin(), counted->second.end());
+        }
         group_of_[members[m]] = it->second;
       }
     }
@@ -386,6 +399,8 @@ class Unifier {
       r->size = ranged(0);
     }
     const NodeId out = g_.intern({std::move(op), {}});
+    if (std::holds_alternative<Repeat>(g_.op(out)) && group.counted && !group.tile_counts.empty())
+      tile_counts_[out] = group.tile_counts;
     // The group's samples already hold its members' (a member built in an
     // earlier round brings its book entry): replace, never add, or a node
     // that unifies with itself round after round would count its values
@@ -398,6 +413,7 @@ class Unifier {
   const MergeOptions& opt_;
   TileLengths tile_lengths_;
   SampleBook& book_;
+  TileCounts& tile_counts_;            // by repeat node: the tile counts it made where folded
   const std::vector<double>& counts_;  // by node id: examples it occurs in
   std::vector<Group> groups_;
   std::unordered_map<Key, std::size_t, KeyHash> group_by_key_;
@@ -672,10 +688,78 @@ class Fitter {
 
 }  // namespace
 
+// Nodes rebuilt with new children keep their sizes: the values behind
+// their ranges and their tile counts carry over to the new node.
+void carry_notes(const std::vector<std::pair<NodeId, NodeId>>& rebuilt, SampleBook& book, TileCounts& tile_counts) {
+  for (const auto& [old, now] : rebuilt) {
+    if (const auto it = book.find(old); it != book.end()) book.try_emplace(now, it->second);
+    if (const auto it = tile_counts.find(old); it != tile_counts.end() && !tile_counts.count(now)) {
+      std::vector<TileSeen> counts = it->second;  // a copy: inserting below may move it
+      tile_counts.emplace(now, std::move(counts));
+    }
+  }
+}
+
+// Repeats whose tile sizes vary, once merging has settled (rows that
+// differ in their counts have been united first):
+//   - one that made the same number of tiles wherever the examples show
+//     it is that many tiles whatever the length: repeatN. A cluster of
+//     three by three towers stays three by three on a wider plot instead
+//     of growing to seven by seven;
+//   - one whose counts vary takes its tile sizes from the middle of each
+//     count's range: n tiles on L come from any size in [L/n, L/(n-1)),
+//     and the sizes seen, L/n, are that range's lower end, so sizes drawn
+//     between them would make more tiles, on average, than the examples
+//     had. L/(n - 1/2) makes the same n tiles on L, and so does the
+//     shortest decimal near it.
+NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, SampleBook& book, double tolerance) {
+  std::vector<NodeId> replace(g.node_count(), kNoReplacement);
+  bool any = false;
+  for (const auto& [id, seen] : tile_counts) {
+    if (id >= replace.size() || seen.empty()) continue;
+    const auto* r = std::get_if<Repeat>(&g.op(id));
+    const auto tile = r ? literal_range(r->size) : std::nullopt;
+    if (!tile || tile->hi - tile->lo <= tolerance) continue;
+    const std::uint32_t n = seen[0].count;
+    if (n >= 2 && std::all_of(seen.begin(), seen.end(), [&](const TileSeen& t) { return t.count == n; })) {
+      RepeatN counted{r->axis, Expr::number(n), r->child};
+      replace[id] = g.intern({std::move(counted), g.node(id).loc});
+      any = true;
+      continue;
+    }
+    if (std::any_of(seen.begin(), seen.end(), [](const TileSeen& t) { return t.count < 2; })) continue;
+    // Each middle written as the shortest decimal a quarter of the way to
+    // its range's nearer end: tiles of 5 m, not 5.142857 m.
+    std::vector<double> middles;
+    for (const TileSeen& t : seen) {
+      const double k = t.count;
+      middles.push_back(shortest_decimal(t.length / (k - 0.5), 0.25 * t.length / (k * (k - 0.5))));
+    }
+    std::sort(middles.begin(), middles.end());
+    middles.erase(std::unique(middles.begin(), middles.end()), middles.end());
+    Repeat centred = *r;
+    centred.size = range_expr({middles.front(), middles.back()}, tolerance);
+    const NodeId out = g.intern({std::move(centred), g.node(id).loc});
+    std::vector<Observation> values;
+    for (double m : middles) values.push_back({m, 1.0});
+    book[out] = {std::move(values)};
+    replace[id] = out;
+    any = true;
+  }
+  // A replacement is not looked into: a repeat inside a replaced one is
+  // replaced by the next pass.
+  for (NodeId previous = kNoReplacement; any && root != previous;) {
+    previous = root;
+    root = substitute(g, root, replace);
+  }
+  return root;
+}
+
 NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeOptions& options) {
   std::vector<NodeId> folded;
   const UnlikeTiles unlike = roots.size() > 1 ? UnlikeTiles::Fold : UnlikeTiles::Keep;
-  for (NodeId r : roots) folded.push_back(fold_repeats(g, r, options.tolerance, unlike));
+  TileCounts tile_counts;
+  for (NodeId r : roots) folded.push_back(fold_repeats(g, r, options.tolerance, unlike, &tile_counts));
   Choose all;
   for (NodeId r : folded) all.options.push_back({Expr{}, Expr::number(1.0), r});
   const NodeId examples = g.intern({std::move(all), {}});
@@ -688,21 +772,23 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   // is three parts). Only runs that fill a whole split are folded first.
   SampleBook book;
   const std::vector<double> counts = example_counts(g, folded);
-  NodeId merged = Unifier(g, options, book, counts).run(examples);
+  NodeId merged = Unifier(g, options, book, tile_counts, counts).run(examples);
   // Free combinations make parents alike, which unify, which may show more
   // free combinations above: repeat until nothing changes (a few rounds:
   // each round generalises at least one frame, and frames only merge).
   // Rows of one kind sharing their tiles' choices works the same way.
   for (int round = 0; round < 16; ++round) {
     bool changed = false;
-    merged = generalise_free_parts(g, merged, options, changed);
+    std::vector<std::pair<NodeId, NodeId>> rebuilt;
+    merged = generalise_free_parts(g, merged, options, changed, &rebuilt);
+    carry_notes(rebuilt, book, tile_counts);
     const TileChoiceUnion united = unite_tile_choices(g, merged);
-    for (const auto& [old, rebuilt] : united.replaced)
-      if (const auto it = book.find(old); it != book.end()) book[rebuilt] = it->second;
+    carry_notes(united.replaced, book, tile_counts);
     merged = united.root;
     if (!changed && united.replaced.empty()) break;
-    merged = Unifier(g, options, book, counts).run(merged);
+    merged = Unifier(g, options, book, tile_counts, counts).run(merged);
   }
+  merged = settle_repeats(g, merged, tile_counts, book, options.tolerance);
   merged = Fitter(g, options, book).run(merged);
   return Simplifier(g, options).run(merged);
 }

@@ -17,7 +17,8 @@ namespace {
 
 class Folder {
  public:
-  Folder(Grammar& g, double tolerance, UnlikeTiles unlike) : g_(g), tol_(tolerance), unlike_(unlike) {}
+  Folder(Grammar& g, double tolerance, UnlikeTiles unlike, TileCounts* counts)
+      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts) {}
 
   NodeId run(NodeId id) {
     if (id < memo_.size() && memo_[id] != kNotYet) return memo_[id];
@@ -124,6 +125,7 @@ class Folder {
     const double low = tile * (1 + 1e-5), high = tile * (1 + std::min(0.01, 0.5 / n));
     const double written = shortest_decimal((low + high) / 2, (high - low) / 2);
     const NodeId tiles = g_.intern({Repeat{axis, Expr::number(written), body}, {}});
+    if (counts_) (*counts_)[tiles].push_back({static_cast<std::uint32_t>(copies), total});
     return SplitPart{{Expr::number(total), relative}, tiles};
   }
 
@@ -291,14 +293,15 @@ class Folder {
   Grammar& g_;
   double tol_;
   UnlikeTiles unlike_;
+  TileCounts* counts_;  // where to note each repeat's tile count, or null
   std::vector<NodeId> memo_;  // by node id; kNotYet until folded
   std::unordered_map<NodeId, std::vector<LabelId>> labels_;  // labels_below, by node
 };
 
 }  // namespace
 
-NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike) {
-  return Folder(g, tolerance, unlike).run(root);
+NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike, TileCounts* counts) {
+  return Folder(g, tolerance, unlike, counts).run(root);
 }
 
 }  // namespace vern

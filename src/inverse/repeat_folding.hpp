@@ -33,6 +33,10 @@
 // (tile_choices.hpp).
 #pragma once
 
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
 #include "graph/grammar.hpp"
 
 namespace vern {
@@ -43,8 +47,23 @@ enum class UnlikeTiles {
   Fold,  // equal tiles of unlike contents become a repeat of a choice
 };
 
+// Where folding found each repeat: how many tiles it made on what length,
+// per repeat node (one entry per place it was folded). Merging reads it
+// (merge.cpp, settle_repeats): a repeat that made the same number of tiles
+// wherever it was seen, on lengths that differ, is that many tiles
+// (repeatN), not a tile length (a cluster of three by three towers on
+// plots of any size); one whose counts vary gets tile sizes from the
+// middle of each count's range of sizes.
+struct TileSeen {
+  std::uint32_t count = 0;
+  double length = 0;
+};
+using TileCounts = std::unordered_map<NodeId, std::vector<TileSeen>>;
+
 // Rewrites every split below root whose sizes are literals; returns the new
-// root (nodes interned in g).
-NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike = UnlikeTiles::Fold);
+// root (nodes interned in g). Notes each repeat's tile count in counts,
+// where given.
+NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike = UnlikeTiles::Fold,
+                    TileCounts* counts = nullptr);
 
 }  // namespace vern

@@ -6,8 +6,8 @@ namespace {
 
 class Substitution {
  public:
-  Substitution(Grammar& g, const std::vector<NodeId>& replace)
-      : g_(g), replace_(replace), rebuilt_(g.node_count(), kNoReplacement) {}
+  Substitution(Grammar& g, const std::vector<NodeId>& replace, std::vector<std::pair<NodeId, NodeId>>* log)
+      : g_(g), replace_(replace), log_(log), rebuilt_(g.node_count(), kNoReplacement) {}
 
   NodeId run(NodeId id) {
     if (id < replace_.size() && replace_[id] != kNoReplacement) return replace_[id];
@@ -20,6 +20,7 @@ class Substitution {
       const std::vector<NodeId*> slots = child_slots(op);
       for (std::size_t i = 0; i < slots.size(); ++i) *slots[i] = children[i];
       out = g_.intern({std::move(op), g_.node(id).loc});
+      if (log_ && out != id) log_->emplace_back(id, out);
     }
     if (id >= rebuilt_.size()) rebuilt_.resize(id + 1, kNoReplacement);
     rebuilt_[id] = out;
@@ -29,13 +30,15 @@ class Substitution {
  private:
   Grammar& g_;
   const std::vector<NodeId>& replace_;
+  std::vector<std::pair<NodeId, NodeId>>* log_;  // rebuilt nodes, or null
   std::vector<NodeId> rebuilt_;  // by node id: what it became, or kNoReplacement
 };
 
 }  // namespace
 
-NodeId substitute(Grammar& g, NodeId root, const std::vector<NodeId>& replace) {
-  return Substitution(g, replace).run(root);
+NodeId substitute(Grammar& g, NodeId root, const std::vector<NodeId>& replace,
+                  std::vector<std::pair<NodeId, NodeId>>* rebuilt) {
+  return Substitution(g, replace, rebuilt).run(root);
 }
 
 }  // namespace vern

@@ -2,6 +2,7 @@
 // step that decides "these nodes become that one" needs after deciding.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "graph/grammar.hpp"
@@ -16,6 +17,9 @@ inline constexpr NodeId kNoReplacement = static_cast<NodeId>(-1);
 // may be shorter than the grammar: ids past its end are kept). Nodes whose
 // children change are interned anew, keeping their source location;
 // nothing else is copied. Memoised: a DAG is rebuilt in one pass.
-NodeId substitute(Grammar& g, NodeId root, const std::vector<NodeId>& replace);
+// rebuilt, where given, gets each node rebuilt so (old id, new id): its
+// sizes are the old node's, so notes kept about them carry over.
+NodeId substitute(Grammar& g, NodeId root, const std::vector<NodeId>& replace,
+                  std::vector<std::pair<NodeId, NodeId>>* rebuilt = nullptr);
 
 }  // namespace vern

@@ -129,7 +129,7 @@ class Uniter {
       replace[repeat] = rebuilt;
       out.replaced.emplace_back(repeat, rebuilt);
     }
-    out.root = out.replaced.empty() ? root : substitute(g_, root, replace);
+    out.root = out.replaced.empty() ? root : substitute(g_, root, replace, &out.replaced);
     return out;
   }
 

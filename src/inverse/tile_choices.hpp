@@ -25,8 +25,9 @@ namespace vern {
 
 struct TileChoiceUnion {
   NodeId root = 0;
-  // Each repeat rebuilt, and what replaced it: merging's notes on a
-  // repeat's tile sizes carry over to its replacement.
+  // Each repeat rebuilt with united choices, and each node above one
+  // rebuilt in turn, with what replaced it: merging's notes on their sizes
+  // carry over to their replacements.
   std::vector<std::pair<NodeId, NodeId>> replaced;
 };
 
