@@ -101,17 +101,21 @@ testing::AssertionResult cut_along(const SplitTree& t, int axis, std::size_t pie
   return testing::AssertionSuccess();
 }
 
+// The first n of the thesis's intervals along x (9.1.2), each a box on
+// its own row along y.
+std::vector<LabelledBox> thesis_intervals(std::uint32_t n) {
+  const double intervals[6][2] = {{0, 4}, {1, 5}, {2, 5}, {5, 9}, {8, 9}, {11, 14}};
+  std::vector<LabelledBox> boxes;
+  for (std::uint32_t i = 0; i < n; ++i) boxes.push_back(part("rect", {intervals[i][0], i, 0}, {intervals[i][1], i + 1, 1}, i));
+  return boxes;
+}
+
 TEST(BoxSplit, ThesisIntervalsFallIntoThreeGroupsAndTheTouchingOnesStayOne) {
   // The thesis's intervals (9.1.2): the sweep along x finds three groups,
   // [0, 5], [5, 9] and [11, 14]. The first two touch, and empty space
   // separates them from the third: touching parts make one thing, so the
   // cut is made at the gap only, and [0, 9] is cut again on its own.
-  const double intervals[6][2] = {{0, 4}, {1, 5}, {2, 5}, {5, 9}, {8, 9}, {11, 14}};
-  std::vector<LabelledBox> boxes;
-  for (std::uint32_t i = 0; i < 6; ++i) {
-    boxes.push_back(part("rect", {intervals[i][0], i, 0}, {intervals[i][1], i + 1, 1}, i));
-  }
-  const SplitTree t = split(boxes);
+  const SplitTree t = split(thesis_intervals(6));
   ASSERT_EQ(t.kind, Kind::Split);
   EXPECT_EQ(t.axis, 0);
   ASSERT_EQ(t.children.size(), 3u);
@@ -128,12 +132,7 @@ TEST(BoxSplit, ThesisIntervalsFallIntoThreeGroupsAndTheTouchingOnesStayOne) {
 
 TEST(BoxSplit, TouchingGroupsWithoutAGapAreCutApart) {
   // The same groups without the third: no gap, so the cut at 5 is made.
-  const double intervals[5][2] = {{0, 4}, {1, 5}, {2, 5}, {5, 9}, {8, 9}};
-  std::vector<LabelledBox> boxes;
-  for (std::uint32_t i = 0; i < 5; ++i) {
-    boxes.push_back(part("rect", {intervals[i][0], i, 0}, {intervals[i][1], i + 1, 1}, i));
-  }
-  const SplitTree t = split(boxes);
+  const SplitTree t = split(thesis_intervals(5));
   ASSERT_EQ(t.kind, Kind::Split);
   EXPECT_EQ(t.axis, 0);
   ASSERT_EQ(t.children.size(), 2u);
