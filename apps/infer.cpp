@@ -138,6 +138,8 @@ int run(int argc, char** argv) {
   if (args.has("--primitives")) library.load(args.value("--primitives"));
   options.primitives = &library;
   Inference result = infer(examples, options);
+  if (!quiet)
+    for (const std::string& w : result.warnings) std::fprintf(stderr, "%s\n", w.c_str());
   if (result.unturned_parts > 0 && !quiet)
     std::fprintf(stderr,
                  "infer: warning: %zu part%s whose mesh is not its label's turned by quarter turns: written "

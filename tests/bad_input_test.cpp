@@ -151,8 +151,12 @@ const std::vector<BadInput> kCases = {
    "overlapping.obj:1:1: error: ", "objects 'wall' (line 1) and 'door' (line 16) overlap", {"obj/overlapping.obj"}},
   {"obj_part_inside_part", "infer", {"contained.obj", "-o", "style.grm"}, kInput,
    "contained.obj:1:1: error: ", "'wall' (line 1) and 'door' (line 16) overlap", {"obj/contained.obj"}},
-  {"obj_pinwheel_cannot_be_cut", "infer", {"pinwheel.obj", "-o", "style.grm"}, kInput,
-   "pinwheel.obj:2:1: error: ", "cannot be separated by straight cuts", {"obj/pinwheel.obj"}},
+  // No straight cut separates a pinwheel: inferred all the same, with S
+  // placements and a warning naming the parts.
+  {"obj_pinwheel_is_placed_with_a_warning", "infer", {"pinwheel.obj", "-o", "style.grm"}, kOk,
+   "pinwheel.obj:2:1: warning: ", "no straight cut separates these 5 parts (e.g. a pinwheel): they are placed with "
+   "S(...) at their corners: 'a' (line 2), 'b' (line 17)", {"obj/pinwheel.obj"}, nullptr, nullptr, 0,
+   {"style.grm", "style.prims.obj"}},
   {"obj_bad_example_in_check", "check", {"ok.grm", "nan_coordinate.obj"}, kInput,
    "nan_coordinate.obj:8:5: error: ", "not a finite number", {"grammar/ok.grm", "obj/nan_coordinate.obj"}},
   {"obj_16mb_line_without_breaks", "infer", {"endless.obj", "-o", "style.grm"}, kInput,
@@ -582,6 +586,9 @@ TEST_P(BadInputCorpus, Runs) {
   EXPECT_EQ(r.exit_code, c.exit_code) << r.err;
   if (c.exit_code == kOk) {
     for (const std::string& file : c.creates) EXPECT_TRUE(fs::is_regular_file(dir / file)) << file << "\n" << r.err;
+    // A valid input may still deserve a warning, which names where and what.
+    EXPECT_NE(r.err.find(c.where), std::string::npos) << "where: " << c.where << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.what), std::string::npos) << "what: " << c.what << "\n" << r.err;
     return;
   }
   EXPECT_NE(r.err.find(c.where), std::string::npos) << "where: " << c.where << "\n" << r.err;

@@ -17,6 +17,7 @@
 #include "forward/scope.hpp"
 #include "graph/error.hpp"
 #include "graph/writer.hpp"
+#include "inverse/deterministic_subtree.hpp"
 #include "inverse/support.hpp"
 
 namespace vern {
@@ -325,11 +326,13 @@ class Matcher {
   // face marks); a first attempt without is far cheaper and settles every
   // example whose boundaries all lie on box faces.
   Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double tolerance, Budget& budget,
-          std::vector<Slot> constants, std::vector<Unknown> unknowns, bool floating)
+          DeterministicSubtrees& deterministic, std::vector<Slot> constants, std::vector<Unknown> unknowns,
+          bool floating)
       : g_(g),
         boxes_(boxes),
         tol_(tolerance),
         budget_(budget),
+        deterministic_(deterministic),
         constants_(std::move(constants)),
         unknowns_(std::move(unknowns)),
         floating_(floating) {
@@ -696,10 +699,29 @@ class Matcher {
     budget_.step();
     const Marks m = marks();
     ++depth_;
-    const bool ok = dispatch(id, s, inside);
+    // Only where the grammar below has one outcome and places contents
+    // with T or S: the one place the matcher may not follow it.
+    const bool placed = deterministic_.placed(id);
+    const Mismatch before = placed ? best_ : Mismatch{};
+    bool ok = dispatch(id, s, inside);
+    if (!ok && placed) {
+      restore(m, false);
+      ok = derives_here(id, s, inside, before);
+    }
     --depth_;
     restore(m, ok);
     return ok;
+  }
+
+  // A node the matcher could not follow, derived on s and compared
+  // (deterministic_subtree.hpp): exact, so its verdict replaces what the
+  // attempt recorded.
+  bool derives_here(NodeId id, const Scope& s, const BoxList& inside, const Mismatch& before) {
+    for (std::size_t k = 0; k < inside.size(); ++k) budget_.step();
+    const auto why = deterministic_.difference(id, s, boxes_, inside, tol_, box_text);
+    if (quiet_ == 0) best_ = before;
+    if (!why) return true;
+    return fail(id, s, *why);
   }
 
   bool dispatch(NodeId id, const Scope& s, const BoxList& inside) {
@@ -1530,6 +1552,7 @@ class Matcher {
   const std::vector<LabelledBox>& boxes_;
   const double tol_;
   Budget& budget_;
+  DeterministicSubtrees& deterministic_;
   std::vector<Slot> constants_;
   std::vector<Unknown> unknowns_;
   std::vector<std::pair<int, std::optional<double>>> trail_;
@@ -2349,7 +2372,7 @@ struct ConstantChoice {
 class Checker {
  public:
   Checker(const Grammar& g, const std::vector<LabelledBox>& boxes, double tol, Budget& budget, const Scope& start)
-      : g_(g), boxes_(boxes), tol_(tol), budget_(budget), start_(start) {
+      : g_(g), boxes_(boxes), tol_(tol), budget_(budget), deterministic_(g), start_(start) {
     for (std::size_t k = 0; k < boxes.size(); ++k) all_.push_back(static_cast<std::uint32_t>(k));
   }
 
@@ -2429,7 +2452,7 @@ class Checker {
   }
 
   void attempt(const ConstantChoice& c) {
-    Matcher m(g_, boxes_, tol_, budget_, c.slots, c.unknowns, floating_);
+    Matcher m(g_, boxes_, tol_, budget_, deterministic_, c.slots, c.unknowns, floating_);
     if (m.run(start_, all_)) {
       found_ = true;
       // The first line says what was matched, so even a grammar without
@@ -2456,6 +2479,7 @@ class Checker {
   const std::vector<LabelledBox>& boxes_;
   double tol_;
   Budget& budget_;
+  DeterministicSubtrees deterministic_;
   Scope start_;
   BoxList all_;
   bool found_ = false;

@@ -30,6 +30,11 @@
 // enumerated once per derivation; continuous ones are solved like arguments.
 // The search first keeps every boundary on a box face (enough for what
 // inference writes) and only then lets parts end in empty space.
+// Contents placed with T or S may leave their part's slice, where no cut
+// lies (inference's placements of a pinwheel): where such a node fails to
+// match but the grammar below it has one outcome (no draw, no alternatives,
+// no parameters), it is derived on its scope and compared with the boxes
+// there instead (deterministic_subtree.hpp), which is exact.
 //
 // Exact: sizes whose random draws each appear once (interval arithmetic),
 // few-valued draws, one continuous value per split. Approximate (may accept

@@ -38,7 +38,8 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   Grammar graph;
   std::vector<NodeId> roots;
   for (std::size_t i = 0; i < examples.size(); ++i) {
-    roots.push_back(split_graph(graph, trees[i], examples[i].boxes, examples[i].source, oriented.turns[i]));
+    roots.push_back(split_graph(graph, trees[i], examples[i].boxes, examples[i].source, oriented.turns[i],
+                                {out.tolerance, &out.warnings}));
     trees[i] = {};  // done with it: large examples hold big trees
   }
   MergeOptions merge;

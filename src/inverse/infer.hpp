@@ -40,11 +40,15 @@ struct Inference {
   PrimitiveLibrary primitives;   // each label's canonical mesh, in the unit box (orientation.hpp)
   double tolerance = 0;          // the tolerance used
   std::size_t unturned_parts = 0;  // parts whose mesh is no turn of their label's: written unturned
+  // "file:line:1: warning: ...\n  hint: ...", one per group of parts that no
+  // straight cut separates (placed with S(...), split_graph.hpp), in
+  // example order.
+  std::vector<std::string> warnings;
 };
 
 // Throws vern::Error (Input) for examples that cannot be represented
-// (overlapping parts, parts no straight cut separates), naming the file and
-// the objects.
+// (overlapping parts, parts that neither straight cuts nor placements
+// separate), naming the file and the objects.
 Inference infer(const std::vector<Example>& examples, const InferOptions& options);
 
 }  // namespace vern

@@ -5,22 +5,28 @@
 #include <unordered_map>
 
 #include "graph/error.hpp"
+#include "inverse/placements.hpp"
 
 namespace vern {
 
 namespace {
 
+// What the user can change, for a group's warning and for its error.
+constexpr const char* kThickenHint =
+    "give the part some thickness, or make it flush with the building's outer bounds";
+constexpr const char* kSplitOneHint = "split one of these parts in two so that a cut can pass between them";
+
 class GraphBuilder {
  public:
   GraphBuilder(Grammar& grammar, const std::vector<LabelledBox>& boxes, const std::string& source,
-               const std::vector<Orientation>& turns)
-      : g_(grammar), boxes_(boxes), source_(source), turns_(turns) {}
+               const std::vector<Orientation>& turns, const SplitGraphOptions& options)
+      : g_(grammar), boxes_(boxes), source_(source), turns_(turns), options_(options) {}
 
   NodeId node(const SplitTree& t) {
     switch (t.kind) {
       case SplitTree::Kind::Leaf: return leaf(t.box);
       case SplitTree::Kind::Empty: return nil();
-      case SplitTree::Kind::Unsplittable: unsplittable(t);
+      case SplitTree::Kind::Unsplittable: return placed(t);
       case SplitTree::Kind::Split: break;
     }
     // A split of one part is that part (toOp: "if there is only one child").
@@ -54,34 +60,63 @@ class GraphBuilder {
     return *nil_;
   }
 
-  // Straight cuts cannot represent the group. T/S placements could, later;
-  // until then the user learns which parts to change.
-  [[noreturn]] void unsplittable(const SplitTree& t) const {
-    std::string names;
+  // Straight cuts cannot represent the group: its parts are placed with
+  // S(...) inside cuts at their min corners (placements.hpp), and the user
+  // is told where, since such a group is copied, not generalised.
+  NodeId placed(const SplitTree& t) {
+    const auto node = place_group(g_, t, options_.tolerance, [&](std::uint32_t box) { return leaf(box); }, nil());
+    if (!node) unsplittable(t);
+    if (options_.warnings != nullptr) {
+      const bool flat = t.children.size() == 1;
+      const std::string what =
+          flat ? "part " + names(t) + " is flat and lies inside a thicker empty space, which no straight cut can "
+                                      "cut it out of: it is placed with S(...)"
+               : "no straight cut separates these " + std::to_string(t.children.size()) +
+                     " parts (e.g. a pinwheel): they are placed with S(...) at their corners: " + names(t);
+      const std::string hint = flat ? std::string(kThickenHint)
+                                    : std::string("a placed group is copied as it is, never varied; ") + kSplitOneHint;
+      options_.warnings->push_back(format_warning(source_, where(t), what) + "\n  hint: " + hint);
+    }
+    return *node;
+  }
+
+  // The group's parts, as messages name them: the first eight.
+  std::string names(const SplitTree& t) const {
+    std::string out;
     const std::size_t shown = std::min<std::size_t>(t.children.size(), 8);
     for (std::size_t i = 0; i < shown; ++i) {
-      names += (i == 0 ? "" : ", ") + describe_object(boxes_.at(t.children[i].box));
+      out += (i == 0 ? "" : ", ") + describe_object(boxes_.at(t.children[i].box));
     }
-    if (shown < t.children.size()) names += " and " + std::to_string(t.children.size() - shown) + " more";
+    if (shown < t.children.size()) out += " and " + std::to_string(t.children.size() - shown) + " more";
+    return out;
+  }
+
+  // The line of the group's first part.
+  SourceLoc where(const SplitTree& t) const {
     const LabelledBox& first = boxes_.at(t.children.front().box);
-    const SourceLoc loc{first.line, first.line != 0 ? 1u : 0u};
+    return SourceLoc{first.line, first.line != 0 ? 1u : 0u};
+  }
+
+  // A group not even placements separate (parts sharing their min corner):
+  // the user learns which parts to change.
+  [[noreturn]] void unsplittable(const SplitTree& t) const {
     if (t.children.size() == 1) {
-      fail(ErrorKind::Input, source_, loc,
-           "part " + names + " is flat and lies inside a thicker empty space: no straight cut can separate it, "
+      fail(ErrorKind::Input, source_, where(t),
+           "part " + names(t) + " is flat and lies inside a thicker empty space: no straight cut can separate it, "
            "because a cut never makes a part of zero thickness",
-           "give the part some thickness, or make it flush with the building's outer bounds");
+           kThickenHint);
     }
-    fail(ErrorKind::Input, source_, loc,
+    fail(ErrorKind::Input, source_, where(t),
          "these " + std::to_string(t.children.size()) +
-             " parts cannot be separated by straight cuts (e.g. a pinwheel): " + names,
-         "inference cuts buildings with planes through whole groups of parts; split one of these parts in two "
-         "so that a cut can pass between them");
+             " parts cannot be separated by straight cuts (e.g. a pinwheel): " + names(t),
+         std::string("inference cuts buildings with planes through whole groups of parts; ") + kSplitOneHint);
   }
 
   Grammar& g_;
   const std::vector<LabelledBox>& boxes_;
   const std::string& source_;
   const std::vector<Orientation>& turns_;  // per box; empty: none turned
+  const SplitGraphOptions& options_;
   std::unordered_map<std::string, NodeId> leaves_;  // label -> its primitive node
   std::optional<NodeId> nil_;
 };
@@ -89,14 +124,15 @@ class GraphBuilder {
 }  // namespace
 
 NodeId split_graph(Grammar& grammar, const SplitTree& tree, const std::vector<LabelledBox>& boxes,
-                   const std::string& source, const std::vector<Orientation>& turns) {
-  return GraphBuilder(grammar, boxes, source, turns).node(tree);
+                   const std::string& source, const std::vector<Orientation>& turns,
+                   const SplitGraphOptions& options) {
+  return GraphBuilder(grammar, boxes, source, turns, options).node(tree);
 }
 
 NodeId example_graph(Grammar& grammar, const Example& example, const BoxSplitOptions& options,
-                     const std::vector<Orientation>& turns) {
+                     const std::vector<Orientation>& turns, std::vector<std::string>* warnings) {
   const SplitTree tree = split_boxes(example.boxes, options, example.source);
-  return split_graph(grammar, tree, example.boxes, example.source, turns);
+  return split_graph(grammar, tree, example.boxes, example.source, turns, {options.tolerance, warnings});
 }
 
 }  // namespace vern

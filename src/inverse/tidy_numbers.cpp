@@ -73,7 +73,8 @@ class Tidier {
     if (std::holds_alternative<Split>(here)) {
       out = tidy_split(id);
     } else if (std::holds_alternative<Choose>(here) || std::holds_alternative<Repeat>(here) ||
-               std::holds_alternative<RepeatN>(here) || std::holds_alternative<Rotate>(here)) {
+               std::holds_alternative<RepeatN>(here) || std::holds_alternative<Rotate>(here) ||
+               std::holds_alternative<Scale>(here)) {
       out = tidy_other(id);
     }
     memo_[id] = out;
@@ -116,7 +117,7 @@ class Tidier {
     return Expr::call(f, std::move(out));
   }
 
-  // Choose, repeat, repeatN, rotate: few in a grammar, so always copied.
+  // Choose, repeat, repeatN, rotate, S: few in a grammar, so always copied.
   NodeId tidy_other(NodeId id) {
     Operation op = g_.op(id);  // a copy: running the children may grow the arena
     if (auto* c = std::get_if<Choose>(&op)) {
@@ -137,6 +138,10 @@ class Tidier {
       }
     } else if (auto* turn = std::get_if<Rotate>(&op)) {
       turn->child = run(turn->child);
+    } else if (auto* resize = std::get_if<Scale>(&op)) {
+      // A placed part's size (placements.hpp): off by at most the tolerance.
+      resize->child = run(resize->child);
+      for (Size& size : resize->size) size.value = tidy(size.value);
     }
     return g_.intern({std::move(op), g_.node(id).loc});
   }
