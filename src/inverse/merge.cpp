@@ -3,11 +3,12 @@
 #include "inverse/generalise.hpp"
 #include "inverse/fit_distribution.hpp"
 #include "inverse/repeat_folding.hpp"
+#include "inverse/sample_book.hpp"
 #include "inverse/size_clusters.hpp"
+#include "inverse/settle_repeats.hpp"
 #include "inverse/size_plan.hpp"
-#include "inverse/substitute.hpp"
-#include "inverse/tidy_numbers.hpp"
 #include "inverse/tile_choices.hpp"
+#include "inverse/tile_lengths.hpp"
 
 #include <algorithm>
 #include <array>
@@ -40,12 +41,6 @@ Expr range_expr(Range r, double tolerance) {
 
 namespace {
 
-// The values that merging's ranges stand for: per node built with ranges,
-// per split part (a repeat: its tile size), each value with the number of
-// times the examples use it. Kept across rounds of unification, keyed by
-// the built node, so that a range widened again still knows its values.
-// An empty list means unknown: the range joined values that were not kept.
-using SampleBook = std::unordered_map<NodeId, std::vector<std::vector<Observation>>>;
 
 // In how many examples each node occurs: a value seen in three examples
 // is three observations of the style, while one example's six equal
@@ -66,61 +61,6 @@ std::vector<double> example_counts(const Grammar& g, const std::vector<NodeId>& 
   }
   return counts;
 }
-
-// Repeats whose tiles differ in length by a wide gap are different kinds
-// of repeat, though alike in structure: a block's strips of buildings and
-// a tower cluster's strips a third as wide. Ranging one tile size over
-// both would give blocks of a dozen slivers and clusters of two towers.
-// The kinds: per axis, the repeats' tile lengths (ranges, once merged) in
-// order, a new kind wherever the next length is more than kLengthGap
-// times the longest so far.
-class TileLengths {
- public:
-  static constexpr double kLengthGap = 1.25;
-
-  TileLengths() = default;
-  TileLengths(const Grammar& g, NodeId root) {
-    std::vector<bool> seen(g.node_count(), false);
-    std::vector<NodeId> stack{root};
-    std::array<std::vector<Range>, 3> lengths;
-    while (!stack.empty()) {
-      const NodeId id = stack.back();
-      stack.pop_back();
-      if (seen[id]) continue;
-      seen[id] = true;
-      const Operation& op = g.op(id);
-      if (const auto* r = std::get_if<Repeat>(&op))
-        if (const auto axis = axis_of(*r); axis && literal_range(r->size)) lengths[*axis].push_back(*literal_range(r->size));
-      for (NodeId c : node_children(op)) stack.push_back(c);
-    }
-    for (std::size_t a = 0; a < 3; ++a) {
-      std::sort(lengths[a].begin(), lengths[a].end(), [](const Range& x, const Range& y) { return x.lo < y.lo; });
-      for (const Range& r : lengths[a]) {
-        if (starts_[a].empty() || r.lo > kLengthGap * longest_[a]) starts_[a].push_back(r.lo);
-        longest_[a] = starts_[a].size() == 1 && longest_[a] == 0 ? r.hi : std::max(longest_[a], r.hi);
-      }
-    }
-  }
-
-  // The repeat's kind: 1 + the index of its length's kind on its axis
-  // (0 for a repeat without a literal axis and length).
-  std::size_t kind(const Repeat& r) const {
-    const auto axis = axis_of(r);
-    const auto length = literal_range(r.size);
-    if (!axis || !length) return 0;
-    const auto& starts = starts_[*axis];
-    return static_cast<std::size_t>(std::upper_bound(starts.begin(), starts.end(), length->lo) - starts.begin());
-  }
-
- private:
-  static std::optional<std::size_t> axis_of(const Repeat& r) {
-    if (r.axis.nodes().size() != 1 || r.axis.node(0).kind != ExprKind::Axis) return std::nullopt;
-    return static_cast<std::size_t>(r.axis.node(0).op);
-  }
-
-  std::array<std::vector<double>, 3> starts_;  // per axis: each kind's shortest length, ascending
-  std::array<double, 3> longest_{};            // per axis: the longest length so far (while building)
-};
 
 // Unifies nodes of equal structure anywhere below a root (thesis 10.3):
 // the same operation, axis, relative flags, counts and children (after
@@ -698,61 +638,6 @@ void carry_notes(const std::vector<std::pair<NodeId, NodeId>>& rebuilt, SampleBo
       tile_counts.emplace(now, std::move(counts));
     }
   }
-}
-
-// Repeats whose tile sizes vary, once merging has settled (rows that
-// differ in their counts have been united first):
-//   - one that made the same number of tiles wherever the examples show
-//     it is that many tiles whatever the length: repeatN. A cluster of
-//     three by three towers stays three by three on a wider plot instead
-//     of growing to seven by seven;
-//   - one whose counts vary takes its tile sizes from the middle of each
-//     count's range: n tiles on L come from any size in [L/n, L/(n-1)),
-//     and the sizes seen, L/n, are that range's lower end, so sizes drawn
-//     between them would make more tiles, on average, than the examples
-//     had. L/(n - 1/2) makes the same n tiles on L, and so does the
-//     shortest decimal near it.
-NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, SampleBook& book, double tolerance) {
-  std::vector<NodeId> replace(g.node_count(), kNoReplacement);
-  bool any = false;
-  for (const auto& [id, seen] : tile_counts) {
-    if (id >= replace.size() || seen.empty()) continue;
-    const auto* r = std::get_if<Repeat>(&g.op(id));
-    const auto tile = r ? literal_range(r->size) : std::nullopt;
-    if (!tile || tile->hi - tile->lo <= tolerance) continue;
-    const std::uint32_t n = seen[0].count;
-    if (n >= 2 && std::all_of(seen.begin(), seen.end(), [&](const TileSeen& t) { return t.count == n; })) {
-      RepeatN counted{r->axis, Expr::number(n), r->child};
-      replace[id] = g.intern({std::move(counted), g.node(id).loc});
-      any = true;
-      continue;
-    }
-    if (std::any_of(seen.begin(), seen.end(), [](const TileSeen& t) { return t.count < 2; })) continue;
-    // Each middle written as the shortest decimal a quarter of the way to
-    // its range's nearer end: tiles of 5 m, not 5.142857 m.
-    std::vector<double> middles;
-    for (const TileSeen& t : seen) {
-      const double k = t.count;
-      middles.push_back(shortest_decimal(t.length / (k - 0.5), 0.25 * t.length / (k * (k - 0.5))));
-    }
-    std::sort(middles.begin(), middles.end());
-    middles.erase(std::unique(middles.begin(), middles.end()), middles.end());
-    Repeat centred = *r;
-    centred.size = range_expr({middles.front(), middles.back()}, tolerance);
-    const NodeId out = g.intern({std::move(centred), g.node(id).loc});
-    std::vector<Observation> values;
-    for (double m : middles) values.push_back({m, 1.0});
-    book[out] = {std::move(values)};
-    replace[id] = out;
-    any = true;
-  }
-  // A replacement is not looked into: a repeat inside a replaced one is
-  // replaced by the next pass.
-  for (NodeId previous = kNoReplacement; any && root != previous;) {
-    previous = root;
-    root = substitute(g, root, replace);
-  }
-  return root;
 }
 
 NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeOptions& options) {
