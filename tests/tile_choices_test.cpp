@@ -99,16 +99,6 @@ TEST(TileChoices, TilesOfFarApartLengthsAreDifferentKinds) {
   EXPECT_EQ(forms.options[0].priority.literal(), 2.0);
 }
 
-TEST(TileChoices, ASameCountOnDifferentLengthsIsThatManyTiles) {
-  // Clusters of three towers on plots 1.5 and 1.8 wide: repeatN(x, 3).
-  Grammar g;
-  const auto roots = examples(g, {row(0.5, plain(4), kTwin, plain(2)), row(0.6, plain(3), kTwin, plain(5))});
-  const NodeId merged = merge_examples(g, roots, {1e-9, true});
-  const auto* cluster = std::get_if<RepeatN>(&g.op(merged));
-  ASSERT_NE(cluster, nullptr);
-  EXPECT_EQ(cluster->count.literal(), 3.0);
-}
-
 TEST(TileChoices, NothingToUniteLeavesTheGraphAsItIs) {
   Grammar g;
   const auto roots = examples(g, {row(2, plain(3), plain(3), plain(3))});
