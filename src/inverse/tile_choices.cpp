@@ -95,10 +95,10 @@ class Uniter {
       for (std::size_t s : members[c]) {
         if (std::find(counted.begin(), counted.end(), slots_[s].held) != counted.end()) continue;
         counted.push_back(slots_[s].held);
-        for (const auto& [alternative, weight] : slots_[s].options) {
-          auto it = std::find_if(options.begin(), options.end(), [&](const auto& o) { return o.first == alternative; });
-          if (it == options.end()) options.emplace_back(alternative, weight);
-          else it->second += weight;
+        for (const auto& held : slots_[s].options) {
+          auto it = std::find_if(options.begin(), options.end(), [&](const auto& o) { return o.first == held.first; });
+          if (it == options.end()) options.push_back(held);
+          else it->second += held.second;
         }
       }
       if (options.size() < 2) continue;
