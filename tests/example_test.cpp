@@ -78,19 +78,27 @@ TEST(Example, ObjObjectsArePartsWithBoxesLabelsAndLines) {
   const Example ex = load_example(dir / "house.obj");
   EXPECT_EQ(ex.source, (dir / "house.obj").string());
   ASSERT_EQ(ex.boxes.size(), 3u);
-  ASSERT_EQ(ex.meshes.size(), 3u);
+  // The whole mesh of each label's first part; every part's positions.
+  ASSERT_EQ(ex.meshes.size(), 2u);
+  ASSERT_EQ(ex.positions.size(), 3u);
   EXPECT_EQ(ex.boxes[0].label, "wall");
   EXPECT_EQ(ex.boxes[1].label, "window");
   EXPECT_EQ(ex.boxes[2].label, "window");
   EXPECT_EQ(ex.boxes[1].object, "window.001");
   EXPECT_EQ(ex.boxes[0].line, 2u);
   EXPECT_EQ(ex.boxes[1].line, 17u);
-  EXPECT_EQ(ex.boxes[2].mesh, 2u);
+  EXPECT_EQ(ex.boxes[1].mesh, 1u);
+  EXPECT_EQ(ex.boxes[2].mesh, Mesh::kNone);
   EXPECT_EQ(ex.boxes[1].min, glm::dvec3(1, -0.25, 1));
   EXPECT_EQ(ex.boxes[1].max, glm::dvec3(2, 0, 2));
-  // Meshes stay in world space, one per part.
-  EXPECT_EQ(ex.meshes[2].min_corner(), glm::dvec3(4, -0.25, 1));
+  // Meshes and positions stay in world space.
+  EXPECT_EQ(ex.meshes[1].min_corner(), glm::dvec3(1, -0.25, 1));
   EXPECT_EQ(ex.meshes[0].face_sizes.size(), 6u);
+  std::vector<glm::dvec3> positions;
+  ex.positions.get(2, ex.boxes[2].min, ex.boxes[2].max, positions);
+  EXPECT_EQ(positions.size(), 8u);
+  EXPECT_EQ(*std::min_element(positions.begin(), positions.end(), [](auto& a, auto& b) { return a.x < b.x; }),
+            glm::dvec3(4, -0.25, 1));
   EXPECT_EQ(ex.min, glm::dvec3(0, -0.25, 0));
   EXPECT_EQ(ex.max, glm::dvec3(6, 0.5, 3));
   EXPECT_EQ(example_size(ex), glm::dvec3(6, 0.75, 3));
@@ -196,7 +204,7 @@ TEST(Example, GltfAndObjWrittenByTheWritersReadBackToTheSameBoxes) {
     else write_gltf(scene, library, dir / name);
     const Example ex = load_example(dir / name);
     EXPECT_EQ(ex.boxes.size(), d.terminals.size());
-    EXPECT_EQ(ex.meshes.size(), d.terminals.size());
+    EXPECT_EQ(ex.positions.size(), d.terminals.size());
     EXPECT_TRUE(test::same_boxes(expected, ex.boxes, 1e-6));
     if (!name.ends_with(".obj")) {
       EXPECT_EQ(ex.boxes[0].line, 0u);
@@ -284,8 +292,9 @@ TEST(Example, InstancedGltfReadsBackAsThePlainFile) {
       for (const LabelledBox& b : instanced.boxes) {
         EXPECT_EQ(b.label.find(' '), std::string::npos) << b.label;
         EXPECT_NE(b.object.find("(instance "), std::string::npos) << b.object;
-        // Each part's mesh is its own instance, placed.
-        const Mesh& mesh = instanced.meshes[b.mesh];
+        // Each part's positions are its own instance's, placed.
+        Mesh mesh;
+        instanced.positions.get(static_cast<std::size_t>(&b - instanced.boxes.data()), b.min, b.max, mesh.positions);
         for (int i = 0; i < 3; ++i) {
           EXPECT_NEAR(mesh.min_corner()[i], b.min[i], 1e-12);
           EXPECT_NEAR(mesh.max_corner()[i], b.max[i], 1e-12);

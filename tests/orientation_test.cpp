@@ -33,7 +33,7 @@ TEST(Orientation, AnUnturnedPartNeedsNoTurn) {
   const Mesh& wedge = *PrimitiveLibrary::builtin().find("right_angle_triangle");
   const Derivation d = derived("I(right_angle_triangle)");
   const Bounds b = world_bounds(d.terminals[0].scope);
-  EXPECT_EQ(find_orientation(wedge, placed(d, 0, wedge), b.min, b.max, 1e-9), Orientation{});
+  EXPECT_EQ(find_orientation(wedge, placed(d, 0, wedge).positions, b.min, b.max, 1e-9), Orientation{});
 }
 
 TEST(Orientation, FindsTheTurnTheGrammarMade) {
@@ -43,7 +43,7 @@ TEST(Orientation, FindsTheTurnTheGrammarMade) {
     const Derivation d = derived(body);
     const Mesh world = placed(d, 0, wedge);
     const Bounds b = world_bounds(d.terminals[0].scope);
-    const std::optional<Orientation> found = find_orientation(wedge, world, b.min, b.max, 1e-9);
+    const std::optional<Orientation> found = find_orientation(wedge, world.positions, b.min, b.max, 1e-9);
     ASSERT_TRUE(found.has_value()) << turn;
     // The turns found make the same mesh (a symmetric shape may have
     // another name for the same turn).
@@ -68,14 +68,14 @@ TEST(Orientation, ASymmetricMeshIsNeverTurned) {
   const Mesh& box = *PrimitiveLibrary::builtin().find("rect");
   const Derivation d = derived("R(z, pi/2){ I(rect) }");
   const Bounds b = world_bounds(d.terminals[0].scope);
-  EXPECT_EQ(find_orientation(box, placed(d, 0, box), b.min, b.max, 1e-9), Orientation{});
+  EXPECT_EQ(find_orientation(box, placed(d, 0, box).positions, b.min, b.max, 1e-9), Orientation{});
 }
 
 TEST(Orientation, AnotherShapeHasNoTurn) {
   const PrimitiveLibrary& lib = PrimitiveLibrary::builtin();
   const Derivation d = derived("I(pyramid)");
   const Bounds b = world_bounds(d.terminals[0].scope);
-  EXPECT_FALSE(find_orientation(*lib.find("right_angle_triangle"), placed(d, 0, *lib.find("pyramid")), b.min, b.max,
+  EXPECT_FALSE(find_orientation(*lib.find("right_angle_triangle"), placed(d, 0, *lib.find("pyramid")).positions, b.min, b.max,
                                 1e-9));
 }
 
@@ -124,12 +124,15 @@ TEST(OrientationRoundTrip, BetterRoofsComeBackTurnedAsTheyWere) {
       for (const glm::dvec3& p : unit->positions) mine.push_back(t.scope.to_world(p) + example.min);
       const Bounds b = world_bounds(t.scope);
       bool found = false;
-      for (const LabelledBox& box : example.boxes) {
+      std::vector<glm::dvec3> theirs;
+      for (std::size_t i = 0; i < example.boxes.size(); ++i) {
+        const LabelledBox& box = example.boxes[i];
         if (box.label != label || glm::length(box.min - (b.min + example.min)) > 4 * inferred.tolerance ||
             glm::length(box.max - (b.max + example.min)) > 4 * inferred.tolerance)
           continue;
         found = true;
-        EXPECT_TRUE(same_points(mine, example.meshes[box.mesh].positions, 4 * inferred.tolerance)) << label << " at seed " << seed;
+        example.positions.get(i, box.min, box.max, theirs);
+        EXPECT_TRUE(same_points(mine, theirs, 4 * inferred.tolerance)) << label << " at seed " << seed;
       }
       EXPECT_TRUE(found) << label;
       if (t.scope.frame != glm::dmat3(1.0)) ++turned;

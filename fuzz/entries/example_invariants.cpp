@@ -36,9 +36,11 @@ std::string mesh_invariants(const Mesh& mesh) {
 
 std::string example_invariants(const Example& example) {
   if (example.boxes.empty()) return "an example without boxes was accepted";
-  if (example.meshes.size() != example.boxes.size())
-    return std::to_string(example.boxes.size()) + " boxes but " + std::to_string(example.meshes.size()) + " meshes";
+  if (example.positions.size() != example.boxes.size())
+    return std::to_string(example.boxes.size()) + " boxes but " + std::to_string(example.positions.size()) +
+           " parts' positions";
   const double tolerance = default_tolerance(example);
+  Mesh positions;
   for (const LabelledBox& b : example.boxes) {
     const std::string who = "box " + describe_object(b) + ": ";
     if (b.label.empty() || b.object.empty()) return who + "no label or object name";
@@ -46,10 +48,15 @@ std::string example_invariants(const Example& example) {
     if (b.min.x > b.max.x || b.min.y > b.max.y || b.min.z > b.max.z) return who + "min above max";
     const glm::dvec3 size = b.max - b.min;
     if (size.x <= tolerance && size.y <= tolerance && size.z <= tolerance) return who + "a single point was accepted";
-    if (b.mesh >= example.meshes.size()) return who + "mesh index out of range";
-    const Mesh& mesh = example.meshes[b.mesh];
-    if (std::string broken = mesh_invariants(mesh); !broken.empty()) return who + broken;
-    if (mesh.min_corner() != b.min || mesh.max_corner() != b.max) return who + "bounds differ from its mesh's";
+    if (b.mesh != Mesh::kNone) {
+      if (b.mesh >= example.meshes.size()) return who + "mesh index out of range";
+      const Mesh& mesh = example.meshes[b.mesh];
+      if (std::string broken = mesh_invariants(mesh); !broken.empty()) return who + broken;
+      if (mesh.min_corner() != b.min || mesh.max_corner() != b.max) return who + "bounds differ from its mesh's";
+    }
+    example.positions.get(static_cast<std::size_t>(&b - example.boxes.data()), b.min, b.max, positions.positions);
+    if (positions.min_corner() != b.min || positions.max_corner() != b.max)
+      return who + "bounds differ from its positions'";
     if (glm::any(glm::lessThan(b.min, example.min)) || glm::any(glm::greaterThan(b.max, example.max)))
       return who + "outside the example's bounds";
   }

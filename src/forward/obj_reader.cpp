@@ -1,10 +1,12 @@
 #include "forward/obj_reader.hpp"
 
 #include <cerrno>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <fstream>
 #include <string_view>
 
@@ -56,17 +58,72 @@ std::string_view rest_of_line(std::string_view line, const Token& keyword) {
   return line.substr(b, e - b);
 }
 
+// The lines of a stream, read in large blocks: each line is a view into the
+// block, valid until the next call, without its line break. A line longer
+// than kMaxObjLine comes out cut at kMaxObjLine + 1 bytes (the caller
+// refuses it), so a file without line breaks costs one block, not its size.
+class LineSplitter {
+ public:
+  explicit LineSplitter(std::istream& in) : in_(in), block_(4 * kMaxObjLine) {}
+
+  // The next line; `last` when it ends the stream without a line break.
+  bool next(std::string_view& line, bool& last) {
+    while (true) {
+      const char* begin = block_.data() + begin_;
+      const std::size_t available = end_ - begin_;
+      const std::size_t searched = std::min(available, kMaxObjLine + 1);
+      if (const void* found = std::memchr(begin, '\n', searched)) {
+        const auto length = static_cast<std::size_t>(static_cast<const char*>(found) - begin);
+        return take(line, last, length, length + 1, false);
+      }
+      if (available > kMaxObjLine) return take(line, last, searched, searched, false);
+      if (at_end_) return available != 0 && take(line, last, available, available, true);
+      refill();
+    }
+  }
+
+  bool failed() const { return failed_; }
+
+ private:
+  bool take(std::string_view& line, bool& last, std::size_t length, std::size_t consumed, bool at_end) {
+    line = {block_.data() + begin_, length};
+    last = at_end;
+    begin_ += consumed;
+    return true;
+  }
+
+  // Moves the unfinished line to the front and fills the rest of the
+  // block; the line is at most kMaxObjLine bytes, so room is left.
+  void refill() {
+    std::memmove(block_.data(), block_.data() + begin_, end_ - begin_);
+    end_ -= begin_;
+    begin_ = 0;
+    in_.read(block_.data() + end_, static_cast<std::streamsize>(block_.size() - end_));
+    end_ += static_cast<std::size_t>(in_.gcount());
+    failed_ = in_.bad();
+    at_end_ = !in_ || in_.gcount() == 0;
+  }
+
+  std::istream& in_;
+  std::vector<char> block_;
+  std::size_t begin_ = 0, end_ = 0;  // the unread bytes of block_
+  bool at_end_ = false, failed_ = false;
+};
+
 // A run of faces under one `o` or `g` statement.
 struct Segment {
   std::string name;
   std::uint32_t line = 0;
 };
 
+// Reads statements and hands each object to `each_` as soon as it is
+// complete. Vertices stay for the whole file (a face may use any vertex
+// written before it); faces only until their object is handed over.
 class Reader {
  public:
-  Reader(const std::string& source, const ObjLimits& limits) : source_(source), limits_(limits) {
-    objects_.push_back({});  // faces before any `o`
-    groups_.push_back({});   // faces before any `g`
+  Reader(const std::string& source, const ObjLimits& limits, const ObjObjectSink& each)
+      : source_(source), limits_(limits), each_(each) {
+    groups_.push_back({});  // faces before any `g`
   }
 
   void read_line(std::string_view line, std::uint32_t number) {
@@ -89,10 +146,12 @@ class Reader {
     } else if (key == "f" || key == "fo") {
       read_face();
     } else if (key == "o") {
-      any_object_ = true;
-      objects_.push_back({name_after(line, tokens_[0]), number});
+      start_object(name_after(line, tokens_[0]), number);
     } else if (key == "g") {
-      groups_.push_back({name_after(line, tokens_[0]), number});
+      // Once a file names parts with `o`, its groups (materials, smoothing)
+      // no longer matter.
+      if (!any_object_) groups_.push_back({name_after(line, tokens_[0]), number});
+      ++groups_seen_;
     } else if (!is_ignored(key)) {
       if (!recognised_) {
         // Binary data is named by its first byte, not echoed to the terminal.
@@ -114,68 +173,80 @@ class Reader {
     recognised_ = true;
   }
 
-  std::vector<ObjObject> finish() {
-    // Files that name parts with `o` may also carry groups (materials,
-    // smoothing): then only `o` counts. Otherwise `g` names the parts.
-    const std::vector<Segment>& segments = any_object_ ? objects_ : groups_;
-    const std::vector<std::uint32_t>& face_segment = any_object_ ? face_object_ : face_group_;
-
-    // Faces of each segment, in file order (a counting sort).
-    std::vector<std::uint32_t> first(segments.size() + 1, 0);
-    for (std::uint32_t s : face_segment) ++first[s + 1];
-    for (std::size_t s = 1; s < first.size(); ++s) first[s] += first[s - 1];
-    std::vector<std::uint32_t> faces(face_segment.size());
-    std::vector<std::uint32_t> corner_start(face_segment.size());
-    {
-      std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-      std::uint32_t corner = 0;
-      for (std::uint32_t f = 0; f < face_segment.size(); ++f) {
-        faces[next[face_segment[f]]++] = f;
-        corner_start[f] = corner;
-        corner += face_sizes_[f];
-      }
+  // Hands over what is still pending at the end of the file.
+  void finish() {
+    if (any_object_) {
+      emit(object_, 0, face_sizes_.size());
+      return;
     }
-
-    std::vector<std::uint32_t> position_map(positions_.size(), Mesh::kNone);
-    std::vector<std::uint32_t> normal_map(normals_.size(), Mesh::kNone);
-    std::vector<std::uint32_t> uv_map(uvs_.size(), Mesh::kNone);
-    std::vector<ObjObject> result;
-    for (std::size_t s = 0; s < segments.size(); ++s) {
-      if (first[s] == first[s + 1]) continue;
-      ObjObject object;
-      object.name = segments[s].name;
-      object.line = segments[s].line != 0 ? segments[s].line : face_line_[faces[first[s]]];
-      Mesh& mesh = object.mesh;
-      for (std::uint32_t k = first[s]; k < first[s + 1]; ++k) {
-        const std::uint32_t f = faces[k];
-        mesh.face_sizes.push_back(face_sizes_[f]);
-        for (std::uint32_t c = 0; c < face_sizes_[f]; ++c) {
-          const Mesh::Corner& g = corners_[corner_start[f] + c];
-          Mesh::Corner local;
-          local.position = remap(g.position, position_map, positions_, mesh.positions);
-          local.normal = remap(g.normal, normal_map, normals_, mesh.normals);
-          local.uv = remap(g.uv, uv_map, uvs_, mesh.uvs);
-          mesh.corners.push_back(local);
-        }
-      }
-      // Reset only what this object touched: linear in the file's size.
-      for (std::uint32_t k = first[s]; k < first[s + 1]; ++k) {
-        const std::uint32_t f = faces[k];
-        for (std::uint32_t c = 0; c < face_sizes_[f]; ++c) {
-          const Mesh::Corner& g = corners_[corner_start[f] + c];
-          position_map[g.position] = Mesh::kNone;
-          if (g.normal != Mesh::kNone) normal_map[g.normal] = Mesh::kNone;
-          if (g.uv != Mesh::kNone) uv_map[g.uv] = Mesh::kNone;
-        }
-      }
-      result.push_back(std::move(object));
+    // No `o` at all: `g` names the parts. A group's faces are consecutive.
+    for (std::size_t begin = 0; begin < face_sizes_.size();) {
+      std::size_t end = begin;
+      while (end < face_sizes_.size() && face_group_[end] == face_group_[begin]) ++end;
+      emit(groups_[face_group_[begin]], begin, end);
+      begin = end;
     }
-    return result;
   }
 
  private:
   [[noreturn]] void error(std::size_t column, const std::string& message, const std::string& hint) const {
     fail(ErrorKind::Input, source_, {line_, static_cast<std::uint32_t>(column)}, message, hint);
+  }
+
+  // Files that name parts with `o` may also carry groups: then only `o`
+  // counts, and faces before the first `o` are one unnamed object.
+  void start_object(std::string name, std::uint32_t number) {
+    if (any_object_) emit(object_, 0, face_sizes_.size());
+    else emit({}, 0, face_sizes_.size());
+    clear_faces();
+    groups_.clear();
+    any_object_ = true;
+    object_ = {std::move(name), number};
+    object_has_faces_ = false;
+  }
+
+  // The object of pending faces [begin, end), its vertices re-indexed from
+  // 0 in order of first use; nothing when it has no faces.
+  void emit(const Segment& segment, std::size_t begin, std::size_t end) {
+    if (begin == end) return;
+    object_out_.name = segment.name;
+    object_out_.line = segment.line != 0 ? segment.line : face_line_[begin];
+    Mesh& mesh = object_out_.mesh;
+    mesh.positions.clear();
+    mesh.normals.clear();
+    mesh.uvs.clear();
+    mesh.corners.clear();
+    mesh.face_sizes.assign(face_sizes_.begin() + static_cast<std::ptrdiff_t>(begin),
+                           face_sizes_.begin() + static_cast<std::ptrdiff_t>(end));
+    position_map_.resize(positions_.size(), Mesh::kNone);
+    normal_map_.resize(normals_.size(), Mesh::kNone);
+    uv_map_.resize(uvs_.size(), Mesh::kNone);
+    const std::size_t first_corner = face_corner_[begin];
+    const std::size_t last_corner = end < face_corner_.size() ? face_corner_[end] : corners_.size();
+    for (std::size_t c = first_corner; c < last_corner; ++c) {
+      const Mesh::Corner& g = corners_[c];
+      Mesh::Corner local;
+      local.position = remap(g.position, position_map_, positions_, mesh.positions);
+      local.normal = remap(g.normal, normal_map_, normals_, mesh.normals);
+      local.uv = remap(g.uv, uv_map_, uvs_, mesh.uvs);
+      mesh.corners.push_back(local);
+    }
+    // Reset only what this object touched: linear in the file's size.
+    for (std::size_t c = first_corner; c < last_corner; ++c) {
+      const Mesh::Corner& g = corners_[c];
+      position_map_[g.position] = Mesh::kNone;
+      if (g.normal != Mesh::kNone) normal_map_[g.normal] = Mesh::kNone;
+      if (g.uv != Mesh::kNone) uv_map_[g.uv] = Mesh::kNone;
+    }
+    each_(object_out_);
+  }
+
+  void clear_faces() {
+    corners_.clear();
+    face_sizes_.clear();
+    face_corner_.clear();
+    face_group_.clear();
+    face_line_.clear();
   }
 
   // An `o`/`g` name: it becomes a label in grammars and written files, so
@@ -301,14 +372,14 @@ class Reader {
       }
       corners_.push_back(c);
     }
-    const auto object = static_cast<std::uint32_t>(objects_.size() - 1);
-    const auto group = static_cast<std::uint32_t>(groups_.size() - 1);
     // A segment's faces are consecutive, so a new segment shows as a change.
-    if (face_object_.empty() || face_object_.back() != object) ++objects_with_faces_;
-    if (face_group_.empty() || face_group_.back() != group) ++groups_with_faces_;
+    if (!object_has_faces_) ++objects_with_faces_;
+    object_has_faces_ = true;
+    if (last_group_with_faces_ != groups_seen_) ++groups_with_faces_;
+    last_group_with_faces_ = groups_seen_;
+    face_corner_.push_back(static_cast<std::uint32_t>(corners_.size() - n));
     face_sizes_.push_back(static_cast<std::uint32_t>(n));
-    face_object_.push_back(object);
-    face_group_.push_back(group);
+    if (!any_object_) face_group_.push_back(static_cast<std::uint32_t>(groups_.size() - 1));
     face_line_.push_back(line_);
     const std::size_t parts = any_object_ ? objects_with_faces_ : groups_with_faces_;
     if (limits_.max_objects != 0 && parts > limits_.max_objects) {
@@ -331,50 +402,53 @@ class Reader {
 
   const std::string& source_;
   const ObjLimits& limits_;
+  const ObjObjectSink& each_;
   std::uint32_t line_ = 0;
   std::vector<Token> tokens_;
   bool recognised_ = false;
   bool any_object_ = false;
+  bool object_has_faces_ = false;  // the current `o` segment, or the faces before any `o`
   std::size_t objects_with_faces_ = 0;
   std::size_t groups_with_faces_ = 0;
+  std::size_t groups_seen_ = 0;  // `g` statements so far
+  std::size_t last_group_with_faces_ = std::numeric_limits<std::size_t>::max();
 
   std::vector<glm::dvec3> positions_;
   std::vector<glm::dvec3> normals_;
   std::vector<glm::dvec2> uvs_;
+  // The faces not yet handed over: of the current object, or before any
+  // `o` all of them (they may yet turn out to be groups).
   std::vector<Mesh::Corner> corners_;  // global indices
   std::vector<std::uint32_t> face_sizes_;
-  std::vector<std::uint32_t> face_object_;  // segment in objects_
+  std::vector<std::uint32_t> face_corner_;  // each face's first corner in corners_
   std::vector<std::uint32_t> face_group_;   // segment in groups_
   std::vector<std::uint32_t> face_line_;
-  std::vector<Segment> objects_;
-  std::vector<Segment> groups_;
+  Segment object_;               // the current `o`
+  std::vector<Segment> groups_;  // only while no `o` has been seen
+  // Reused from object to object.
+  ObjObject object_out_;
+  std::vector<std::uint32_t> position_map_, normal_map_, uv_map_;
 };
 
 }  // namespace
 
-std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits) {
-  Reader reader(source_name, limits);
-  // Lines are read into one fixed buffer: a file without line breaks (or
-  // binary data) costs kMaxObjLine bytes, not its own size.
-  std::vector<char> buffer(kMaxObjLine + 1);
+void read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits, const ObjObjectSink& each) {
+  Reader reader(source_name, limits, each);
+  LineSplitter lines(in);
   std::string joined;  // a statement continued over lines with a trailing '\'
   std::uint32_t number = 0;
   std::uint32_t statement_line = 0;
-  while (true) {
-    in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-    const auto got = static_cast<std::size_t>(in.gcount());
-    if (in.bad()) break;
-    // A full buffer without a line break: the line is longer than allowed.
-    const bool too_long = in.fail() && !in.eof();
-    if (got == 0 && in.eof()) break;
+  std::string_view line;
+  bool last = false;
+  while (lines.next(line, last)) {
     ++number;
-    if (too_long || joined.size() + got > kMaxObjLine) {
+    // `got` counts the line break too, as std::istream::getline did.
+    const std::size_t got = line.size() + (last ? 0 : 1);
+    if (line.size() > kMaxObjLine || joined.size() + got > kMaxObjLine) {
       fail(ErrorKind::Input, source_name, {joined.empty() ? number : statement_line, 1},
            "a line longer than " + std::to_string(kMaxObjLine) + " bytes: this does not look like an OBJ text file",
            "give a Wavefront OBJ text file (for glTF or GLB examples use a .gltf/.glb path)");
     }
-    const bool last = in.eof();  // no line break was consumed
-    std::string_view line(buffer.data(), got - (last ? 0 : 1));
     if (number == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);  // UTF-8 byte order mark
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (joined.empty()) statement_line = number;
@@ -388,14 +462,19 @@ std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name
     } else {
       reader.read_line(line, number);
     }
-    if (last) break;
   }
   if (!joined.empty()) reader.read_line(joined, statement_line);
-  if (in.bad()) fail(ErrorKind::Io, source_name, {}, "cannot read: the stream failed", "check the file");
-  return reader.finish();
+  if (lines.failed()) fail(ErrorKind::Io, source_name, {}, "cannot read: the stream failed", "check the file");
+  reader.finish();
 }
 
-std::vector<ObjObject> read_obj_file(const std::filesystem::path& path, const ObjLimits& limits) {
+std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits) {
+  std::vector<ObjObject> objects;
+  read_obj(in, source_name, limits, [&](const ObjObject& o) { objects.push_back(o); });
+  return objects;
+}
+
+void read_obj_file(const std::filesystem::path& path, const ObjLimits& limits, const ObjObjectSink& each) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
@@ -407,7 +486,13 @@ std::vector<ObjObject> read_obj_file(const std::filesystem::path& path, const Ob
     fail(ErrorKind::Io, path.string(), {}, std::string("cannot open: ") + std::strerror(err),
          "check the path and the file's permissions");
   }
-  return read_obj(in, path.string(), limits);
+  read_obj(in, path.string(), limits, each);
+}
+
+std::vector<ObjObject> read_obj_file(const std::filesystem::path& path, const ObjLimits& limits) {
+  std::vector<ObjObject> objects;
+  read_obj_file(path, limits, [&](const ObjObject& o) { objects.push_back(o); });
+  return objects;
 }
 
 }  // namespace vern

@@ -2,11 +2,12 @@
 //
 // A labelled OBJ names each part of a building with an `o name` statement
 // (or `g name` in files that have no `o` at all): what the OBJ writer
-// produces and what inference reads. The reader streams the text line by
-// line through a fixed buffer, so a file is never held whole in memory:
-// memory grows with the geometry kept, not with the file's size, and a
-// line longer than kMaxObjLine (binary data, a file without line breaks) is
-// an error rather than a string as long as the file.
+// produces and what inference reads. The reader streams the text in large
+// blocks, so a file is never held whole in memory, and hands each object
+// over as soon as its faces are read: memory grows with the file's
+// vertices (a face may use any vertex before it) and whatever the caller
+// keeps, and a line longer than kMaxObjLine (binary data, a file without
+// line breaks) is an error rather than a string as long as the file.
 //
 // Read: v (x y z, extra w or colour values ignored), vt (u [v [w]]), vn,
 // f with corners v, v/vt, v//vn or v/vt/vn, indices from 1 or negative
@@ -17,6 +18,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <istream>
 #include <string>
 #include <vector>
@@ -66,5 +68,12 @@ std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name
 // The same for a file; throws vern::Error (Io) when it is missing, a folder
 // or unreadable.
 std::vector<ObjObject> read_obj_file(const std::filesystem::path& path, const ObjLimits& limits = {});
+
+// Streaming forms: each object, in the same order, is handed to `each` when
+// its last face has been read, in a buffer the next object reuses (copy
+// what you keep). An error may come after some objects were handed over.
+using ObjObjectSink = std::function<void(const ObjObject&)>;
+void read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits, const ObjObjectSink& each);
+void read_obj_file(const std::filesystem::path& path, const ObjLimits& limits, const ObjObjectSink& each);
 
 }  // namespace vern

@@ -59,15 +59,32 @@ const char* operator_text(BinaryOp op) {
   return "?";
 }
 
+Expr::Expr(const Expr& other)
+    : single_(other.single_), many_(other.many_ ? std::make_unique<Many>(*other.many_) : nullptr) {}
+
+Expr& Expr::operator=(const Expr& other) {
+  if (this != &other) *this = Expr(other);
+  return *this;
+}
+
 void Expr::push(ExprNode n, SourceLoc loc) {
-  nodes_.push_back(n);
-  locs_.push_back(loc);
+  if (empty() && !loc.known()) {
+    single_ = n;
+    return;
+  }
+  if (!many_) many_ = std::make_unique<Many>();
+  if (is_single()) {
+    many_->nodes.push_back(single_);
+    many_->locs.push_back({});
+    single_.size = 0;
+  }
+  many_->nodes.push_back(n);
+  many_->locs.push_back(loc);
 }
 
 void Expr::append(const Expr& child) {
-  nodes_.insert(nodes_.end(), child.nodes_.begin(), child.nodes_.end());
-  locs_.insert(locs_.end(), child.locs_.begin(), child.locs_.end());
-  locs_.resize(nodes_.size());
+  const std::span<const ExprNode> added = child.nodes();
+  for (std::size_t i = 0; i < added.size(); ++i) push(added[i], child.loc(i));
 }
 
 Expr Expr::number(double v, SourceLoc loc) {
@@ -97,13 +114,19 @@ Expr Expr::param(std::uint32_t index, SourceLoc loc) {
 Expr Expr::unary(UnaryOp op, Expr operand, SourceLoc loc) {
   // "-2" has one form, the literal -2, whether it was read or built: the
   // writer prints both the same way, so both must be the same tree.
-  if (op == UnaryOp::Neg && operand.nodes_.size() == 1 && operand.nodes_[0].kind == ExprKind::Number) {
-    operand.nodes_[0].number = -operand.nodes_[0].number;
-    if (loc.known()) operand.locs_[0] = loc;
+  if (op == UnaryOp::Neg && operand.nodes().size() == 1 && operand.node(0).kind == ExprKind::Number) {
+    const double negated = -operand.node(0).number;
+    if (operand.is_single()) operand.single_.number = negated;
+    else operand.many_->nodes[0].number = negated;
+    if (loc.known()) {
+      Expr e;
+      e.push({.kind = ExprKind::Number, .number = negated}, loc);
+      return e;
+    }
     return operand;
   }
   Expr e = std::move(operand);
-  auto size = static_cast<std::uint32_t>(e.nodes_.size() + 1);
+  auto size = static_cast<std::uint32_t>(e.nodes().size() + 1);
   e.push({.kind = ExprKind::Unary, .op = static_cast<std::uint8_t>(op), .argc = 1, .size = size}, loc);
   return e;
 }
@@ -111,7 +134,7 @@ Expr Expr::unary(UnaryOp op, Expr operand, SourceLoc loc) {
 Expr Expr::binary(BinaryOp op, Expr lhs, Expr rhs, SourceLoc loc) {
   Expr e = std::move(lhs);
   e.append(rhs);
-  auto size = static_cast<std::uint32_t>(e.nodes_.size() + 1);
+  auto size = static_cast<std::uint32_t>(e.nodes().size() + 1);
   e.push({.kind = ExprKind::Binary, .op = static_cast<std::uint8_t>(op), .argc = 2, .size = size}, loc);
   return e;
 }
@@ -119,7 +142,7 @@ Expr Expr::binary(BinaryOp op, Expr lhs, Expr rhs, SourceLoc loc) {
 Expr Expr::call(Function f, std::vector<Expr> args, SourceLoc loc) {
   Expr e;
   for (const auto& a : args) e.append(a);
-  auto size = static_cast<std::uint32_t>(e.nodes_.size() + 1);
+  auto size = static_cast<std::uint32_t>(e.nodes().size() + 1);
   e.push({.kind = ExprKind::Call,
           .op = static_cast<std::uint8_t>(f),
           .argc = static_cast<std::uint16_t>(args.size()),
@@ -129,43 +152,43 @@ Expr Expr::call(Function f, std::vector<Expr> args, SourceLoc loc) {
 }
 
 std::size_t Expr::children(std::size_t i, std::size_t* roots, std::size_t capacity) const {
-  const std::size_t n = nodes_[i].argc;
+  const std::size_t n = nodes()[i].argc;
   // Walk back from the last child, skipping each child's subtree.
   std::size_t at = i;
   for (std::size_t k = n; k-- > 0;) {
     const std::size_t child = at - 1;
     if (k < capacity) roots[k] = child;
-    at = child + 1 - nodes_[child].size;
+    at = child + 1 - nodes()[child].size;
   }
   return n;
 }
 
 std::vector<std::size_t> Expr::children(std::size_t i) const {
-  std::vector<std::size_t> roots(nodes_[i].argc);
+  std::vector<std::size_t> roots(nodes()[i].argc);
   children(i, roots.data(), roots.size());
   return roots;
 }
 
 std::optional<double> Expr::literal() const {
   if (empty()) return std::nullopt;
-  const auto& r = nodes_.back();
+  const auto& r = nodes().back();
   if (r.kind == ExprKind::Number) return r.number;
   return std::nullopt;
 }
 
 bool Expr::draws_random() const {
-  return std::any_of(nodes_.begin(), nodes_.end(), [](const ExprNode& n) {
+  return std::ranges::any_of(nodes(), [](const ExprNode& n) {
     return n.kind == ExprKind::Call && function_info(static_cast<Function>(n.op)).random;
   });
 }
 
 bool Expr::uses_params() const {
-  return std::any_of(nodes_.begin(), nodes_.end(), [](const ExprNode& n) { return n.kind == ExprKind::Param; });
+  return std::ranges::any_of(nodes(), [](const ExprNode& n) { return n.kind == ExprKind::Param; });
 }
 
 std::size_t Expr::hash() const {
-  std::size_t h = nodes_.size();
-  for (const auto& n : nodes_) {
+  std::size_t h = nodes().size();
+  for (const auto& n : nodes()) {
     h = hash_combine(h, static_cast<std::size_t>(n.kind) | (std::size_t{n.op} << 8) | (std::size_t{n.argc} << 16));
     h = hash_combine(h, n.index);
     h = hash_combine(h, std::hash<double>{}(n.number));

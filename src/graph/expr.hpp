@@ -4,7 +4,11 @@
 // right before it, and each node records the size of its subtree, so the
 // root is the last node and the whole tree lives in one allocation. That
 // makes an Expr cheap to copy, hash and compare (the inverse pipeline
-// hash-conses graphs full of them) and quick to evaluate.
+// hash-conses graphs full of them) and quick to evaluate. An Expr of one
+// node without a source location, what inference builds most (a number,
+// an axis), holds it inline and allocates nothing: an inferred graph holds
+// millions of plain numbers, and every node of the graph's arena has room
+// for several Exprs, so an Expr is kept to 32 bytes.
 //
 // Names are resolved when an Expr is built: a parameter is the slot of the
 // enclosing rule's parameter list, a constant the index of the grammar's
@@ -12,8 +16,10 @@
 // part in equality or hashing.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -65,6 +71,10 @@ struct ExprNode {
 class Expr {
  public:
   Expr() = default;  // the empty expression: "not given"
+  Expr(const Expr& other);
+  Expr& operator=(const Expr& other);
+  Expr(Expr&&) noexcept = default;
+  Expr& operator=(Expr&&) noexcept = default;
 
   static Expr number(double v, SourceLoc loc = {});
   static Expr axis(Axis a, SourceLoc loc = {});
@@ -74,11 +84,15 @@ class Expr {
   static Expr binary(BinaryOp op, Expr lhs, Expr rhs, SourceLoc loc = {});
   static Expr call(Function f, std::vector<Expr> args, SourceLoc loc = {});
 
-  bool empty() const { return nodes_.empty(); }
-  std::size_t root() const { return nodes_.size() - 1; }
-  const std::vector<ExprNode>& nodes() const { return nodes_; }
-  const ExprNode& node(std::size_t i) const { return nodes_[i]; }
-  SourceLoc loc(std::size_t i) const { return i < locs_.size() ? locs_[i] : SourceLoc{}; }
+  bool empty() const { return !is_single() && !many_; }
+  std::size_t root() const { return nodes().size() - 1; }
+  std::span<const ExprNode> nodes() const {
+    if (is_single()) return {&single_, 1};
+    if (many_) return many_->nodes;
+    return {};
+  }
+  const ExprNode& node(std::size_t i) const { return nodes()[i]; }
+  SourceLoc loc(std::size_t i) const { return many_ && i < many_->locs.size() ? many_->locs[i] : SourceLoc{}; }
   SourceLoc loc() const { return empty() ? SourceLoc{} : loc(root()); }
 
   // Roots of node i's children, in order (at most argc entries written).
@@ -92,14 +106,21 @@ class Expr {
   bool uses_params() const;
 
   std::size_t hash() const;
-  friend bool operator==(const Expr& a, const Expr& b) { return a.nodes_ == b.nodes_; }
+  friend bool operator==(const Expr& a, const Expr& b) { return std::ranges::equal(a.nodes(), b.nodes()); }
 
  private:
   void append(const Expr& child);
   void push(ExprNode n, SourceLoc loc);
 
-  std::vector<ExprNode> nodes_;
-  std::vector<SourceLoc> locs_;
+  struct Many {
+    std::vector<ExprNode> nodes;
+    std::vector<SourceLoc> locs;  // one per node
+  };
+  // A subtree size of 0 marks single_ unused (a real node counts itself).
+  bool is_single() const { return single_.size != 0; }
+
+  ExprNode single_{.size = 0};  // the one node, inline
+  std::unique_ptr<Many> many_;   // else all nodes, when there are any
 };
 
 // Mixes v into seed (boost-style, 64-bit); shared by every structural hash.

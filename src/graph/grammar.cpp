@@ -1,5 +1,7 @@
 #include "graph/grammar.hpp"
 
+#include <algorithm>
+
 #include "graph/structural.hpp"
 
 namespace vern {
@@ -10,13 +12,29 @@ NodeId Grammar::add(Node node) {
 }
 
 NodeId Grammar::intern(Node node) {
-  const std::size_t h = shallow_hash(node.op);
-  auto [begin, end] = interned_.equal_range(h);
-  for (auto it = begin; it != end; ++it)
-    if (nodes_[it->second].op == node.op) return it->second;
+  if (2 * (interned_count_ + 1) > interned_.size()) grow_intern_table();
+  // Fibonacci hashing: the high bits of the product mix all the hash's bits.
+  const auto h = static_cast<std::uint32_t>((shallow_hash(node.op) * 0x9e3779b97f4a7c15ULL) >> 32);
+  const std::size_t mask = interned_.size() - 1;
+  std::size_t i = h & mask;
+  for (; interned_[i].node != kEmptySlot; i = (i + 1) & mask)
+    if (interned_[i].hash == h && nodes_[interned_[i].node].op == node.op) return interned_[i].node;
   const NodeId id = add(std::move(node));
-  interned_.emplace(h, id);
+  interned_[i] = {h, id};
+  ++interned_count_;
   return id;
+}
+
+void Grammar::grow_intern_table() {
+  std::vector<InternSlot> old(std::max<std::size_t>(64, 2 * interned_.size()));
+  old.swap(interned_);
+  const std::size_t mask = interned_.size() - 1;
+  for (const InternSlot& s : old) {
+    if (s.node == kEmptySlot) continue;
+    std::size_t i = s.hash & mask;
+    while (interned_[i].node != kEmptySlot) i = (i + 1) & mask;
+    interned_[i] = s;
+  }
 }
 
 LabelId Grammar::label_id(std::string_view name) {

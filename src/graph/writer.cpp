@@ -28,12 +28,14 @@ namespace {
 
 class Layout {
  public:
-  void text(std::string s) { pieces_.push_back({Kind::Text, std::move(s)}); }
-  void line() { pieces_.push_back({Kind::Line, {}}); }
-  void open() { pieces_.push_back({Kind::Open, {}}); }
-  void close() { pieces_.push_back({Kind::Close, {}}); }
-  void indent() { pieces_.push_back({Kind::Indent, {}}); }
-  void dedent() { pieces_.push_back({Kind::Dedent, {}}); }
+  // Texts go into one buffer and pieces are small records: a grammar of a
+  // million parts writes tens of millions of pieces.
+  void text(std::string_view s) { add(Kind::Text, s); }
+  void line() { add(Kind::Line); }
+  void open() { add(Kind::Open); }
+  void close() { add(Kind::Close); }
+  void indent() { add(Kind::Indent); }
+  void dedent() { add(Kind::Dedent); }
 
   std::string render(const WriteOptions& options) const {
     std::string out;
@@ -45,8 +47,8 @@ class Layout {
       const Piece& p = pieces_[i];
       switch (p.kind) {
         case Kind::Text:
-          out += p.text;
-          column += columns(p.text);
+          out.append(text_, p.begin, p.size);
+          column += p.columns;
           break;
         case Kind::Line:
           if (flat) {
@@ -79,11 +81,17 @@ class Layout {
   enum class Kind : std::uint8_t { Text, Line, Open, Close, Indent, Dedent };
   struct Piece {
     Kind kind;
-    std::string text;
+    std::uint32_t begin, size;  // a Text's bytes in text_
+    int columns;                // ... and the columns they take
   };
 
+  void add(Kind kind, std::string_view s = {}) {
+    pieces_.push_back({kind, static_cast<std::uint32_t>(text_.size()), static_cast<std::uint32_t>(s.size()), columns(s)});
+    text_.append(s);
+  }
+
   // Columns a text takes: UTF-8 continuation bytes take none.
-  static int columns(const std::string& s) {
+  static int columns(std::string_view s) {
     int n = 0;
     for (const char c : s)
       if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) ++n;
@@ -102,7 +110,7 @@ class Layout {
     for (std::size_t j = start; j < pieces_.size(); ++j) {
       const Piece& p = pieces_[j];
       switch (p.kind) {
-        case Kind::Text: room -= columns(p.text); break;
+        case Kind::Text: room -= p.columns; break;
         case Kind::Line:
           if (level <= 0) return true;
           room -= 1;
@@ -118,6 +126,7 @@ class Layout {
   }
 
   std::vector<Piece> pieces_;
+  std::string text_;
 };
 
 // ---------------------------------------------------------------------------

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <unordered_set>
 #include <utility>
 
 #include <glm/gtc/quaternion.hpp>
@@ -45,16 +46,32 @@ Format format_of(const fs::path& path) {
        "export the building as OBJ (one object per part) or glTF (one named node per part)");
 }
 
-LabelledBox box_of(const std::string& name, std::uint32_t line, const Mesh& mesh, std::size_t index) {
-  LabelledBox b;
-  b.label = strip_numeric_suffix(name);
-  b.min = mesh.min_corner();
-  b.max = mesh.max_corner();
-  b.object = name;
-  b.line = line;
-  b.mesh = static_cast<std::uint32_t>(index);
-  return b;
-}
+// Adds parts to an example: each one's box and positions, and the whole
+// mesh of the first part of each label.
+class PartAdder {
+ public:
+  explicit PartAdder(Example& example) : example_(example) {}
+
+  LabelledBox& add(const std::string& name, std::uint32_t line, const Mesh& mesh) {
+    LabelledBox b;
+    b.label = strip_numeric_suffix(name);
+    b.min = mesh.min_corner();
+    b.max = mesh.max_corner();
+    b.object = name;
+    b.line = line;
+    if (labels_.insert(b.label).second) {
+      b.mesh = static_cast<std::uint32_t>(example_.meshes.size());
+      example_.meshes.push_back(mesh);
+    }
+    example_.positions.add(mesh.positions, b.min, b.max);
+    example_.boxes.push_back(std::move(b));
+    return example_.boxes.back();
+  }
+
+ private:
+  Example& example_;
+  std::unordered_set<std::string> labels_;
+};
 
 std::string too_many_parts_hint(const ExampleLimits& limits) {
   return "raise the limit with --max-parts (now " + std::to_string(limits.max_parts) +
@@ -62,17 +79,23 @@ std::string too_many_parts_hint(const ExampleLimits& limits) {
 }
 
 Example load_obj_example(const fs::path& path, const ExampleLimits& limits) {
-  std::vector<ObjObject> objects = read_obj_file(path, {limits.max_parts, too_many_parts_hint(limits)});
   Example ex;
   ex.source = path.string();
-  for (ObjObject& o : objects) {
+  PartAdder adder(ex);
+  // Objects arrive while the file is read: an unnamed one is reported once
+  // the whole file has been read, so that errors further on come first.
+  std::optional<std::uint32_t> unnamed;
+  read_obj_file(path, {limits.max_parts, too_many_parts_hint(limits)}, [&](const ObjObject& o) {
     if (o.name.empty()) {
-      fail(ErrorKind::Input, ex.source, {o.line, 1},
-           "these faces have no name: inference cannot tell which primitive they are",
-           "start each part with `o <label>` naming its primitive (e.g. `o window.001`)");
+      if (!unnamed) unnamed = o.line;
+    } else if (!unnamed) {
+      adder.add(o.name, o.line, o.mesh);
     }
-    ex.boxes.push_back(box_of(o.name, o.line, o.mesh, ex.meshes.size()));
-    ex.meshes.push_back(std::move(o.mesh));
+  });
+  if (unnamed) {
+    fail(ErrorKind::Input, ex.source, {*unnamed, 1},
+         "these faces have no name: inference cannot tell which primitive they are",
+         "start each part with `o <label>` naming its primitive (e.g. `o window.001`)");
   }
   if (ex.boxes.empty()) {
     fail(ErrorKind::Input, ex.source, {},
@@ -383,6 +406,7 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
 Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits& limits) {
   Example ex;
   ex.source = path.string();
+  PartAdder adder(ex);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skip_image, nullptr);
   tinygltf::Model model;
@@ -467,10 +491,8 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
         fail(ErrorKind::Input, ex.source, {}, part + " has no triangles: its mesh holds only points or lines",
              "export the part as a surface (triangles), or leave it out");
       }
-      LabelledBox box = box_of(name, 0, mesh, ex.meshes.size());
+      LabelledBox& box = adder.add(name, 0, mesh);
       if (instances) box.object = node.name + " (instance " + std::to_string(i) + ")";
-      ex.boxes.push_back(std::move(box));
-      ex.meshes.push_back(std::move(mesh));
     }
   }
   if (ex.boxes.empty()) {

@@ -4,8 +4,10 @@
 // (`o name`), or each named glTF node with a mesh, is one primitive; its
 // label is the name with a Blender-style numeric suffix removed, so
 // "window.001" and "window.002" are both the primitive "window". Inference
-// works on the axis-aligned bounding box of each part; the meshes are kept
-// for whatever needs the shapes themselves.
+// works on the axis-aligned bounding box of each part. Matching turns
+// (orientation.hpp) needs every part's vertex positions, kept compactly,
+// and the whole mesh of the first part of each label, its canonical mesh:
+// only those meshes are kept, so that a million parts fit in little memory.
 //
 // Coordinates stay as the file has them (world space). "Each example is
 // placed at its own origin": callers translate by -min.
@@ -20,6 +22,7 @@
 #include <glm/glm.hpp>
 
 #include "forward/mesh.hpp"
+#include "inverse/part_positions.hpp"
 
 namespace vern {
 
@@ -29,13 +32,16 @@ struct LabelledBox {
   glm::dvec3 min{0.0}, max{0.0};
   std::string object;  // the name as written in the file, for messages
   std::uint32_t line = 0;  // OBJ: the line of its `o` statement; glTF: 0
-  std::uint32_t mesh = 0;  // index into Example::meshes
+  // Index into Example::meshes when this part is the first of its label
+  // in the example, else Mesh::kNone.
+  std::uint32_t mesh = Mesh::kNone;
 };
 
 struct Example {
   std::string source;  // the file, as named to load_example
   std::vector<LabelledBox> boxes;  // in file order
-  std::vector<Mesh> meshes;        // world-space mesh of each box, same order
+  std::vector<Mesh> meshes;        // world-space mesh of each label's first box, in file order
+  PartPositions positions;         // world-space vertex positions of each box, same order (empty: none known)
   glm::dvec3 min{0.0}, max{0.0};   // bounds of all boxes
 };
 

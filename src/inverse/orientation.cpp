@@ -58,9 +58,9 @@ Expr quarter_angle(int quarters) {
 
 }  // namespace
 
-std::optional<Orientation> find_orientation(const Mesh& canonical, const Mesh& placed, glm::dvec3 box_min,
-                                            glm::dvec3 box_max, double tolerance) {
-  std::vector<glm::dvec3> target = placed.positions;
+std::optional<Orientation> find_orientation(const Mesh& canonical, const std::vector<glm::dvec3>& placed,
+                                            glm::dvec3 box_min, glm::dvec3 box_max, double tolerance) {
+  std::vector<glm::dvec3> target = placed;
   std::sort(target.begin(), target.end(), before);
   Scope box;
   box.origin = box_min;
@@ -73,7 +73,7 @@ std::optional<Orientation> find_orientation(const Mesh& canonical, const Mesh& p
     if (!covered(moved, target, tolerance)) continue;
     std::vector<glm::dvec3> sorted = moved;
     std::sort(sorted.begin(), sorted.end(), before);
-    if (covered(placed.positions, sorted, tolerance)) return turns;
+    if (covered(placed, sorted, tolerance)) return turns;
   }
   return std::nullopt;
 }
@@ -99,26 +99,28 @@ PartOrientations orient_parts(const std::vector<Example>& examples, const Primit
                               double tolerance) {
   PartOrientations out;
   out.turns.resize(examples.size());
+  std::vector<glm::dvec3> positions;
   for (std::size_t e = 0; e < examples.size(); ++e) {
     const Example& ex = examples[e];
     out.turns[e].resize(ex.boxes.size());
-    for (std::size_t b = 0; b < ex.boxes.size(); ++b) {
+    for (std::size_t b = 0; b < ex.boxes.size() && b < ex.positions.size(); ++b) {
       const LabelledBox& box = ex.boxes[b];
-      if (box.mesh >= ex.meshes.size()) continue;
-      const Mesh& mesh = ex.meshes[box.mesh];
+      ex.positions.get(b, box.min, box.max, positions);
       const double tol = vertex_tolerance(box, tolerance);
       const Mesh* canonical = out.canonical.find(box.label);
       if (canonical == nullptr) {
-        // The first part of this label decides its canonical mesh.
+        // The first part of this label decides its canonical mesh (kept
+        // whole: the first of its label in its example).
+        const Mesh& mesh = ex.meshes.at(box.mesh);
         const Mesh* known = library.find(box.label);
-        if (known != nullptr && find_orientation(*known, mesh, box.min, box.max, tol)) {
+        if (known != nullptr && find_orientation(*known, positions, box.min, box.max, tol)) {
           out.canonical.add(box.label, *known);
         } else {
           out.canonical.add(box.label, normalised_primitive(mesh));
         }
         canonical = out.canonical.find(box.label);
       }
-      if (auto turns = find_orientation(*canonical, mesh, box.min, box.max, tol)) {
+      if (auto turns = find_orientation(*canonical, positions, box.min, box.max, tol)) {
         out.turns[e][b] = std::move(*turns);
       } else {
         ++out.unmatched;

@@ -32,11 +32,11 @@ struct QuarterTurn {
 using Orientation = std::vector<QuarterTurn>;
 
 // The turns under which `canonical` (a mesh in the unit box) placed in the
-// box [box_min, box_max] has the same vertex positions as `placed` (world
-// space), each within `tolerance`; nullopt when no turn fits (another
-// shape under the same label).
-std::optional<Orientation> find_orientation(const Mesh& canonical, const Mesh& placed, glm::dvec3 box_min,
-                                            glm::dvec3 box_max, double tolerance);
+// box [box_min, box_max] has the same vertex positions as `placed` (a
+// part's, world space), each within `tolerance`; nullopt when no turn fits
+// (another shape under the same label).
+std::optional<Orientation> find_orientation(const Mesh& canonical, const std::vector<glm::dvec3>& placed,
+                                            glm::dvec3 box_min, glm::dvec3 box_max, double tolerance);
 
 // I(label) inside R nodes for `turns`, interned in g; angles written as
 // multiples of pi ("pi / 2", "pi", "3 * pi / 2").
