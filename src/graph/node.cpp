@@ -42,24 +42,7 @@ const char* operation_name(const Operation& op) {
 
 std::vector<NodeId> node_children(const Operation& op) {
   std::vector<NodeId> out;
-  std::visit(Overload{
-                 [&](const Split& s) {
-                   for (const auto& p : s.parts) out.push_back(p.child);
-                 },
-                 [&](const Repeat& r) { out.push_back(r.child); },
-                 [&](const RepeatN& r) { out.push_back(r.child); },
-                 [&](const Choose& c) {
-                   for (const auto& o : c.options) out.push_back(o.child);
-                 },
-                 [&](const Translate& t) { out.push_back(t.child); },
-                 [&](const Scale& s) { out.push_back(s.child); },
-                 [&](const Rotate& r) { out.push_back(r.child); },
-                 [&](const Comp& c) {
-                   for (const auto& p : c.parts) out.push_back(p.child);
-                 },
-                 [](const auto&) {},
-             },
-             op);
+  for_each_child(op, [&](NodeId c) { out.push_back(c); });
   return out;
 }
 

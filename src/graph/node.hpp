@@ -146,6 +146,29 @@ struct Node {
   SourceLoc loc;
 };
 
+// Calls f(child) for each of the node's children in order, allocating
+// nothing: for traversals that visit every node of a large graph.
+template <class F>
+void for_each_child(const Operation& op, F f) {
+  if (const auto* s = std::get_if<Split>(&op)) {
+    for (const auto& p : s->parts) f(p.child);
+  } else if (const auto* c = std::get_if<Choose>(&op)) {
+    for (const auto& o : c->options) f(o.child);
+  } else if (const auto* r = std::get_if<Repeat>(&op)) {
+    f(r->child);
+  } else if (const auto* n = std::get_if<RepeatN>(&op)) {
+    f(n->child);
+  } else if (const auto* t = std::get_if<Translate>(&op)) {
+    f(t->child);
+  } else if (const auto* z = std::get_if<Scale>(&op)) {
+    f(z->child);
+  } else if (const auto* o = std::get_if<Rotate>(&op)) {
+    f(o->child);
+  } else if (const auto* m = std::get_if<Comp>(&op)) {
+    for (const auto& p : m->parts) f(p.child);
+  }
+}
+
 // The node's children in order (split parts, choose options, ...).
 std::vector<NodeId> node_children(const Operation& op);
 

@@ -56,7 +56,7 @@ std::vector<double> example_counts(const Grammar& g, const std::vector<NodeId>& 
       if (seen_in[id] == e + 1) continue;
       seen_in[id] = e + 1;
       counts[id] += 1;
-      for (const NodeId c : node_children(g.op(id))) stack.push_back(c);
+      for_each_child(g.op(id), [&](NodeId c) { stack.push_back(c); });
     }
   }
   return counts;
@@ -87,7 +87,7 @@ class Unifier {
     collect(root, seen, order);
     std::vector<std::uint32_t> height(g_.node_count(), 0);
     for (NodeId id : order)
-      for (NodeId c : node_children(g_.op(id))) height[id] = std::max(height[id], height[c] + 1);
+      for_each_child(g_.op(id), [&](NodeId c) { height[id] = std::max(height[id], height[c] + 1); });
     std::stable_sort(order.begin(), order.end(), [&](NodeId a, NodeId b) { return height[a] < height[b]; });
     for (std::size_t i = 0; i < order.size();) {
       std::size_t j = i;
@@ -171,7 +171,7 @@ class Unifier {
   void collect(NodeId id, std::vector<bool>& seen, std::vector<NodeId>& order) const {
     if (seen[id]) return;
     seen[id] = true;
-    for (NodeId c : node_children(g_.op(id))) collect(c, seen, order);
+    for_each_child(g_.op(id), [&](NodeId c) { collect(c, seen, order); });
     order.push_back(id);
   }
 
@@ -195,7 +195,7 @@ class Unifier {
       const NodeId id = *at;
       const Operation& op = g_.op(id);
       std::vector<std::size_t> children;
-      for (NodeId c : node_children(op)) children.push_back(group_of_[c]);
+      for_each_child(op, [&](NodeId c) { children.push_back(group_of_[c]); });
       if (const auto* c = std::get_if<Choose>(&op); c && plain(*c)) {
         visit_choose(id, *c, children);
         continue;

@@ -217,12 +217,12 @@ class Folder {
     if (const auto it = labels_.find(id); it != labels_.end()) return it->second;
     std::vector<LabelId> out;
     if (const auto* p = std::get_if<Primitive>(&g_.op(id))) out.push_back(p->label);
-    for (NodeId c : node_children(g_.op(id))) {
+    for_each_child(g_.op(id), [&](NodeId c) {
       const std::vector<LabelId>& below = labels_below(c);
       std::vector<LabelId> both;
       std::set_union(out.begin(), out.end(), below.begin(), below.end(), std::back_inserter(both));
       out = std::move(both);
-    }
+    });
     return labels_[id] = std::move(out);
   }
 

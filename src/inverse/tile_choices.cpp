@@ -151,7 +151,7 @@ class Uniter {
   void collect(NodeId id) {
     if (seen_[id]) return;
     seen_[id] = true;
-    for (NodeId c : node_children(g_.op(id))) collect(c);
+    for_each_child(g_.op(id), [&](NodeId c) { collect(c); });
     const auto* r = std::get_if<Repeat>(&g_.op(id));
     const auto axis = r ? literal_axis(r->axis) : std::nullopt;
     const auto tile = r ? literal_range(r->size) : std::nullopt;

@@ -28,7 +28,7 @@ TileLengths::TileLengths(const Grammar& g, NodeId root) {
     const Operation& op = g.op(id);
     if (const auto* r = std::get_if<Repeat>(&op))
       if (const auto axis = axis_of(*r); axis && literal_range(r->size)) lengths[*axis].push_back(*literal_range(r->size));
-    for (NodeId c : node_children(op)) stack.push_back(c);
+    for_each_child(op, [&](NodeId c) { stack.push_back(c); });
   }
   for (std::size_t a = 0; a < 3; ++a) {
     std::sort(lengths[a].begin(), lengths[a].end(), [](const Range& x, const Range& y) { return x.lo < y.lo; });
