@@ -25,6 +25,11 @@ NodeId Grammar::intern(Node node) {
   return id;
 }
 
+void Grammar::reserve(std::size_t nodes) {
+  nodes_.reserve(nodes);
+  while (interned_.size() < 2 * nodes) grow_intern_table();
+}
+
 void Grammar::grow_intern_table() {
   std::vector<InternSlot> old(std::max<std::size_t>(64, 2 * interned_.size()));
   old.swap(interned_);

@@ -47,6 +47,11 @@ class Grammar {
   std::vector<Constant> constants;
   std::vector<Rule> rules;
 
+  // Room for this many nodes without moving the arena: a large graph built
+  // in one go (inference) then neither copies its nodes as the arena grows
+  // nor holds two arenas at once. Only address space until nodes arrive.
+  void reserve(std::size_t nodes);
+
   // Appends a node; no sharing (each keeps its own source location).
   NodeId add(Node node);
   // Returns an existing node equal to this one (same operation, same child

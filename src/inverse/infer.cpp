@@ -12,6 +12,7 @@
 
 namespace vern {
 
+
 Inference infer(const std::vector<Example>& examples, const InferOptions& options) {
   if (examples.empty()) throw Error(ErrorKind::Usage, "infer: error: no examples given");
   Inference out;
@@ -36,6 +37,11 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
         if (options.progress) options.progress(done, examples.size());
       });
   Grammar graph;
+  // About 1.4 graph nodes per part for large examples (1.36 measured at a
+  // million parts, through tidying): room for one and a half.
+  std::size_t parts = 0;
+  for (const auto& e : examples) parts += e.boxes.size();
+  graph.reserve(parts + parts / 2);
   std::vector<NodeId> roots;
   for (std::size_t i = 0; i < examples.size(); ++i) {
     roots.push_back(split_graph(graph, trees[i], examples[i].boxes, examples[i].source, oriented.turns[i],
