@@ -33,11 +33,12 @@ std::string row(double w, const std::string& a, const std::string& b, const std:
 // The repeat a merged example is (through a choose of one example's form).
 const Repeat& repeat_at(const Grammar& g, NodeId id) { return std::get<Repeat>(g.op(id)); }
 
-// The labels' alternatives of a tile's choice, written, in order.
+// What a repeat's tile holds, written with its weights, in order.
 std::vector<std::string> alternatives(const Grammar& g, const Repeat& r) {
   std::vector<std::string> out;
   if (const auto* c = std::get_if<Choose>(&g.op(r.child))) {
-    for (const auto& o : c->options) out.push_back(write_operation(g, o.child, {}) + " : " + std::to_string(int(*o.priority.literal())));
+    for (const auto& o : c->options)
+      out.push_back(write_operation(g, o.child, {}) + " : " + std::to_string(int(*o.priority.literal())));
   } else {
     out.push_back(write_operation(g, r.child, {}));
   }

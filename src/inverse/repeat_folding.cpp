@@ -4,8 +4,8 @@
 #include <cmath>
 #include <iterator>
 #include <map>
-#include <unordered_map>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "graph/structural.hpp"
@@ -272,7 +272,8 @@ class Folder {
       }
       // Else equal tiles of unlike contents, over the whole split or all
       // but one or two end parts (the most parts first).
-      for (std::size_t outside = 0; unlike_ == UnlikeTiles::Fold && !folded && outside <= 2 && outside + 3 <= parts.size(); ++outside) {
+      const bool unlike = unlike_ == UnlikeTiles::Fold;
+      for (std::size_t outside = 0; unlike && !folded && outside <= 2 && outside + 3 <= parts.size(); ++outside) {
         for (std::size_t head = 0; head <= outside && !folded; ++head) {
           const std::size_t from = head, to = parts.size() - (outside - head);
           if (auto part = fold_unlike(s.axis, parts, from, to)) {

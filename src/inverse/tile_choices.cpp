@@ -103,7 +103,8 @@ class Uniter {
       }
       if (options.size() < 2) continue;
       Choose choose;
-      for (const auto& [alternative, weight] : options) choose.options.push_back({Expr{}, Expr::number(weight), alternative});
+      for (const auto& [alternative, weight] : options)
+        choose.options.push_back({Expr{}, Expr::number(weight), alternative});
       united[c] = g_.intern({std::move(choose), {}});
     }
     // Each repeat with its slots' choices united.
