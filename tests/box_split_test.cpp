@@ -204,6 +204,32 @@ TEST(BoxSplit, ARowOfBuildingsIsCutIntoBuildingsBeforeTheAirAboveIt) {
   }
 }
 
+TEST(BoxSplit, ATieredTowerIsCutAsTiersStandingOnTiers) {
+  // Three tiers, each inset in the one below: cut at the lowest tier only,
+  // then the air round the rest peeled (x, y), then the next tier, so each
+  // tier is nested in the one it stands on (not three slabs of the whole
+  // footprint, each with its own inset).
+  const SplitTree t = split({part("rect", {0, 0, 0}, {10, 10, 3}, 0), part("rect", {1, 1, 3}, {9, 9, 6}, 1),
+                             part("rect", {2, 2, 6}, {8, 8, 9}, 2)});
+  ASSERT_TRUE(cut_along(t, 2, 2));
+  EXPECT_EQ(t.children[0].box, 0u);
+  const SplitTree& rest = t.children[1];
+  ASSERT_TRUE(cut_along(rest, 0, 3));
+  ASSERT_TRUE(cut_along(rest.children[1], 1, 3));
+  const SplitTree& second = rest.children[1].children[1];
+  ASSERT_TRUE(cut_along(second, 2, 2));
+  EXPECT_EQ(second.children[0].box, 1u);
+  EXPECT_EQ(leaves(second.children[1]), std::vector<std::uint32_t>{2});
+}
+
+TEST(BoxSplit, StoreysOfOneFootprintOnAWiderSlabStayOneStack) {
+  // A house on its base slab: the storeys narrow once (onto the slab),
+  // not again, so the stack is cut at every storey, as before.
+  const SplitTree t = split({part("rect", {0, 0, 0}, {10, 10, 1}, 0), part("rect", {1, 1, 1}, {9, 9, 4}, 1),
+                             part("rect", {1, 1, 4}, {9, 9, 7}, 2), part("rect", {1, 1, 7}, {9, 9, 10}, 3)});
+  ASSERT_TRUE(cut_along(t, 2, 4));
+}
+
 TEST(BoxSplit, ABlockIsCutIntoPlotsBeforeSlicingItUnderATowersUpperStorey) {
   // In a strip cut off along y, a low building beside a tower whose upper
   // storey (on a smaller footprint) starts above the low building's roof:

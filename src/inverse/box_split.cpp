@@ -111,6 +111,9 @@ struct Work {
   std::array<double, 3> lo_val{}, hi_val{};
   std::array<int, 3> axes{0, 1, 2};  // the axes to try, in order
   int tries = 3;                     // how many of them
+  // The upper storeys of a stack that narrows upwards: the empty space
+  // round them is peeled (x, y) before anything else (see narrowing_stack).
+  bool peel_first = false;
 };
 
 std::string amount(double v) {
@@ -312,12 +315,25 @@ class Splitter {
     // is cut into buildings and each building keeps its own air, as a
     // person would model it, and rows of different heights share one
     // structure.
+    if (w.peel_first) {
+      for (int a = 0; a < 2; ++a) {
+        if (w.lo[static_cast<std::size_t>(a)] == w.hi[static_cast<std::size_t>(a)]) continue;
+        if (find_pieces(w, a) && pieces_.size() == 1) {
+          cut_along(w, a, Peel::KeepPeeling);
+          return;
+        }
+      }
+    }
     int peel = -1;
     for (int i = 0; i < w.tries; ++i) {
       const int a = w.axes[static_cast<std::size_t>(i)];
       if (w.lo[static_cast<std::size_t>(a)] == w.hi[static_cast<std::size_t>(a)]) continue;  // flat along a
       if (!find_pieces(w, a)) continue;
       if (pieces_.size() > 1) {
+        if (a == 2 && narrowing_stack(w)) {
+          cut_along(w, a, Peel::Upper);
+          return;
+        }
         cut_along(w, a);
         return;
       }
@@ -329,6 +345,60 @@ class Splitter {
       return;
     }
     unsplittable(w);
+  }
+
+  // A stack that narrows upwards twice over (a tiered tower: each tier
+  // within the footprint of the one below, the second tier and the rest
+  // both leaving empty space round them) is cut at its lowest storey only:
+  // the rest is one piece, whose empty space is peeled before it is cut
+  // again, and so on up. Each tier then stands on the one below, inset in
+  // it, as a person models a tiered tower (tiered(n) --> split(z){ rect |
+  // inset(tiered(n - 1)) }), and merging sees one structure nested, not a
+  // slab per tier each inset on its own in the whole footprint, which
+  // varies into tiers wider than the ones they stand on (the thesis's
+  // floating tiers, figure 12.10). Storeys of one footprint on a wider
+  // base (a house on its slab) stay a plain stack: they narrow once.
+  // Joins pieces_[1..] into one when it applies.
+  bool narrowing_stack(const Work& w) {
+    if (pieces_.size() < 3) return false;
+    // The x, y rank extents of the lowest piece, the second, and the rest.
+    constexpr Rank kMax = std::numeric_limits<Rank>::max();
+    using Extent = std::array<std::array<Rank, 2>, 2>;
+    std::array<Extent, 3> ext;
+    for (Extent& e : ext) e = {{{kMax, 0}, {kMax, 0}}};
+    const Event* events = events_[2].data();
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const Event e = events[i];
+      if ((e & 1u) == 0) continue;
+      const std::uint32_t b = e >> 1;
+      Extent& x = ext[std::min<std::uint32_t>(target_[span_of_[b]], 2)];
+      for (std::size_t a = 0; a < 2; ++a) {
+        x[a][0] = std::min(x[a][0], lo_[a][b]);
+        x[a][1] = std::max(x[a][1], hi_[a][b]);
+      }
+    }
+    // inner stands within outer, and strictly inside within's bounds somewhere.
+    auto inset = [](const Extent& inner, const Extent& outer, const std::array<Rank, 3>& lo,
+                    const std::array<Rank, 3>& hi) {
+      bool strictly = false;
+      for (std::size_t a = 0; a < 2; ++a) {
+        if (inner[a][0] < outer[a][0] || inner[a][1] > outer[a][1]) return false;
+        strictly = strictly || inner[a][0] > lo[a] || inner[a][1] < hi[a];
+      }
+      return strictly;
+    };
+    Extent upper = ext[1];
+    for (std::size_t a = 0; a < 2; ++a) {
+      upper[a][0] = std::min(upper[a][0], ext[2][a][0]);
+      upper[a][1] = std::max(upper[a][1], ext[2][a][1]);
+    }
+    const std::array<Rank, 3> second_lo{ext[1][0][0], ext[1][1][0], 0}, second_hi{ext[1][0][1], ext[1][1][1], 0};
+    if (!inset(upper, ext[0], w.lo, w.hi) || !inset(ext[2], ext[1], second_lo, second_hi)) return false;
+    for (std::size_t p = 2; p < pieces_.size(); ++p) pieces_[1].absorb(pieces_[p]);
+    pieces_.resize(2);
+    compound_.assign(2, false);
+    for (std::uint32_t& t : target_) t = std::min<std::uint32_t>(t, 1);
+    return true;
   }
 
   // The axes a piece of a cut along a tries: not a again (it was swept),
@@ -443,8 +513,11 @@ class Splitter {
     for (std::uint32_t& t : target_) t = into[t];
   }
 
+  // Which pieces of a cut peel their empty space first (Work::peel_first).
+  enum class Peel { None, Upper, KeepPeeling };
+
   // Cuts the container into the pieces find_pieces(w, a) found last.
-  void cut_along(const Work& w, int a) {
+  void cut_along(const Work& w, int a, Peel peel = Peel::None) {
     const auto ax = static_cast<std::size_t>(a);
     const std::uint32_t begin = w.begin, end = w.end;
     const std::uint32_t* span_of = span_of_.data();
@@ -532,6 +605,7 @@ class Splitter {
       child.hi_val[ax] = piece.hi_val;
       child.axes = axes_after(a);
       child.tries = compound_[p] ? 3 : 2;  // a run of touching pieces is cut along a again, last
+      child.peel_first = peel == Peel::KeepPeeling || (peel == Peel::Upper && p == 1);
       stack_.push_back(child);
       previous = piece.hi;
       previous_val = piece.hi_val;
