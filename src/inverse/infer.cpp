@@ -58,6 +58,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   double smallest = out.tolerance;
   for (const auto& e : examples) smallest = std::min(smallest, options.tolerance > 0 ? options.tolerance : default_tolerance(e));
   root = tidy_numbers(graph, root, smallest / 4);
+  for (Rule& rule : graph.rules) rule.body = tidy_numbers(graph, rule.body, smallest / 4);
   out.grammar = rules_for(graph, root, NamingOptions{options.start});
 
   // @scope: each axis's size, or the range the examples span.

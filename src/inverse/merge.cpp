@@ -5,6 +5,7 @@
 #include "inverse/repeat_folding.hpp"
 #include "inverse/sample_book.hpp"
 #include "inverse/size_clusters.hpp"
+#include "inverse/self_nesting.hpp"
 #include "inverse/settle_repeats.hpp"
 #include "inverse/size_plan.hpp"
 #include "inverse/tile_choices.hpp"
@@ -673,9 +674,23 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
     if (!changed && united.replaced.empty()) break;
     merged = Unifier(g, options, book, tile_counts, counts).run(merged);
   }
+  // Towers of every tier count become one recursive rule, so their
+  // frames unify again.
+  const SelfNesting nesting = fold_self_nesting(g, merged, book, options.tolerance);
+  if (nesting.rules > 0) {
+    carry_notes(nesting.rebuilt, book, tile_counts);
+    merged = Unifier(g, options, book, tile_counts, counts).run(nesting.root);
+  }
+  // The recursive rules' bodies are reached through calls, not children:
+  // each is settled, fitted and simplified like the root.
   merged = settle_repeats(g, merged, tile_counts, book, options.tolerance);
-  merged = Fitter(g, options, book).run(merged);
-  return Simplifier(g, options).run(merged);
+  for (Rule& rule : g.rules) rule.body = settle_repeats(g, rule.body, tile_counts, book, options.tolerance);
+  Fitter fitter(g, options, book);
+  merged = fitter.run(merged);
+  for (Rule& rule : g.rules) rule.body = fitter.run(rule.body);
+  Simplifier simplifier(g, options);
+  for (Rule& rule : g.rules) rule.body = simplifier.run(rule.body);
+  return simplifier.run(merged);
 }
 
 }  // namespace vern

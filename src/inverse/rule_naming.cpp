@@ -37,6 +37,9 @@ class RuleMaker {
  private:
   void count_uses(NodeId id) {
     if (uses_[id]++ > 0) return;
+    // A recursive rule inference made (self_nesting.hpp): its body is
+    // reached through the call.
+    if (const auto* call = std::get_if<Call>(&from_.op(id))) count_uses(from_.rules[call->rule].body);
     for (NodeId child : node_children(from_.op(id))) count_uses(child);
   }
 
@@ -103,12 +106,12 @@ class RuleMaker {
                       from_.op(id));
   }
 
-  std::string name_for(NodeId id) {
+  std::string name_for(NodeId id, const std::string& kind = {}) {
     const std::vector<LabelId> labels = labels_below(id);
     std::string base;
     for (std::size_t i = 0; i < labels.size(); ++i) base += word(from_.label(labels[i]), i == 0);
     if (base.empty() || !std::isalpha(static_cast<unsigned char>(base[0]))) base = "empty" + base;
-    base += suffix(id);
+    base += kind.empty() ? suffix(id) : kind;
     return unique(base);
   }
 
@@ -124,10 +127,11 @@ class RuleMaker {
     return name;
   }
 
-  RuleId rule_for(NodeId id, const std::string& forced_name = {}) {
+  // suffix, where given, names the rule's kind in place of its operation's.
+  RuleId rule_for(NodeId id, const std::string& forced_name = {}, const std::string& suffix = {}) {
     if (rules_[id] != kNone) return rules_[id];
     const auto rule = static_cast<RuleId>(out_.rules.size());
-    out_.rules.push_back({forced_name.empty() ? name_for(id) : unique(forced_name), {}, 0, {}});
+    out_.rules.push_back({forced_name.empty() ? name_for(id, suffix) : unique(forced_name), {}, 0, {}});
     rules_[id] = rule;
     pending_.emplace_back(rule, id);
     return rule;
@@ -136,6 +140,10 @@ class RuleMaker {
   // Copies a node; children that are rules become calls. A leaf is copied
   // once, however often it is used.
   NodeId copy(NodeId id, bool as_body) {
+    if (const auto* call = std::get_if<Call>(&from_.op(id))) {
+      if (!call->args.empty()) throw Error(ErrorKind::Internal, "rules_for: the graph calls a rule with arguments");
+      return out_.intern({Call{rule_for(from_.rules[call->rule].body, "", "Nest"), {}}, {}});
+    }
     if (!as_body && needs_rule(id)) return out_.intern({Call{rule_for(id), {}}, {}});
     if (leaf_copies_[id] != kNone) return leaf_copies_[id];
     Operation op = from_.op(id);
@@ -155,7 +163,6 @@ class RuleMaker {
                    [&](Comp& c) {
                      for (auto& p : c.parts) p.child = copy(p.child, false);
                    },
-                   [&](Call&) { throw Error(ErrorKind::Internal, "rules_for: the graph already calls rules"); },
                    [](auto&) {},
                },
                op);

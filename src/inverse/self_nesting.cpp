@@ -1,0 +1,275 @@
+#include "inverse/self_nesting.hpp"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <unordered_map>
+
+#include "graph/structural.hpp"
+#include "inverse/merge.hpp"
+#include "inverse/substitute.hpp"
+
+namespace vern {
+
+namespace {
+
+// Where the context F holds the rest of the chain.
+constexpr NodeId kHole = static_cast<NodeId>(-2);
+// Longest context looked for: a tier is three splits (z, then x and y
+// round the inset).
+constexpr std::size_t kMaxPeriod = 4;
+// How far down a spine is followed: 64 tiers of a four-split context.
+constexpr std::size_t kMaxSpine = 256;
+
+// One way of reading a node as F applied k times to B.
+struct Reading {
+  std::size_t key = 0;  // which (F, B)
+  std::size_t k = 0;
+};
+
+// F (its p splits, sizes blanked, the hole marked) and B.
+struct Key {
+  std::vector<Operation> context;
+  NodeId base = 0;
+  friend bool operator==(const Key&, const Key&) = default;
+};
+
+class Nester {
+ public:
+  Nester(Grammar& g, SampleBook& book, double tolerance)
+      : g_(g), book_(book), tol_(tolerance), read_(g.node_count(), false), readings_(g.node_count()) {}
+
+  SelfNesting run(NodeId root) {
+    read_all(root);
+    // A key folds only where some example nests F twice over: F[B] alone
+    // is any node, and says nothing about recursion.
+    std::vector<bool> nests(keys_.size(), false);
+    for (const auto& node_readings : readings_)
+      for (const Reading& r : node_readings) nests[r.key] = nests[r.key] || r.k >= 2;
+    std::vector<bool> placed(g_.node_count(), false);
+    place(root, nests, placed);
+    SelfNesting out;
+    std::vector<NodeId> replace(g_.node_count(), kNoReplacement);
+    for (std::size_t key = 0; key < keys_.size(); ++key) {
+      if (occurrences_[key].empty()) continue;
+      const std::optional<NodeId> call = recursive_rule(key);
+      if (!call) continue;
+      ++out.rules;
+      for (const auto& [top, k] : occurrences_[key]) replace[top] = *call;
+    }
+    out.root = out.rules ? substitute(g_, root, replace, &out.rebuilt) : root;
+    return out;
+  }
+
+ private:
+  // The part of a split where its spine goes on: its one child that is a
+  // split, else its one child that is not empty space (the innermost
+  // tier's box, inset in its air), else none.
+  std::optional<std::size_t> spine_part(NodeId id) const {
+    const auto* s = std::get_if<Split>(&g_.op(id));
+    if (!s) return std::nullopt;
+    std::optional<std::size_t> split, solid;
+    std::size_t splits = 0, solids = 0;
+    for (std::size_t i = 0; i < s->parts.size(); ++i) {
+      const Operation& child = g_.op(s->parts[i].child);
+      if (std::holds_alternative<Split>(child)) {
+        split = i;
+        ++splits;
+      }
+      if (!std::holds_alternative<Nil>(child)) {
+        solid = i;
+        ++solids;
+      }
+    }
+    if (splits == 1) return split;
+    if (splits == 0 && solids == 1) return solid;
+    return std::nullopt;
+  }
+
+  // The split with its ranges blanked and its spine child a hole: what
+  // two levels of one context share.
+  Operation shape(NodeId id, std::size_t hole) const {
+    Split s = std::get<Split>(g_.op(id));
+    for (SplitPart& p : s.parts)
+      if (literal_range(p.size.value)) p.size.value = Expr::number(0);
+    s.parts[hole].child = kHole;
+    return s;
+  }
+
+  // The node and the spine below it: spine.size() == shapes.size() + 1.
+  void spine_of(NodeId id, std::vector<NodeId>& spine, std::vector<Operation>& shapes) const {
+    spine.assign(1, id);
+    shapes.clear();
+    while (shapes.size() < kMaxSpine) {
+      const auto part = spine_part(spine.back());
+      if (!part) break;
+      shapes.push_back(shape(spine.back(), *part));
+      spine.push_back(std::get<Split>(g_.op(spine.back())).parts[*part].child);
+    }
+  }
+
+  std::size_t key_id(Key key) {
+    std::size_t h = key.base;
+    for (const Operation& f : key.context) h = h * 1000003u ^ shallow_hash(f);
+    auto& same_hash = key_by_hash_[h];
+    for (std::size_t i : same_hash)
+      if (keys_[i] == key) return i;
+    same_hash.push_back(keys_.size());
+    keys_.push_back(std::move(key));
+    occurrences_.emplace_back();
+    return keys_.size() - 1;
+  }
+
+  // Every reading of every node below root, for each period p: F its
+  // first p levels, k how often they repeat, B the spine node after them.
+  void read_all(NodeId root) {
+    std::vector<NodeId> stack{root}, spine;
+    std::vector<Operation> shapes;
+    while (!stack.empty()) {
+      const NodeId id = stack.back();
+      stack.pop_back();
+      if (read_[id]) continue;
+      read_[id] = true;
+      for_each_child(g_.op(id), [&](NodeId c) { stack.push_back(c); });
+      spine_of(id, spine, shapes);
+      for (std::size_t p = 1; p <= kMaxPeriod && p <= shapes.size(); ++p) {
+        std::size_t k = 1;
+        while ((k + 1) * p <= shapes.size() &&
+               std::equal(shapes.begin(), shapes.begin() + static_cast<std::ptrdiff_t>(p),
+                          shapes.begin() + static_cast<std::ptrdiff_t>(k * p)))
+          ++k;
+        Key key{{shapes.begin(), shapes.begin() + static_cast<std::ptrdiff_t>(p)}, spine[k * p]};
+        readings_[id].push_back({key_id(std::move(key)), k});
+      }
+    }
+  }
+
+  // Top down: a node with a reading of a nesting key is a chain, taken
+  // whole (its deepest reading); below it only what F holds beside the
+  // chain and B are looked at again.
+  void place(NodeId id, const std::vector<bool>& nests, std::vector<bool>& placed) {
+    if (placed[id]) return;
+    placed[id] = true;
+    const Reading* best = nullptr;
+    std::size_t best_depth = 0;
+    for (const Reading& r : readings_[id]) {
+      const std::size_t depth = r.k * keys_[r.key].context.size();
+      if (nests[r.key] && depth > best_depth) {
+        best = &r;
+        best_depth = depth;
+      }
+    }
+    if (!best) {
+      for_each_child(g_.op(id), [&](NodeId c) { place(c, nests, placed); });
+      return;
+    }
+    occurrences_[best->key].emplace_back(id, best->k);
+    const Key& key = keys_[best->key];
+    NodeId level = id;
+    for (const Operation& f : key.context) {
+      const Split& s = std::get<Split>(g_.op(level));
+      const Split& shaped = std::get<Split>(f);
+      for (std::size_t i = 0; i < s.parts.size(); ++i)
+        if (shaped.parts[i].child != kHole) place(s.parts[i].child, nests, placed);
+        else level = s.parts[i].child;
+    }
+    place(key.base, nests, placed);
+  }
+
+  // The rule nest --> B | F[nest] for one key, as a call to it; nullopt
+  // when some level's sizes are not ranges to widen.
+  std::optional<NodeId> recursive_rule(std::size_t key_index) {
+    const Key& key = keys_[key_index];
+    const std::size_t p = key.context.size();
+    // Each level of F: every node at that level in every chain.
+    std::vector<std::vector<NodeId>> members(p);
+    double went_on = 0, stopped = 0;
+    for (const auto& [top, k] : occurrences_[key_index]) {
+      NodeId level = top;
+      for (std::size_t j = 0; j < k * p; ++j) {
+        members[j % p].push_back(level);
+        level = std::get<Split>(g_.op(level)).parts[hole_of(key.context[j % p])].child;
+      }
+      went_on += static_cast<double>(k);
+      stopped += 1;
+    }
+    // A chain inside another (a four-tier tower's upper three tiers, also
+    // seen as a three-tier tower) brings its levels once.
+    for (auto& level : members) {
+      std::sort(level.begin(), level.end());
+      level.erase(std::unique(level.begin(), level.end()), level.end());
+    }
+    // The levels' sizes and their values.
+    std::vector<Split> levels;
+    std::vector<std::vector<std::vector<Observation>>> kept(p);
+    for (std::size_t i = 0; i < p; ++i) {
+      Split s = std::get<Split>(g_.op(members[i][0]));
+      kept[i].resize(s.parts.size());
+      for (std::size_t q = 0; q < s.parts.size(); ++q) {
+        std::optional<Range> all;
+        bool known = true;
+        for (NodeId m : members[i]) {
+          const Expr& size = std::get<Split>(g_.op(m)).parts[q].size.value;
+          const auto r = literal_range(size);
+          if (!r) {
+            if (size == s.parts[q].size.value) continue;  // the same expression at every level
+            return std::nullopt;
+          }
+          all = all ? Range{std::min(all->lo, r->lo), std::max(all->hi, r->hi)} : *r;
+          const auto booked = book_.find(m);
+          if (booked != book_.end() && q < booked->second.size() && !booked->second[q].empty()) {
+            const auto& seen = booked->second[q];
+            kept[i][q].insert(kept[i][q].end(), seen.begin(), seen.end());
+          } else if (r->lo == r->hi) {
+            kept[i][q].push_back({r->lo, 1});
+          } else {
+            known = false;
+          }
+        }
+        if (all) s.parts[q].size.value = range_expr(*all, tol_);
+        if (!known || !all) kept[i][q].clear();
+      }
+      levels.push_back(std::move(s));
+    }
+    // The rule first, so that F's innermost level can call it.
+    const auto rule = static_cast<RuleId>(g_.rules.size());
+    g_.rules.push_back({"nest", {}, 0, {}});
+    const NodeId call = g_.intern({Call{rule, {}}, {}});
+    NodeId inner = call;
+    for (std::size_t i = p; i-- > 0;) {
+      Split s = levels[i];
+      s.parts[hole_of(key.context[i])].child = inner;
+      inner = g_.intern({std::move(s), {}});
+      book_[inner] = kept[i];
+    }
+    Choose nest;
+    nest.options.push_back({Expr{}, Expr::number(stopped), key.base});
+    nest.options.push_back({Expr{}, Expr::number(went_on), inner});
+    g_.rules[rule].body = g_.intern({std::move(nest), {}});
+    return call;
+  }
+
+  static std::size_t hole_of(const Operation& shaped) {
+    const Split& s = std::get<Split>(shaped);
+    for (std::size_t i = 0; i < s.parts.size(); ++i)
+      if (s.parts[i].child == kHole) return i;
+    return 0;
+  }
+
+  Grammar& g_;
+  SampleBook& book_;
+  double tol_;
+  std::vector<bool> read_;
+  std::vector<std::vector<Reading>> readings_;  // by node id
+  std::vector<Key> keys_;
+  std::unordered_map<std::size_t, std::vector<std::size_t>> key_by_hash_;
+  std::vector<std::vector<std::pair<NodeId, std::size_t>>> occurrences_;  // by key: chain tops and their k
+};
+
+}  // namespace
+
+SelfNesting fold_self_nesting(Grammar& g, NodeId root, SampleBook& book, double tolerance) {
+  return Nester(g, book, tolerance).run(root);
+}
+
+}  // namespace vern

@@ -1,0 +1,112 @@
+// Structures that nest themselves: tiered towers of any tier count become
+// one recursive rule, whose tiers stand within the tiers below them.
+#include "inverse/self_nesting.hpp"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <set>
+
+#include "forward/derive.hpp"
+#include "graph/parser.hpp"
+#include "graph/writer.hpp"
+#include "inverse/check.hpp"
+#include "inverse/infer.hpp"
+#include "support/example_helpers.hpp"
+
+namespace vern {
+namespace {
+
+// Towers of two to six tiers, each tier inset in the one below (after the
+// skyscraper city's tiered towers, data/grammars/skyscraper_city.grm).
+constexpr const char* kTowers = R"(
+@scope 10, 10, 40
+tower --> split(z){ ~1 : tiered(randint(2, 6)) | ~rand(0.2, 0.5) : nil }
+tiered(n) : n > 1 --> split(z){
+    ~rand(0.5, 1.5) : I(rect) |
+    ~(n - 1) : split(x){ ~1 : nil | ~rand(5, 8) : split(y){ ~1 : nil | ~rand(5, 8) : tiered(n - 1) | ~1 : nil } | ~1 : nil } }
+tiered(n) : n == 1 --> I(rect)
+)";
+
+Derivation derive_seed(const Grammar& g, std::uint64_t seed) {
+  DeriveOptions o;
+  o.seed = seed;
+  return derive(g, o);
+}
+
+// Does rule r's body reach a call of r (through nested operations and the
+// rules it calls)?
+bool recursive(const Grammar& g, RuleId r) {
+  std::set<NodeId> seen;
+  std::function<bool(NodeId)> reaches = [&](NodeId id) {
+    if (!seen.insert(id).second) return false;
+    if (const auto* call = std::get_if<Call>(&g.op(id)))
+      return call->rule == r || reaches(g.rules[call->rule].body);
+    bool found = false;
+    for (NodeId c : node_children(g.op(id))) found = found || reaches(c);
+    return found;
+  };
+  return reaches(g.rules[r].body);
+}
+
+// Every part that does not stand on the ground stands on a part whose top
+// it meets and whose footprint holds its own: no tier overhangs the one
+// below or floats (the thesis's floating tiers, its figure 12.10).
+::testing::AssertionResult tiers_stand_on_tiers(const std::vector<LabelledBox>& parts) {
+  constexpr double eps = 1e-6;
+  for (const LabelledBox& b : parts) {
+    if (b.min.z < eps) continue;
+    bool supported = false;
+    for (const LabelledBox& a : parts)
+      supported = supported || (std::abs(a.max.z - b.min.z) < eps && a.min.x <= b.min.x + eps &&
+                                a.max.x >= b.max.x - eps && a.min.y <= b.min.y + eps && a.max.y >= b.max.y - eps);
+    if (!supported) return ::testing::AssertionFailure() << test::describe(b) << " stands on no tier that holds it";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+class TieredTowers : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    source_ = parse_grammar(kTowers, "towers.grm");
+    for (std::uint64_t seed = 1; seed <= 12; ++seed)
+      examples_.push_back(test::example_of(test::derived_parts(derive_seed(source_, seed))));
+    inferred_ = infer(examples_, {});
+  }
+  Grammar source_;
+  std::vector<Example> examples_;
+  Inference inferred_;
+};
+
+TEST_F(TieredTowers, BecomeOneRecursiveRule) {
+  const Grammar& g = inferred_.grammar;
+  std::size_t recursive_rules = 0;
+  for (RuleId r = 0; r < g.rules.size(); ++r) recursive_rules += recursive(g, r) ? 1 : 0;
+  EXPECT_GE(recursive_rules, 1u) << write_grammar(g);
+  // One tier structure, not one alternative per tier count.
+  EXPECT_LE(g.rules.size(), 4u) << write_grammar(g);
+}
+
+TEST_F(TieredTowers, EveryExampleIsDerivable) {
+  for (const Example& e : examples_) {
+    const CheckResult r = check_example(inferred_.grammar, e.boxes, example_size(e));
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(inferred_.grammar);
+  }
+}
+
+TEST_F(TieredTowers, VariantsStandTierOnTierWithVaryingTierCounts) {
+  std::set<std::size_t> tier_counts;
+  for (std::uint64_t seed = 100; seed < 160; ++seed) {
+    DeriveOptions o;
+    o.seed = seed;
+    o.size = glm::dvec3(10, 10, 30);
+    const std::vector<LabelledBox> parts = test::derived_parts(derive(inferred_.grammar, o));
+    tier_counts.insert(parts.size());
+    EXPECT_TRUE(tiers_stand_on_tiers(parts)) << "seed " << seed << "\n" << write_grammar(inferred_.grammar);
+  }
+  // The recursion goes as deep as the examples did, and stops as they did.
+  EXPECT_GE(tier_counts.size(), 3u);
+}
+
+}  // namespace
+}  // namespace vern
