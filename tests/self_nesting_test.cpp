@@ -108,5 +108,34 @@ TEST_F(TieredTowers, VariantsStandTierOnTierWithVaryingTierCounts) {
   EXPECT_GE(tier_counts.size(), 3u);
 }
 
+TEST(SelfNesting, TowersUnderAirAndTowersFillingThePlotShareOneRecursion) {
+  // Beside a mast taller than any tower, a tower stands under air and its
+  // chain of tiers is read from the inset down (x, y, z); alone, a tower
+  // fills its plot's height and is read from its first tier (z, x, y).
+  // Both are one nesting: one recursive rule, not one per place.
+  Grammar source = parse_grammar(R"(
+@scope 10, 10, 40
+site --> tiered(randint(2, 6)) : 1
+site --> split(x){ ~1 : split(z){ ~1 : tiered(randint(2, 6)) | ~rand(0.1, 0.3) : nil } | ~0.2 : I(mast) } : 1
+tiered(n) : n > 1 --> split(z){
+    ~rand(0.5, 1.5) : I(rect) |
+    ~(n - 1) : split(x){ ~1 : nil | ~rand(5, 8) : split(y){ ~1 : nil | ~rand(5, 8) : tiered(n - 1) | ~1 : nil } | ~1 : nil } }
+tiered(n) : n == 1 --> I(rect)
+)",
+                                 "sites.grm");
+  std::vector<Example> examples;
+  for (std::uint64_t seed = 1; seed <= 16; ++seed)
+    examples.push_back(test::example_of(test::derived_parts(derive_seed(source, seed))));
+  const Inference inferred = infer(examples, {});
+  const Grammar& g = inferred.grammar;
+  std::size_t recursive_rules = 0;
+  for (RuleId r = 0; r < g.rules.size(); ++r) recursive_rules += recursive(g, r) ? 1 : 0;
+  EXPECT_EQ(recursive_rules, 1u) << write_grammar(g);
+  for (const Example& e : examples) {
+    const CheckResult r = check_example(g, e.boxes, example_size(e));
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(g);
+  }
+}
+
 }  // namespace
 }  // namespace vern

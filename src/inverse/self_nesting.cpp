@@ -46,6 +46,7 @@ class Nester {
     std::vector<bool> nests(keys_.size(), false);
     for (const auto& node_readings : readings_)
       for (const Reading& r : node_readings) nests[r.key] = nests[r.key] || r.k >= 2;
+    prefer_one_phase(nests);
     std::vector<bool> placed(g_.node_count(), false);
     place(root, nests, placed);
     SelfNesting out;
@@ -142,6 +143,51 @@ class Nester {
         readings_[id].push_back({key_id(std::move(key)), k});
       }
     }
+  }
+
+  // One nesting read from two places a split apart is one context turned
+  // (z, x, y and x, y, z: towers that fill their plot's height, and towers
+  // under air, whose chains start at the inset). Of the keys whose
+  // contexts are turns of each other, only the one with the smallest base
+  // folds (the chains end at the innermost tier's box, not at a partial
+  // context round it); a node read only by the others is passed, and its
+  // spine reaches that key's chain a split or two lower.
+  void prefer_one_phase(std::vector<bool>& nests) const {
+    std::vector<std::size_t> nesting;
+    for (std::size_t k = 0; k < keys_.size(); ++k)
+      if (nests[k]) nesting.push_back(k);
+    std::vector<std::size_t> size(keys_.size(), 0);
+    for (std::size_t k : nesting) size[k] = subgraph_size(keys_[k].base);
+    for (std::size_t a : nesting)
+      for (std::size_t b : nesting) {
+        if (a == b || !turned(keys_[a].context, keys_[b].context)) continue;
+        if (size[b] < size[a] || (size[b] == size[a] && b < a)) nests[a] = false;
+      }
+  }
+
+  // Is b's context a's turned by some number of levels?
+  static bool turned(const std::vector<Operation>& a, const std::vector<Operation>& b) {
+    const std::size_t p = a.size();
+    if (b.size() != p) return false;
+    for (std::size_t r = 0; r < p; ++r) {
+      bool same = true;
+      for (std::size_t i = 0; i < p && same; ++i) same = a[i] == b[(i + r) % p];
+      if (same) return true;
+    }
+    return false;
+  }
+
+  std::size_t subgraph_size(NodeId root) const {
+    std::vector<NodeId> stack{root};
+    std::vector<NodeId> seen;
+    while (!stack.empty()) {
+      const NodeId id = stack.back();
+      stack.pop_back();
+      if (std::find(seen.begin(), seen.end(), id) != seen.end()) continue;
+      seen.push_back(id);
+      for_each_child(g_.op(id), [&](NodeId c) { stack.push_back(c); });
+    }
+    return seen.size();
   }
 
   // Top down: a node with a reading of a nesting key is a chain, taken
