@@ -136,7 +136,11 @@ Distribution fit_distribution(const std::vector<Observation>& observations, cons
       log_l += o.count * (normal_log_density((o.value - mu) / sigma) - std::log(sigma) - std::log(mass) + log_bin);
     }
     const double bic = 4 * std::log(n) - 2 * log_l;
-    if (mass > 0 && bic < best.bic) {
+    // A normal whose peak lies outside its range is a slope, not a bell:
+    // tnormal(311, 38, 2.2, 8.2) says "more towards 8" in a way no one
+    // reads; the range or the values seen say it plainly enough.
+    const bool peaked = mu >= lo && mu <= hi;
+    if (mass > 0 && peaked && bic < best.bic) {
       best = {};
       best.kind = DistributionKind::TruncatedNormal;
       best.mu = mu;
