@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string_view>
 
+#include "forward/plain_number.hpp"
 #include "graph/error.hpp"
 #include "graph/utf8.hpp"
 
@@ -128,6 +129,14 @@ class Reader {
 
   void read_line(std::string_view line, std::uint32_t number) {
     line_ = number;
+    // Nearly every line of a large file is a plain `v` or `f`: read those
+    // without tokens; anything unusual is read again below, which also
+    // reports any error.
+    if (line.size() > 2 && line[1] == ' ' &&
+        ((line[0] == 'v' && read_plain_vertex(line)) || (line[0] == 'f' && read_plain_face(line)))) {
+      recognised_ = true;
+      return;
+    }
     if (const std::size_t nul = line.find('\0'); nul != std::string_view::npos) {
       error(nul + 1, "the file contains a NUL byte: it is not an OBJ text file",
             "give a Wavefront OBJ text file (for glTF or GLB examples use a .gltf/.glb path)");
@@ -372,6 +381,11 @@ class Reader {
       }
       corners_.push_back(c);
     }
+    add_face(n);
+  }
+
+  // The face of the last n corners read: its bookkeeping and the limit.
+  void add_face(std::size_t n) {
     // A segment's faces are consecutive, so a new segment shows as a change.
     if (!object_has_faces_) ++objects_with_faces_;
     object_has_faces_ = true;
@@ -387,6 +401,55 @@ class Reader {
            "more than " + std::to_string(limits_.max_objects) + " objects with faces: reading stopped here",
            limits_.too_many_hint.empty() ? "split the file into smaller ones" : limits_.too_many_hint);
     }
+  }
+
+  static const char* skip_blanks(const char* p, const char* end) {
+    while (p != end && (*p == ' ' || *p == '\t')) ++p;
+    return p;
+  }
+
+  // `v x y z` of three plain decimals within kMaxObjCoordinate and
+  // nothing else: added, true. Otherwise nothing is added.
+  bool read_plain_vertex(std::string_view line) {
+    const char* p = line.data() + 2;
+    const char* const end = line.data() + line.size();
+    glm::dvec3 v;
+    for (int i = 0; i < 3; ++i) {
+      p = skip_blanks(p, end);
+      p = scan_plain_decimal(p, end, v[i]);
+      if (p == nullptr || (p != end && *p != ' ' && *p != '\t') || std::abs(v[i]) > kMaxObjCoordinate) return false;
+    }
+    if (skip_blanks(p, end) != end) return false;
+    positions_.push_back(v);
+    return true;
+  }
+
+  // `f i j k ...` of at least three plain vertex indices, each naming a
+  // vertex above it, and nothing else: added, true. Otherwise nothing is
+  // added.
+  bool read_plain_face(std::string_view line) {
+    const char* p = skip_blanks(line.data() + 2, line.data() + line.size());
+    const char* const end = line.data() + line.size();
+    const std::size_t first = corners_.size();
+    while (p != end) {
+      std::uint32_t index = 0;
+      p = scan_plain_index(p, end, index);
+      if (p == nullptr || (p != end && *p != ' ' && *p != '\t') || index == 0 || index > positions_.size()) {
+        corners_.resize(first);
+        return false;
+      }
+      Mesh::Corner c;
+      c.position = index - 1;
+      corners_.push_back(c);
+      p = skip_blanks(p, end);
+    }
+    const std::size_t n = corners_.size() - first;
+    if (n < 3) {
+      corners_.resize(first);
+      return false;
+    }
+    add_face(n);
+    return true;
   }
 
   template <class V>
