@@ -30,16 +30,23 @@ double shortest_decimal(double v, double tolerance, int direction) {
 }
 
 std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes, int max_whole) {
-  double smallest = 0;
+  double smallest = 0, largest = 0;
   for (double s : sizes) {
     if (!(s > 0)) return std::nullopt;
     smallest = smallest == 0 ? s : std::min(smallest, s);
+    largest = std::max(largest, s);
   }
   // The smallest part is some whole k of the unit; try k = 1, 2, ...
   std::vector<double> out;
   out.reserve(sizes.size());
   for (int k = 1; k <= max_whole; ++k) {
     const double unit = smallest / k;
+    // The largest part is the likeliest to fail (most splits have no whole
+    // ratios), and once it needs more than max_whole units it does for
+    // every larger k too (the unit only shrinks): no k beyond can work.
+    const double most = std::round(largest / unit);
+    if (most > max_whole) break;
+    if (std::abs(largest / unit - most) > 1e-9 * most) continue;
     out.clear();
     bool ok = true;
     for (double s : sizes) {
