@@ -37,8 +37,9 @@ class Layout {
   void indent() { add(Kind::Indent); }
   void dedent() { add(Kind::Dedent); }
 
-  std::string render(const WriteOptions& options) const {
-    std::string out;
+  // Appends the laid-out text to out: a million-part rule is most of the
+  // grammar's text, not worth a copy.
+  void render(std::string& out, const WriteOptions& options) const {
     int column = 0;
     bool flat = false;  // outside every group, a line break would be a newline
     std::vector<bool> outer_flat;
@@ -74,7 +75,6 @@ class Layout {
         case Kind::Dedent: indents.pop_back(); break;
       }
     }
-    return out;
   }
 
  private:
@@ -466,7 +466,8 @@ class OpWriter {
 
 bool is_one(const Expr& e) { return e.literal() == 1.0; }
 
-std::string rule_text(const Grammar& g, const Rule& rule, const WriteOptions& options) {
+// Appends the rule's lines to out, without the last line break.
+void write_rule(std::string& out, const Grammar& g, const Rule& rule, const WriteOptions& options) {
   check_name(rule.label, "rule", true);
   std::string head = rule.label;
   if (!rule.params.empty()) {
@@ -489,7 +490,8 @@ std::string rule_text(const Grammar& g, const Rule& rule, const WriteOptions& op
     Layout line;
     line.text(head + " --> ");
     w.op(line, rule.body);
-    return line.render(options);
+    line.render(out, options);
+    return;
   }
 
   // One line per alternative. The parser gathers rules sharing a label into
@@ -497,7 +499,6 @@ std::string rule_text(const Grammar& g, const Rule& rule, const WriteOptions& op
   // condition or a priority; so a lone option always writes one of them.
   if (choose->options.empty()) cannot_write("rule '" + rule.label + "' chooses among no options");
   const bool lone = choose->options.size() == 1;
-  std::string text;
   for (const ChooseOption& option : choose->options) {
     Layout line;
     std::string start = head;
@@ -507,10 +508,9 @@ std::string rule_text(const Grammar& g, const Rule& rule, const WriteOptions& op
     if (option.priority.empty()) cannot_write("an option of rule '" + rule.label + "' has no priority");
     if (!is_one(option.priority) || (lone && option.condition.empty()))
       line.text(" : " + w.expr(option.priority));
-    if (!text.empty()) text += '\n';
-    text += line.render(options);
+    if (&option != &choose->options.front()) out += '\n';
+    line.render(out, options);
   }
-  return text;
 }
 
 }  // namespace
@@ -523,7 +523,9 @@ std::string write_operation(const Grammar& g, NodeId node, const std::vector<std
                             const WriteOptions& options) {
   Layout out;
   OpWriter(g, param_names).op(out, node);
-  return out.render(options);
+  std::string text;
+  out.render(text, options);
+  return text;
 }
 
 std::string write_grammar(const Grammar& g, const WriteOptions& options) {
@@ -581,7 +583,7 @@ std::string write_grammar(const Grammar& g, const WriteOptions& options) {
     if (!seen.insert(rule.label).second)
       cannot_write("two rules are labelled '" + rule.label + "'",
                    "alternatives of one label must be one rule whose body is a choose");
-    out += rule_text(g, rule, options);
+    write_rule(out, g, rule, options);
     out += '\n';
   }
   return out;
