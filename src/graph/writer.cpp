@@ -380,7 +380,7 @@ class OpWriter {
               parts(out, "comp(f)", labels, kids);
             },
             [&](const Colour& c) {
-              out.text("colour(" + expr(c.red) + ", " + expr(c.green) + ", " + expr(c.blue) + ")");
+              out.text("colour(" + expr(c.rgb[0]) + ", " + expr(c.rgb[1]) + ", " + expr(c.rgb[2]) + ")");
             },
         },
         g_.op(id));
@@ -394,7 +394,7 @@ class OpWriter {
     return expr(e);
   }
 
-  std::string sizes(const std::array<Size, 3>& s) const {
+  std::string sizes(const Triple<Size>& s) const {
     return size(s[0]) + ", " + size(s[1]) + ", " + size(s[2]);
   }
 
