@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string_view>
 
+#include "forward/chunked_vector.hpp"
 #include "forward/plain_number.hpp"
 #include "graph/error.hpp"
 #include "graph/utf8.hpp"
@@ -151,7 +152,7 @@ class Reader {
       normals_.push_back(read_vector(3, 3, "normal", kXyz));
     } else if (key == "vt") {
       const glm::dvec3 t = read_vector(1, 2, "texture coordinate", kUvw);
-      uvs_.emplace_back(t.x, t.y);
+      uvs_.push_back({t.x, t.y});
     } else if (key == "f" || key == "fo") {
       read_face();
     } else if (key == "o") {
@@ -227,9 +228,9 @@ class Reader {
     mesh.corners.clear();
     mesh.face_sizes.assign(face_sizes_.begin() + static_cast<std::ptrdiff_t>(begin),
                            face_sizes_.begin() + static_cast<std::ptrdiff_t>(end));
-    position_map_.resize(positions_.size(), Mesh::kNone);
-    normal_map_.resize(normals_.size(), Mesh::kNone);
-    uv_map_.resize(uvs_.size(), Mesh::kNone);
+    position_map_.grow_to(positions_.size(), Mesh::kNone);
+    normal_map_.grow_to(normals_.size(), Mesh::kNone);
+    uv_map_.grow_to(uvs_.size(), Mesh::kNone);
     const std::size_t first_corner = face_corner_[begin];
     const std::size_t last_corner = end < face_corner_.size() ? face_corner_[end] : corners_.size();
     for (std::size_t c = first_corner; c < last_corner; ++c) {
@@ -453,7 +454,7 @@ class Reader {
   }
 
   template <class V>
-  static std::uint32_t remap(std::uint32_t global, std::vector<std::uint32_t>& map, const std::vector<V>& from,
+  static std::uint32_t remap(std::uint32_t global, ChunkedVector<std::uint32_t>& map, const ChunkedVector<V>& from,
                              std::vector<V>& to) {
     if (global == Mesh::kNone) return Mesh::kNone;
     if (map[global] == Mesh::kNone) {
@@ -476,9 +477,9 @@ class Reader {
   std::size_t groups_seen_ = 0;  // `g` statements so far
   std::size_t last_group_with_faces_ = std::numeric_limits<std::size_t>::max();
 
-  std::vector<glm::dvec3> positions_;
-  std::vector<glm::dvec3> normals_;
-  std::vector<glm::dvec2> uvs_;
+  ChunkedVector<glm::dvec3> positions_;
+  ChunkedVector<glm::dvec3> normals_;
+  ChunkedVector<glm::dvec2> uvs_;
   // The faces not yet handed over: of the current object, or before any
   // `o` all of them (they may yet turn out to be groups).
   std::vector<Mesh::Corner> corners_;  // global indices
@@ -490,7 +491,7 @@ class Reader {
   std::vector<Segment> groups_;  // only while no `o` has been seen
   // Reused from object to object.
   ObjObject object_out_;
-  std::vector<std::uint32_t> position_map_, normal_map_, uv_map_;
+  ChunkedVector<std::uint32_t> position_map_, normal_map_, uv_map_;
 };
 
 }  // namespace
