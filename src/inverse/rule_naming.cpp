@@ -19,6 +19,9 @@ class RuleMaker {
         leaf_copies_(from.node_count(), kNone), labels_(from.node_count()) {
     out_.scope = from.scope;
     out_.primitives = from.primitives;
+    // The copy has at most the graph's nodes and a call per rule: room for
+    // them up front, so the copy's arena is never moved as it grows.
+    out_.reserve(from.node_count() + from.node_count() / 8);
   }
 
   Grammar run(NodeId root) {
@@ -37,7 +40,7 @@ class RuleMaker {
  private:
   void count_uses(NodeId id) {
     if (uses_[id]++ > 0) return;
-    for (NodeId child : node_children(from_.op(id))) count_uses(child);
+    for_each_child(from_.op(id), [&](NodeId child) { count_uses(child); });
   }
 
   bool is_leaf(NodeId id) const {
@@ -62,12 +65,12 @@ class RuleMaker {
     if (const auto* p = std::get_if<Primitive>(&from_.op(id))) {
       known.labels.push_back(p->label);
     } else {
-      for (NodeId child : node_children(from_.op(id))) {
-        if (known.labels.size() >= 3) break;
+      for_each_child(from_.op(id), [&](NodeId child) {
+        if (known.labels.size() >= 3) return;  // the rest cannot add one
         for (LabelId l : labels_below(child))
           if (known.labels.size() < 3 && std::find(known.labels.begin(), known.labels.end(), l) == known.labels.end())
             known.labels.push_back(l);
-      }
+      });
     }
     known.done = true;
     return known.labels;
