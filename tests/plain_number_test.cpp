@@ -1,5 +1,6 @@
 // The OBJ reader's plain-number scanners: the same value as from_chars,
-// bit for bit, wherever they accept; a refusal for anything else.
+// bit for bit, wherever they accept; a refusal for anything else (the
+// reader's general path then reads it).
 #include "forward/plain_number.hpp"
 
 #include <gtest/gtest.h>
@@ -27,8 +28,8 @@ bool agrees(const std::string& text) {
 }
 
 TEST(PlainNumber, DecimalsReadAsFromCharsDoes) {
-  for (const char* s : {"0", "-0", "1", "1.802", "-0.5", "0.1", "0.3", "123456.789", "9007199254740992",
-                        "0.0000000000000000000001", "3.14159265358979", "-2.718281828459045"})
+  for (const char* s : {"0", "-0", "1", "1.802", "-0.5", "0.1", "0.3", "123456.789", "999999999999999",
+                        "0.00000000000001", "3.14159265358979", "-2.71828182845904", "007.50"})
     EXPECT_TRUE(agrees(s)) << s;
   // Random short decimals as the OBJ writer and the layouts write them.
   std::mt19937_64 rng(7);
@@ -46,7 +47,7 @@ TEST(PlainNumber, DecimalsReadAsFromCharsDoes) {
 
 TEST(PlainNumber, AnythingElseIsRefused) {
   for (const char* s : {"", "-", "+1", ".5", "5.", "1e3", "1E-2", "inf", "nan", "0x10", "9007199254740993",
-                        "0.00000000000000000000001", "--1", "-.5"}) {
+                        "0.000000000000001", "-2.718281828459045", "--1", "-.5"}) {
     double v = 0.0;
     const std::string text = s;
     const char* end = scan_plain_decimal(text.data(), text.data() + text.size(), v);
