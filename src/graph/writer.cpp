@@ -86,7 +86,14 @@ class Layout {
   };
 
   void add(Kind kind, std::string_view s = {}) {
-    pieces_.push_back({kind, static_cast<std::uint32_t>(text_.size()), static_cast<std::uint32_t>(s.size()), columns(s)});
+    // Texts in a row lay out as one (fits() only ever subtracts their
+    // columns): one piece, a third fewer pieces in all.
+    if (kind == Kind::Text && !pieces_.empty() && pieces_.back().kind == Kind::Text) {
+      pieces_.back().size += static_cast<std::uint32_t>(s.size());
+      pieces_.back().columns += columns(s);
+    } else {
+      pieces_.push_back({kind, static_cast<std::uint32_t>(text_.size()), static_cast<std::uint32_t>(s.size()), columns(s)});
+    }
     text_.append(s);
   }
 
@@ -340,13 +347,9 @@ class OpWriter {
     std::visit(
         Overload{
             [&](const Split& s) {
-              std::vector<std::string> labels;
-              std::vector<NodeId> kids;
-              for (const auto& p : s.parts) {
-                labels.push_back(size(p.size));
-                kids.push_back(p.child);
-              }
-              parts(out, "split(" + axis(s.axis) + ")", labels, kids);
+              parts(out, "split(" + axis(s.axis) + ")", s.parts.size(), [&](std::size_t i) {
+                return std::pair{size(s.parts[i].size), s.parts[i].child};
+              });
             },
             [&](const Repeat& r) {
               wrap(out, "repeat(" + axis(r.axis) + ", " + expr(r.size) + ")", r.child);
@@ -377,7 +380,7 @@ class OpWriter {
                 labels.emplace_back(face_name(p.face));
                 kids.push_back(p.child);
               }
-              parts(out, "comp(f)", labels, kids);
+              parts(out, "comp(f)", kids.size(), [&](std::size_t i) { return std::pair{labels[i], kids[i]}; });
             },
             [&](const Colour& c) {
               out.text("colour(" + expr(c.rgb[0]) + ", " + expr(c.rgb[1]) + ", " + expr(c.rgb[2]) + ")");
@@ -418,17 +421,21 @@ class OpWriter {
   //   head{
   //       a : op |
   //       b : op }
-  void parts(Layout& out, const std::string& head, const std::vector<std::string>& labels,
-             const std::vector<NodeId>& kids) const {
-    if (kids.empty()) cannot_write(head + " has no parts");
+  // part(i) gives the i-th part's label and node: no lists of them are
+  // made (a million-part grammar has hundreds of thousands of splits).
+  template <class Part>
+  void parts(Layout& out, const std::string& head, std::size_t count, Part part) const {
+    if (count == 0) cannot_write(head + " has no parts");
     out.open();
     out.text(head + "{");
     out.indent();
-    for (std::size_t i = 0; i < kids.size(); ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto [label, kid] = part(i);
       out.line();
-      out.text(labels[i] + " : ");
-      op(out, kids[i]);
-      if (i + 1 < kids.size()) out.text(" |");
+      out.text(label);
+      out.text(" : ");
+      op(out, kid);
+      if (i + 1 < count) out.text(" |");
     }
     out.dedent();
     out.text(" }");
