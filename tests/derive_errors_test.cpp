@@ -12,11 +12,13 @@ struct Failure {
   std::string message;
 };
 
-Failure derive_failure(const std::string& text, DeriveLimits limits = {}, bool strict = false) {
+Failure derive_failure(const std::string& text, DeriveLimits limits = {}, bool strict = false,
+                       bool keep_terminals = true) {
   const Grammar g = parse_grammar(text, "g.grm");
   DeriveOptions o;
   o.limits = limits;
   o.strict = strict;
+  o.keep_terminals = keep_terminals;
   try {
     derive(g, o);
   } catch (const Error& e) {
@@ -57,6 +59,14 @@ TEST(DeriveErrors, MoreTerminalsThanTheLimit) {
   EXPECT_EQ(f.kind, ErrorKind::Limit);
   EXPECT_NE(f.message.find("g.grm:1:25: error: more than 100 terminals"), std::string::npos);
   EXPECT_NE(f.message.find("--max-terminals"), std::string::npos);
+}
+
+TEST(DeriveErrors, TerminalsNotKeptStillCount) {
+  DeriveLimits limits;
+  limits.max_terminals = 100;
+  const auto f = derive_failure("p --> repeatN(x, 1000){ I(rect) }", limits, false, false);
+  EXPECT_EQ(f.kind, ErrorKind::Limit);
+  EXPECT_NE(f.message.find("g.grm:1:25: error: more than 100 terminals"), std::string::npos);
 }
 
 TEST(DeriveErrors, HugeRepeatCountsStopBeforeRunning) {

@@ -29,6 +29,22 @@ TEST(Derive, RelativeSizesShareTheScope) {
   EXPECT_NEAR(b[1].max.x - b[1].min.x, 3, kEps);
 }
 
+TEST(Derive, TerminalsNotKeptLeaveTheRestAsItWas) {
+  const std::string text =
+      "p --> split(x){ ~1 : colour(1, 0, 0) | ~rand(1, 2) : I(a) } : 1\np --> repeat(y, 0.3){ I(b) } : 1";
+  const Grammar g = parse_grammar(text, "g.grm");
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    DeriveOptions kept, dropped;
+    kept.seed = dropped.seed = seed;
+    dropped.keep_terminals = false;
+    const Derivation a = derive(g, kept), b = derive(g, dropped);
+    EXPECT_FALSE(a.terminals.empty());
+    EXPECT_TRUE(b.terminals.empty());
+    EXPECT_EQ(a.labels, b.labels);
+    EXPECT_EQ(a.warnings, b.warnings);
+  }
+}
+
 TEST(Derive, AbsoluteSizesComeFirstAndRelativeShareTheRest) {
   const auto b = boxes(derive_text("p --> split(y){ 1 : I(a) | ~1 : I(b) | ~3 : I(c) | 2 : I(d) }", {1, 11, 1}));
   ASSERT_EQ(b.size(), 4u);

@@ -136,7 +136,7 @@ TEST(Parser, ReadsEveryOperation) {
   const auto& comp = std::get<Comp>(g.op(split.parts[4].child));
   ASSERT_EQ(comp.parts.size(), 3u);
   EXPECT_EQ(comp.parts[1].face, Face::Front);
-  EXPECT_EQ(std::get<Colour>(g.op(comp.parts[2].child)).green.literal(), 128.0 / 255.0);
+  EXPECT_EQ(std::get<Colour>(g.op(comp.parts[2].child)).rgb[1].literal(), 128.0 / 255.0);
 }
 
 TEST(Parser, RulesMayContinueInsideBracketsAndTheLastLineNeedsNoNewline) {

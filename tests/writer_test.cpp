@@ -242,7 +242,7 @@ TEST(Writer, TranslateAndScaleWithRelativeSizes) {
 TEST(Writer, CompColourRotate) {
   Builder b;
   const RuleId box = b.rule("box");
-  const NodeId red = b.node(Colour{num(0.8), num(0.1), num(0.1)});
+  const NodeId red = b.node(Colour{{num(0.8), num(0.1), num(0.1)}});
   const NodeId turned = b.node(Rotate{ax(Axis::Z), bin(BinaryOp::Div, num(std::numbers::pi), num(2)), b.prim("roof")});
   b.body(box, b.node(Comp{{{Face::Top, turned}, {Face::Front, red}}}));
   EXPECT_EQ(write(b), "box --> comp(f){ top : R(z, pi / 2){ I(roof) } | front : colour(0.8, 0.1, 0.1) }\n");
@@ -442,7 +442,7 @@ TEST(WriterRoundTrip, RandomExpressionsEverywhere) {
     const RuleId plot = b.rule("plot");
     const RuleId r = b.rule("r", {"a", "b"});
     b.body(plot, b.call(r, {num(1), num(4)}));
-    const NodeId leaf = b.node(Colour{random.make(2), random.make(2), random.make(2)});
+    const NodeId leaf = b.node(Colour{{random.make(2), random.make(2), random.make(2)}});
     const NodeId again = b.call(r, {random.make(2), random.make(2)});
     const NodeId s = b.split(Axis::X, {{rel(random.make(3)), leaf}, {abs_size(random.make(3)), again}});
     const NodeId t = b.node(Translate{{rel(random.make(2)), abs_size(random.make(2)), rel(random.make(1))}, s});

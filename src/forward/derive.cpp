@@ -232,6 +232,7 @@ class Deriver {
   Terminal& emit(LabelId label, const Scope& s, NodeId id) {
     if (terminals_left_ == 0) too_many_terminals(id);
     --terminals_left_;
+    if (!opt_.keep_terminals) terminals_.clear();  // the one slot the caller finishes
     return terminals_.emplace_back(Terminal{label, false, Rgb{}, s});
   }
 
@@ -525,7 +526,7 @@ Derivation derive(const Program& program, const DeriveOptions& options) {
   buffer.clear();
   Derivation out;
   Deriver(program, options, out, buffer).run();
-  out.terminals.assign(buffer.begin(), buffer.end());
+  if (options.keep_terminals) out.terminals.assign(buffer.begin(), buffer.end());
   return out;
 }
 

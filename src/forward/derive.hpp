@@ -33,6 +33,11 @@ struct DeriveOptions {
   // default_size. The start scope sits at the origin, axis-aligned.
   std::optional<glm::dvec3> size;
   glm::dvec3 default_size{10.0, 10.0, 10.0};
+  // false: each terminal is counted (max_terminals holds) and dropped, and
+  // the Derivation has none: for checking that a grammar derives (infer's
+  // test building) without holding a building's terminals (a million are
+  // 144 MB, plus their copy).
+  bool keep_terminals = true;
 };
 
 struct Derivation {

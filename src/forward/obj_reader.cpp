@@ -10,6 +10,8 @@
 #include <fstream>
 #include <string_view>
 
+#include "forward/chunked_vector.hpp"
+#include "forward/plain_number.hpp"
 #include "graph/error.hpp"
 #include "graph/utf8.hpp"
 
@@ -128,6 +130,14 @@ class Reader {
 
   void read_line(std::string_view line, std::uint32_t number) {
     line_ = number;
+    // Nearly every line of a large file is a plain `v` or `f`: read those
+    // without tokens; anything unusual is read again below, which also
+    // reports any error.
+    if (line.size() > 2 && line[1] == ' ' &&
+        ((line[0] == 'v' && read_plain_vertex(line)) || (line[0] == 'f' && read_plain_face(line)))) {
+      recognised_ = true;
+      return;
+    }
     if (const std::size_t nul = line.find('\0'); nul != std::string_view::npos) {
       error(nul + 1, "the file contains a NUL byte: it is not an OBJ text file",
             "give a Wavefront OBJ text file (for glTF or GLB examples use a .gltf/.glb path)");
@@ -142,7 +152,7 @@ class Reader {
       normals_.push_back(read_vector(3, 3, "normal", kXyz));
     } else if (key == "vt") {
       const glm::dvec3 t = read_vector(1, 2, "texture coordinate", kUvw);
-      uvs_.emplace_back(t.x, t.y);
+      uvs_.push_back({t.x, t.y});
     } else if (key == "f" || key == "fo") {
       read_face();
     } else if (key == "o") {
@@ -218,9 +228,9 @@ class Reader {
     mesh.corners.clear();
     mesh.face_sizes.assign(face_sizes_.begin() + static_cast<std::ptrdiff_t>(begin),
                            face_sizes_.begin() + static_cast<std::ptrdiff_t>(end));
-    position_map_.resize(positions_.size(), Mesh::kNone);
-    normal_map_.resize(normals_.size(), Mesh::kNone);
-    uv_map_.resize(uvs_.size(), Mesh::kNone);
+    position_map_.grow_to(positions_.size(), Mesh::kNone);
+    normal_map_.grow_to(normals_.size(), Mesh::kNone);
+    uv_map_.grow_to(uvs_.size(), Mesh::kNone);
     const std::size_t first_corner = face_corner_[begin];
     const std::size_t last_corner = end < face_corner_.size() ? face_corner_[end] : corners_.size();
     for (std::size_t c = first_corner; c < last_corner; ++c) {
@@ -372,6 +382,11 @@ class Reader {
       }
       corners_.push_back(c);
     }
+    add_face(n);
+  }
+
+  // The face of the last n corners read: its bookkeeping and the limit.
+  void add_face(std::size_t n) {
     // A segment's faces are consecutive, so a new segment shows as a change.
     if (!object_has_faces_) ++objects_with_faces_;
     object_has_faces_ = true;
@@ -389,8 +404,57 @@ class Reader {
     }
   }
 
+  static const char* skip_blanks(const char* p, const char* end) {
+    while (p != end && (*p == ' ' || *p == '\t')) ++p;
+    return p;
+  }
+
+  // `v x y z` of three plain decimals within kMaxObjCoordinate and
+  // nothing else: added, true. Otherwise nothing is added.
+  bool read_plain_vertex(std::string_view line) {
+    const char* p = line.data() + 2;
+    const char* const end = line.data() + line.size();
+    glm::dvec3 v;
+    for (int i = 0; i < 3; ++i) {
+      p = skip_blanks(p, end);
+      p = scan_plain_decimal(p, end, v[i]);
+      if (p == nullptr || (p != end && *p != ' ' && *p != '\t') || std::abs(v[i]) > kMaxObjCoordinate) return false;
+    }
+    if (skip_blanks(p, end) != end) return false;
+    positions_.push_back(v);
+    return true;
+  }
+
+  // `f i j k ...` of at least three plain vertex indices, each naming a
+  // vertex above it, and nothing else: added, true. Otherwise nothing is
+  // added.
+  bool read_plain_face(std::string_view line) {
+    const char* p = skip_blanks(line.data() + 2, line.data() + line.size());
+    const char* const end = line.data() + line.size();
+    const std::size_t first = corners_.size();
+    while (p != end) {
+      std::uint32_t index = 0;
+      p = scan_plain_index(p, end, index);
+      if (p == nullptr || (p != end && *p != ' ' && *p != '\t') || index == 0 || index > positions_.size()) {
+        corners_.resize(first);
+        return false;
+      }
+      Mesh::Corner c;
+      c.position = index - 1;
+      corners_.push_back(c);
+      p = skip_blanks(p, end);
+    }
+    const std::size_t n = corners_.size() - first;
+    if (n < 3) {
+      corners_.resize(first);
+      return false;
+    }
+    add_face(n);
+    return true;
+  }
+
   template <class V>
-  static std::uint32_t remap(std::uint32_t global, std::vector<std::uint32_t>& map, const std::vector<V>& from,
+  static std::uint32_t remap(std::uint32_t global, ChunkedVector<std::uint32_t>& map, const ChunkedVector<V>& from,
                              std::vector<V>& to) {
     if (global == Mesh::kNone) return Mesh::kNone;
     if (map[global] == Mesh::kNone) {
@@ -413,9 +477,9 @@ class Reader {
   std::size_t groups_seen_ = 0;  // `g` statements so far
   std::size_t last_group_with_faces_ = std::numeric_limits<std::size_t>::max();
 
-  std::vector<glm::dvec3> positions_;
-  std::vector<glm::dvec3> normals_;
-  std::vector<glm::dvec2> uvs_;
+  ChunkedVector<glm::dvec3> positions_;
+  ChunkedVector<glm::dvec3> normals_;
+  ChunkedVector<glm::dvec2> uvs_;
   // The faces not yet handed over: of the current object, or before any
   // `o` all of them (they may yet turn out to be groups).
   std::vector<Mesh::Corner> corners_;  // global indices
@@ -427,7 +491,7 @@ class Reader {
   std::vector<Segment> groups_;  // only while no `o` has been seen
   // Reused from object to object.
   ObjObject object_out_;
-  std::vector<std::uint32_t> position_map_, normal_map_, uv_map_;
+  ChunkedVector<std::uint32_t> position_map_, normal_map_, uv_map_;
 };
 
 }  // namespace

@@ -108,7 +108,7 @@ Program compile(const Grammar& g) {
                      for (const CompPart& part : op.parts) p.faces.push_back({part.face, p.nodes[part.child]});
                    },
                    [&](const Colour& op) {
-                     p.colours.push_back({{p.code.number(op.red), p.code.number(op.green), p.code.number(op.blue)}});
+                     p.colours.push_back({{p.code.number(op.rgb[0]), p.code.number(op.rgb[1]), p.code.number(op.rgb[2])}});
                    },
                },
                g.op(id));

@@ -91,7 +91,7 @@ std::vector<const Expr*> node_expressions(const Operation& op) {
                    for (const auto& z : s.size) out.push_back(&z.value);
                  },
                  [&](const Rotate& r) { out.insert(out.end(), {&r.axis, &r.angle}); },
-                 [&](const Colour& c) { out.insert(out.end(), {&c.red, &c.green, &c.blue}); },
+                 [&](const Colour& c) { out.insert(out.end(), {&c.rgb[0], &c.rgb[1], &c.rgb[2]}); },
                  [](const auto&) {},
              },
              op);

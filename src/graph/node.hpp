@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "graph/expr.hpp"
+#include "graph/triple.hpp"
 
 namespace vern {
 
@@ -93,14 +94,14 @@ struct Nil {
 
 // T(dx, dy, dz){ op }: move along the scope's own axes.
 struct Translate {
-  std::array<Size, 3> offset;
+  Triple<Size> offset;
   NodeId child = 0;
   friend bool operator==(const Translate&, const Translate&) = default;
 };
 
 // S(sx, sy, sz){ op }: resize, origin kept.
 struct Scale {
-  std::array<Size, 3> size;
+  Triple<Size> size;
   NodeId child = 0;
   friend bool operator==(const Scale&, const Scale&) = default;
 };
@@ -131,7 +132,7 @@ struct Comp {
 
 // colour(r, g, b): a `rect` terminal with that colour (components in 0..1).
 struct Colour {
-  Expr red, green, blue;
+  Triple<Expr> rgb;  // red, green, blue
   friend bool operator==(const Colour&, const Colour&) = default;
 };
 

@@ -503,22 +503,22 @@ class Parser {
     if (first.kind == TokenKind::Identifier && peek(1).kind == TokenKind::RParen &&
         find_named_colour(first.text, rgb)) {
       next();
-      c = {Expr::number(rgb[0], first.loc), Expr::number(rgb[1], first.loc), Expr::number(rgb[2], first.loc)};
+      c.rgb = {Expr::number(rgb[0], first.loc), Expr::number(rgb[1], first.loc), Expr::number(rgb[2], first.loc)};
     } else if (first.kind == TokenKind::String) {
       next();
       if (!parse_hex_colour(first.value, rgb))
         error(first.loc, "'" + first.value + "' is not a colour", "write colour(\"#rrggbb\"), colour(red) or colour(r, g, b)");
-      c = {Expr::number(rgb[0], first.loc), Expr::number(rgb[1], first.loc), Expr::number(rgb[2], first.loc)};
+      c.rgb = {Expr::number(rgb[0], first.loc), Expr::number(rgb[1], first.loc), Expr::number(rgb[2], first.loc)};
     } else if (first.kind == TokenKind::Identifier && peek(1).kind == TokenKind::RParen && !is_value_name(first.text)) {
       std::vector<std::string> names;
       for (const auto& n : kColours) names.emplace_back(n.name);
       error(first.loc, "unknown colour '" + std::string(first.text) + "'", suggest(first.text, names, "the colours"));
     } else {
-      c.red = expression();
+      c.rgb[0] = expression();
       expect(TokenKind::Comma, "between colour components (r, g, b from 0 to 1)", form);
-      c.green = expression();
+      c.rgb[1] = expression();
       expect(TokenKind::Comma, "between colour components (r, g, b from 0 to 1)", form);
-      c.blue = expression();
+      c.rgb[2] = expression();
     }
     expect(TokenKind::RParen, "after the colour", form);
     return add(std::move(c), loc);

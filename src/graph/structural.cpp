@@ -59,7 +59,7 @@ std::size_t hash_operation(const Operation& op, ChildHash child, LabelHash label
                    for (const auto& p : c.parts) h = hash_combine(hash_combine(h, std::size_t(p.face)), child(p.child));
                  },
                  [&](const Colour& c) {
-                   h = hash_combine(hash_combine(hash_combine(h, c.red.hash()), c.green.hash()), c.blue.hash());
+                   h = hash_combine(hash_combine(hash_combine(h, c.rgb[0].hash()), c.rgb[1].hash()), c.rgb[2].hash());
                  },
              },
              op);

@@ -37,8 +37,9 @@ class Layout {
   void indent() { add(Kind::Indent); }
   void dedent() { add(Kind::Dedent); }
 
-  std::string render(const WriteOptions& options) const {
-    std::string out;
+  // Appends the laid-out text to out: a million-part rule is most of the
+  // grammar's text, not worth a copy.
+  void render(std::string& out, const WriteOptions& options) const {
     int column = 0;
     bool flat = false;  // outside every group, a line break would be a newline
     std::vector<bool> outer_flat;
@@ -74,7 +75,6 @@ class Layout {
         case Kind::Dedent: indents.pop_back(); break;
       }
     }
-    return out;
   }
 
  private:
@@ -86,7 +86,14 @@ class Layout {
   };
 
   void add(Kind kind, std::string_view s = {}) {
-    pieces_.push_back({kind, static_cast<std::uint32_t>(text_.size()), static_cast<std::uint32_t>(s.size()), columns(s)});
+    // Texts in a row lay out as one (fits() only ever subtracts their
+    // columns): one piece, a third fewer pieces in all.
+    if (kind == Kind::Text && !pieces_.empty() && pieces_.back().kind == Kind::Text) {
+      pieces_.back().size += static_cast<std::uint32_t>(s.size());
+      pieces_.back().columns += columns(s);
+    } else {
+      pieces_.push_back({kind, static_cast<std::uint32_t>(text_.size()), static_cast<std::uint32_t>(s.size()), columns(s)});
+    }
     text_.append(s);
   }
 
@@ -340,13 +347,9 @@ class OpWriter {
     std::visit(
         Overload{
             [&](const Split& s) {
-              std::vector<std::string> labels;
-              std::vector<NodeId> kids;
-              for (const auto& p : s.parts) {
-                labels.push_back(size(p.size));
-                kids.push_back(p.child);
-              }
-              parts(out, "split(" + axis(s.axis) + ")", labels, kids);
+              parts(out, "split(" + axis(s.axis) + ")", s.parts.size(), [&](std::size_t i) {
+                return std::pair{size(s.parts[i].size), s.parts[i].child};
+              });
             },
             [&](const Repeat& r) {
               wrap(out, "repeat(" + axis(r.axis) + ", " + expr(r.size) + ")", r.child);
@@ -377,10 +380,10 @@ class OpWriter {
                 labels.emplace_back(face_name(p.face));
                 kids.push_back(p.child);
               }
-              parts(out, "comp(f)", labels, kids);
+              parts(out, "comp(f)", kids.size(), [&](std::size_t i) { return std::pair{labels[i], kids[i]}; });
             },
             [&](const Colour& c) {
-              out.text("colour(" + expr(c.red) + ", " + expr(c.green) + ", " + expr(c.blue) + ")");
+              out.text("colour(" + expr(c.rgb[0]) + ", " + expr(c.rgb[1]) + ", " + expr(c.rgb[2]) + ")");
             },
         },
         g_.op(id));
@@ -394,7 +397,7 @@ class OpWriter {
     return expr(e);
   }
 
-  std::string sizes(const std::array<Size, 3>& s) const {
+  std::string sizes(const Triple<Size>& s) const {
     return size(s[0]) + ", " + size(s[1]) + ", " + size(s[2]);
   }
 
@@ -418,17 +421,21 @@ class OpWriter {
   //   head{
   //       a : op |
   //       b : op }
-  void parts(Layout& out, const std::string& head, const std::vector<std::string>& labels,
-             const std::vector<NodeId>& kids) const {
-    if (kids.empty()) cannot_write(head + " has no parts");
+  // part(i) gives the i-th part's label and node: no lists of them are
+  // made (a million-part grammar has hundreds of thousands of splits).
+  template <class Part>
+  void parts(Layout& out, const std::string& head, std::size_t count, Part part) const {
+    if (count == 0) cannot_write(head + " has no parts");
     out.open();
     out.text(head + "{");
     out.indent();
-    for (std::size_t i = 0; i < kids.size(); ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto [label, kid] = part(i);
       out.line();
-      out.text(labels[i] + " : ");
-      op(out, kids[i]);
-      if (i + 1 < kids.size()) out.text(" |");
+      out.text(label);
+      out.text(" : ");
+      op(out, kid);
+      if (i + 1 < count) out.text(" |");
     }
     out.dedent();
     out.text(" }");
@@ -466,7 +473,8 @@ class OpWriter {
 
 bool is_one(const Expr& e) { return e.literal() == 1.0; }
 
-std::string rule_text(const Grammar& g, const Rule& rule, const WriteOptions& options) {
+// Appends the rule's lines to out, without the last line break.
+void write_rule(std::string& out, const Grammar& g, const Rule& rule, const WriteOptions& options) {
   check_name(rule.label, "rule", true);
   std::string head = rule.label;
   if (!rule.params.empty()) {
@@ -489,7 +497,8 @@ std::string rule_text(const Grammar& g, const Rule& rule, const WriteOptions& op
     Layout line;
     line.text(head + " --> ");
     w.op(line, rule.body);
-    return line.render(options);
+    line.render(out, options);
+    return;
   }
 
   // One line per alternative. The parser gathers rules sharing a label into
@@ -497,7 +506,6 @@ std::string rule_text(const Grammar& g, const Rule& rule, const WriteOptions& op
   // condition or a priority; so a lone option always writes one of them.
   if (choose->options.empty()) cannot_write("rule '" + rule.label + "' chooses among no options");
   const bool lone = choose->options.size() == 1;
-  std::string text;
   for (const ChooseOption& option : choose->options) {
     Layout line;
     std::string start = head;
@@ -507,10 +515,9 @@ std::string rule_text(const Grammar& g, const Rule& rule, const WriteOptions& op
     if (option.priority.empty()) cannot_write("an option of rule '" + rule.label + "' has no priority");
     if (!is_one(option.priority) || (lone && option.condition.empty()))
       line.text(" : " + w.expr(option.priority));
-    if (!text.empty()) text += '\n';
-    text += line.render(options);
+    if (&option != &choose->options.front()) out += '\n';
+    line.render(out, options);
   }
-  return text;
 }
 
 }  // namespace
@@ -523,7 +530,9 @@ std::string write_operation(const Grammar& g, NodeId node, const std::vector<std
                             const WriteOptions& options) {
   Layout out;
   OpWriter(g, param_names).op(out, node);
-  return out.render(options);
+  std::string text;
+  out.render(text, options);
+  return text;
 }
 
 std::string write_grammar(const Grammar& g, const WriteOptions& options) {
@@ -581,7 +590,7 @@ std::string write_grammar(const Grammar& g, const WriteOptions& options) {
     if (!seen.insert(rule.label).second)
       cannot_write("two rules are labelled '" + rule.label + "'",
                    "alternatives of one label must be one rule whose body is a choose");
-    out += rule_text(g, rule, options);
+    write_rule(out, g, rule, options);
     out += '\n';
   }
   return out;

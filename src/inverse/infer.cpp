@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "graph/alongside.hpp"
 #include "graph/parallel_for.hpp"
 #include "inverse/box_split.hpp"
 #include "inverse/merge.hpp"
@@ -21,21 +22,29 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
     for (const auto& e : examples) out.tolerance = std::max(out.tolerance, default_tolerance(e));
 
   // Parts whose mesh is their label's turned become R(...){ I(label) }.
-  PartOrientations oriented =
-      orient_parts(examples, options.primitives ? *options.primitives : PrimitiveLibrary::builtin(), out.tolerance);
-  out.unturned_parts = oriented.unmatched;
-
-  // Examples split in parallel; their graphs go into one interned grammar,
-  // in order, on this thread.
+  // Orienting and splitting only read the examples, so one runs beside the
+  // other: even a single large example keeps two cores busy. The examples
+  // split in parallel; their graphs then go into one interned grammar, in
+  // order, on this thread.
+  PartOrientations oriented;
   std::vector<SplitTree> trees(examples.size());
-  parallel_for(
-      examples.size(), options.threads,
-      [&](std::size_t i) {
-        trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{out.tolerance}, examples[i].source);
+  run_alongside(
+      options.threads,
+      [&] {
+        oriented =
+            orient_parts(examples, options.primitives ? *options.primitives : PrimitiveLibrary::builtin(), out.tolerance);
       },
-      [&](std::size_t done) {
-        if (options.progress) options.progress(done, examples.size());
+      [&] {
+        parallel_for(
+            examples.size(), options.threads,
+            [&](std::size_t i) {
+              trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{out.tolerance}, examples[i].source);
+            },
+            [&](std::size_t done) {
+              if (options.progress) options.progress(done, examples.size());
+            });
       });
+  out.unturned_parts = oriented.unmatched;
   Grammar graph;
   // About 1.4 graph nodes per part for large examples (1.36 measured at a
   // million parts, through tidying): room for one and a half.

@@ -19,6 +19,9 @@ class RuleMaker {
         leaf_copies_(from.node_count(), kNone), labels_(from.node_count()) {
     out_.scope = from.scope;
     out_.primitives = from.primitives;
+    // The copy has at most the graph's nodes and a call per rule: room for
+    // them up front, so the copy's arena is never moved as it grows.
+    out_.reserve(from.node_count() + from.node_count() / 8);
   }
 
   Grammar run(NodeId root) {
@@ -40,7 +43,7 @@ class RuleMaker {
     // A recursive rule inference made (self_nesting.hpp): its body is
     // reached through the call.
     if (const auto* call = std::get_if<Call>(&from_.op(id))) count_uses(from_.rules[call->rule].body);
-    for (NodeId child : node_children(from_.op(id))) count_uses(child);
+    for_each_child(from_.op(id), [&](NodeId child) { count_uses(child); });
   }
 
   bool is_leaf(NodeId id) const {
@@ -65,12 +68,12 @@ class RuleMaker {
     if (const auto* p = std::get_if<Primitive>(&from_.op(id))) {
       known.labels.push_back(p->label);
     } else {
-      for (NodeId child : node_children(from_.op(id))) {
-        if (known.labels.size() >= 3) break;
+      for_each_child(from_.op(id), [&](NodeId child) {
+        if (known.labels.size() >= 3) return;  // the rest cannot add one
         for (LabelId l : labels_below(child))
           if (known.labels.size() < 3 && std::find(known.labels.begin(), known.labels.end(), l) == known.labels.end())
             known.labels.push_back(l);
-      }
+      });
     }
     known.done = true;
     return known.labels;

@@ -30,16 +30,23 @@ double shortest_decimal(double v, double tolerance, int direction) {
 }
 
 std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes, int max_whole) {
-  double smallest = 0;
+  double smallest = 0, largest = 0;
   for (double s : sizes) {
     if (!(s > 0)) return std::nullopt;
     smallest = smallest == 0 ? s : std::min(smallest, s);
+    largest = std::max(largest, s);
   }
   // The smallest part is some whole k of the unit; try k = 1, 2, ...
   std::vector<double> out;
   out.reserve(sizes.size());
   for (int k = 1; k <= max_whole; ++k) {
     const double unit = smallest / k;
+    // The largest part is the likeliest to fail (most splits have no whole
+    // ratios), and once it needs more than max_whole units it does for
+    // every larger k too (the unit only shrinks): no k beyond can work.
+    const double most = std::round(largest / unit);
+    if (most > max_whole) break;
+    if (std::abs(largest / unit - most) > 1e-9 * most) continue;
     out.clear();
     bool ok = true;
     for (double s : sizes) {
@@ -152,24 +159,34 @@ class Tidier {
   }
 
   NodeId tidy_split(NodeId id) {
-    const auto [children, changed] = map_children(g_.op(id), [&](NodeId c) { return run(c); });
-    bool same = !changed;
+    // The children first: they may grow the arena, so the split is looked
+    // up again for each. Their tidied ids wait on a stack that the calls
+    // inside leave as they found it, so no split allocates its own list.
+    const std::size_t n = std::get<Split>(g_.op(id)).parts.size();
+    const std::size_t base = children_.size();
+    bool same = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      const NodeId child = std::get<Split>(g_.op(id)).parts[i].child;
+      const NodeId tidied = run(child);
+      same = same && tidied == child;
+      children_.push_back(tidied);
+    }
     // The new sizes: literals as numbers, anything else as an expression.
+    // Scratch lists shared by every split: nothing below runs a child.
     const Split& s = std::get<Split>(g_.op(id));  // no nodes are added until the end
-    const std::size_t n = s.parts.size();
-    std::vector<double> number(n, 0.0);
-    std::vector<std::optional<Expr>> other(n);
-    std::vector<double> relative;
+    number_.assign(n, 0.0);
+    other_.assign(n, std::nullopt);
+    relative_.clear();
     bool all_relative_literals = true;
     for (const auto& p : s.parts) {
       const auto v = p.size.value.literal();
       if (!p.size.relative || !v) all_relative_literals = false;
-      else relative.push_back(*v);
+      else relative_.push_back(*v);
     }
     std::optional<std::vector<double>> ratios;
-    if (all_relative_literals) ratios = whole_ratios(relative);
+    if (all_relative_literals) ratios = whole_ratios(relative_);
     if (ratios) {
-      number = *ratios;
+      number_ = *ratios;
     } else {
       // Literal sizes: round the cut positions, not the sizes, so errors do
       // not add up along a split of many parts; each size is then the
@@ -179,34 +196,41 @@ class Tidier {
         const auto v = s.parts[i].size.value.literal();
         if (!v) {
           // Past a range the cut positions are unknown: start again.
-          other[i] = tidy(s.parts[i].size.value);
+          other_[i] = tidy(s.parts[i].size.value);
           position = rounded_previous = 0;
           continue;
         }
         position += *v;
         const double rounded = shortest_decimal(position, tol_);
-        number[i] = shortest_decimal(rounded - rounded_previous, 1e-12 * std::max(1.0, rounded));
+        number_[i] = shortest_decimal(rounded - rounded_previous, 1e-12 * std::max(1.0, rounded));
         rounded_previous = rounded;
       }
     }
     for (std::size_t i = 0; i < n && same; ++i)
-      same = other[i] ? *other[i] == s.parts[i].size.value : is_number(s.parts[i].size.value, number[i]);
-    if (same) return id;
+      same = other_[i] ? *other_[i] == s.parts[i].size.value : is_number(s.parts[i].size.value, number_[i]);
+    if (same) {
+      children_.resize(base);
+      return id;
+    }
 
     // Built afresh rather than copied: the old sizes would only be thrown away.
     Split tidied;
     tidied.axis = s.axis;
     tidied.parts.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
-      Expr size = other[i] ? std::move(*other[i]) : Expr::number(number[i]);
-      tidied.parts.push_back({Size{std::move(size), s.parts[i].size.relative}, children[i]});
+      Expr size = other_[i] ? std::move(*other_[i]) : Expr::number(number_[i]);
+      tidied.parts.push_back({Size{std::move(size), s.parts[i].size.relative}, children_[base + i]});
     }
+    children_.resize(base);
     return g_.intern({std::move(tidied), g_.node(id).loc});  // s may be stale from here
   }
 
   Grammar& g_;
   double tol_;
   std::vector<NodeId> memo_;  // by node id: its tidied node, or kNotYet
+  std::vector<NodeId> children_;  // tidied children of the splits being tidied, innermost last
+  std::vector<double> number_, relative_;  // scratch of the split being tidied
+  std::vector<std::optional<Expr>> other_;
 };
 
 }  // namespace
