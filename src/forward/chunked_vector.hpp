@@ -12,18 +12,28 @@
 
 namespace vern {
 
+// The first block is an ordinary vector that grows up to a block's size:
+// a file of a few parts (every built-in primitive is read at start-up)
+// then allocates what it holds, not a 1.5 MB block per array, which cost
+// more than the reading (and kept a sanitizer's freed-memory quarantine
+// full). Later blocks are allocated whole and left uninitialised.
 template <class T>
 class ChunkedVector {
  public:
   std::size_t size() const { return size_; }
 
-  const T& operator[](std::size_t i) const { return blocks_[i >> kShift][i & kMask]; }
-  T& operator[](std::size_t i) { return blocks_[i >> kShift][i & kMask]; }
+  const T& operator[](std::size_t i) const { return i < kBlock ? first_[i] : blocks_[(i >> kShift) - 1][i & kMask]; }
+  T& operator[](std::size_t i) { return i < kBlock ? first_[i] : blocks_[(i >> kShift) - 1][i & kMask]; }
   const T& back() const { return (*this)[size_ - 1]; }
 
   void push_back(const T& value) {
-    if ((size_ & kMask) == 0 && (size_ >> kShift) == blocks_.size()) blocks_.push_back(std::make_unique<T[]>(kBlock));
-    (*this)[size_++] = value;
+    if (size_ < kBlock) {
+      first_.push_back(value);
+    } else {
+      if ((size_ & kMask) == 0) blocks_.push_back(std::make_unique_for_overwrite<T[]>(kBlock));
+      blocks_.back()[size_ & kMask] = value;
+    }
+    ++size_;
   }
 
   // Grows to n elements, the new ones equal to value (never shrinks).
@@ -36,7 +46,8 @@ class ChunkedVector {
   static constexpr std::size_t kBlock = std::size_t{1} << kShift;
   static constexpr std::size_t kMask = kBlock - 1;
 
-  std::vector<std::unique_ptr<T[]>> blocks_;
+  std::vector<T> first_;
+  std::vector<std::unique_ptr<T[]>> blocks_;  // elements kBlock and on
   std::size_t size_ = 0;
 };
 
