@@ -249,7 +249,7 @@ TEST(ObjReader, ReadsManyObjectsLinearly) {
   EXPECT_EQ(objects.back().mesh.positions[0], glm::dvec3(n - 1, 0, 0));
 }
 
-// Large texts span many read-ahead batches (about a megabyte each): the
+// Large texts span many read-ahead batches (a quarter megabyte each): the
 // objects, the line numbers in them and in errors, and a `\` continued
 // statement across a batch's edge come out as when read on one thread.
 std::string many_boxes(std::size_t boxes) {

@@ -91,9 +91,10 @@ struct Batch {
 };
 
 // A batch is about this many bytes of text: a lock per batch, not per
-// line, and a few batches waiting at most.
-constexpr std::size_t kBatchBytes = std::size_t{1} << 20;
-constexpr std::size_t kMaxWaiting = 4;
+// line (some ten thousand lines), and a few batches waiting at most: read
+// ahead is at most a few megabytes, whatever the file.
+constexpr std::size_t kBatchBytes = std::size_t{1} << 18;
+constexpr std::size_t kMaxWaiting = 2;
 
 }  // namespace
 
@@ -125,6 +126,7 @@ struct ObjLines::Impl {
         }
       }
       b.clear();
+      b.text.reserve(kBatchBytes);  // once per batch: batches are reused
       while (b.text.size() < kBatchBytes) {
         std::string_view line;
         bool last = false;
