@@ -128,8 +128,11 @@ int run(int argc, char** argv) {
   // Read in parallel; the first unreadable file (in the order given) is
   // the one reported, whatever the thread count.
   std::vector<Example> examples(files.size());
+  // One file alone gets a second thread of its own, to read its text ahead
+  // (a million-part OBJ is a quarter of the time); several share them.
+  const unsigned per_file = files.size() == 1 ? options.threads : 1;
   parallel_for(
-      files.size(), options.threads, [&](std::size_t i) { examples[i] = load_example(files[i], limits); },
+      files.size(), options.threads, [&](std::size_t i) { examples[i] = load_example(files[i], limits, per_file); },
       [&](std::size_t done) {
         if (show_progress && (done % 10 == 0 || done == files.size()))
           std::fprintf(stderr, "\rreading examples %zu/%zu", done, files.size());

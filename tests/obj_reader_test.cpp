@@ -12,18 +12,48 @@
 namespace vern {
 namespace {
 
+bool same_objects(const std::vector<ObjObject>& a, const std::vector<ObjObject>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Mesh &m = a[i].mesh, &n = b[i].mesh;
+    if (a[i].name != b[i].name || a[i].line != b[i].line || m.positions != n.positions || m.normals != n.normals ||
+        m.uvs != n.uvs || m.corners != n.corners || m.face_sizes != n.face_sizes)
+      return false;
+  }
+  return true;
+}
+
+// Read with the lines read ahead on a second thread.
+std::vector<ObjObject> parse_ahead(const std::string& text, const ObjLimits& limits = {}) {
+  std::istringstream in(text);
+  std::vector<ObjObject> objects;
+  read_obj(in, "test.obj", limits, [&](const ObjObject& o) { objects.push_back(o); }, true);
+  return objects;
+}
+
+// Read both ways, which must agree.
 std::vector<ObjObject> parse(const std::string& text) {
   std::istringstream in(text);
-  return read_obj(in, "test.obj");
+  std::vector<ObjObject> objects = read_obj(in, "test.obj");
+  EXPECT_TRUE(same_objects(objects, parse_ahead(text)));
+  return objects;
 }
 
 // The message of the error that reading text throws (empty, and a test
-// failure, when it reads fine).
+// failure, when it reads fine); reading ahead gives the same.
 std::string error_of(const std::string& text) {
+  std::string ahead;
   try {
-    parse(text);
+    parse_ahead(text);
+  } catch (const Error& e) {
+    ahead = e.what();
+  }
+  try {
+    std::istringstream in(text);
+    read_obj(in, "test.obj");
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::Input) << e.what();
+    EXPECT_EQ(ahead, e.what());
     return e.what();
   }
   ADD_FAILURE() << "no error for:\n" << text;
@@ -217,6 +247,53 @@ TEST(ObjReader, ReadsManyObjectsLinearly) {
   EXPECT_EQ(objects.back().name, "part19999");
   EXPECT_EQ(objects.back().mesh.positions.size(), 3u);
   EXPECT_EQ(objects.back().mesh.positions[0], glm::dvec3(n - 1, 0, 0));
+}
+
+// Large texts span many read-ahead batches (a quarter megabyte each): the
+// objects, the line numbers in them and in errors, and a `\` continued
+// statement across a batch's edge come out as when read on one thread.
+std::string many_boxes(std::size_t boxes) {
+  std::string text;
+  for (std::size_t b = 0; b < boxes; ++b) {
+    const std::size_t first = 8 * b + 1;
+    text += "o part." + std::to_string(b) + "\n";
+    for (int c = 0; c < 8; ++c)
+      text += "v " + std::to_string(b) + "." + std::to_string(c & 1) + " " + std::to_string((c >> 1) & 1) + " -" +
+              std::to_string(c >> 2) + ".25\n";
+    for (int f = 0; f < 6; ++f)
+      text += "f " + std::to_string(first + f % 8) + " " + std::to_string(first + (f + 1) % 8) + " " +
+              std::to_string(first + (f + 2) % 8) + "\n";
+    if (b % 5000 == 17) text += "v 1 2 \\\n3\r\n# a comment\n\nvn 0 0 1\nf 1//1 2//1 3//1\n";
+  }
+  return text;
+}
+
+TEST(ObjReader, ReadAheadAgreesOnLargeTexts) {
+  const std::string text = many_boxes(40000);
+  ASSERT_GT(text.size(), std::size_t{5} << 20);
+  std::istringstream in(text);
+  const std::vector<ObjObject> objects = read_obj(in, "test.obj");
+  ASSERT_EQ(objects.size(), 40000u);
+  EXPECT_TRUE(same_objects(objects, parse_ahead(text)));
+  // An error far into the file, and a limit, name the same lines.
+  const std::size_t middle = text.find('\n', text.size() / 2) + 1;
+  for (const std::string& bad : {text + "f 1 2 999999999\n", text.substr(0, middle) + "v 1 x 2\n" + text}) {
+    EXPECT_NE(error_of(bad).find("test.obj:"), std::string::npos);
+  }
+  std::string limited, ahead;
+  try {
+    std::istringstream again(text);
+    read_obj(again, "test.obj", {30000, "fewer"});
+  } catch (const Error& e) {
+    limited = e.what();
+  }
+  try {
+    parse_ahead(text, {30000, "fewer"});
+  } catch (const Error& e) {
+    ahead = e.what();
+  }
+  EXPECT_NE(limited.find("more than 30000 objects"), std::string::npos) << limited;
+  EXPECT_EQ(limited, ahead);
 }
 
 }  // namespace

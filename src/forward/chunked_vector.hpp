@@ -42,7 +42,9 @@ class ChunkedVector {
   }
 
  private:
-  static constexpr std::size_t kShift = 16;
+  // 4096 elements (96 KB of vertices): few blocks for a large file, and
+  // little for the many small ones (the built-in primitives' meshes).
+  static constexpr std::size_t kShift = 12;
   static constexpr std::size_t kBlock = std::size_t{1} << kShift;
   static constexpr std::size_t kMask = kBlock - 1;
 

@@ -11,7 +11,8 @@
 #include <string_view>
 
 #include "forward/chunked_vector.hpp"
-#include "forward/plain_number.hpp"
+#include "forward/obj_lines.hpp"
+#include "forward/obj_plain_line.hpp"
 #include "graph/error.hpp"
 #include "graph/utf8.hpp"
 
@@ -60,58 +61,6 @@ std::string_view rest_of_line(std::string_view line, const Token& keyword) {
   return line.substr(b, e - b);
 }
 
-// The lines of a stream, read in large blocks: each line is a view into the
-// block, valid until the next call, without its line break. A line longer
-// than kMaxObjLine comes out cut at kMaxObjLine + 1 bytes (the caller
-// refuses it), so a file without line breaks costs one block, not its size.
-class LineSplitter {
- public:
-  explicit LineSplitter(std::istream& in) : in_(in), block_(4 * kMaxObjLine) {}
-
-  // The next line; `last` when it ends the stream without a line break.
-  bool next(std::string_view& line, bool& last) {
-    while (true) {
-      const char* begin = block_.data() + begin_;
-      const std::size_t available = end_ - begin_;
-      const std::size_t searched = std::min(available, kMaxObjLine + 1);
-      if (const void* found = std::memchr(begin, '\n', searched)) {
-        const auto length = static_cast<std::size_t>(static_cast<const char*>(found) - begin);
-        return take(line, last, length, length + 1, false);
-      }
-      if (available > kMaxObjLine) return take(line, last, searched, searched, false);
-      if (at_end_) return available != 0 && take(line, last, available, available, true);
-      refill();
-    }
-  }
-
-  bool failed() const { return failed_; }
-
- private:
-  bool take(std::string_view& line, bool& last, std::size_t length, std::size_t consumed, bool at_end) {
-    line = {block_.data() + begin_, length};
-    last = at_end;
-    begin_ += consumed;
-    return true;
-  }
-
-  // Moves the unfinished line to the front and fills the rest of the
-  // block; the line is at most kMaxObjLine bytes, so room is left.
-  void refill() {
-    std::memmove(block_.data(), block_.data() + begin_, end_ - begin_);
-    end_ -= begin_;
-    begin_ = 0;
-    in_.read(block_.data() + end_, static_cast<std::streamsize>(block_.size() - end_));
-    end_ += static_cast<std::size_t>(in_.gcount());
-    failed_ = in_.bad();
-    at_end_ = !in_ || in_.gcount() == 0;
-  }
-
-  std::istream& in_;
-  std::vector<char> block_;
-  std::size_t begin_ = 0, end_ = 0;  // the unread bytes of block_
-  bool at_end_ = false, failed_ = false;
-};
-
 // A run of faces under one `o` or `g` statement.
 struct Segment {
   std::string name;
@@ -133,11 +82,13 @@ class Reader {
     // Nearly every line of a large file is a plain `v` or `f`: read those
     // without tokens; anything unusual is read again below, which also
     // reports any error.
-    if (line.size() > 2 && line[1] == ' ' &&
-        ((line[0] == 'v' && read_plain_vertex(line)) || (line[0] == 'f' && read_plain_face(line)))) {
-      recognised_ = true;
+    glm::dvec3 v;
+    if (parse_plain_vertex(line, v)) {
+      add_plain_vertex(v);
       return;
     }
+    plain_indices_.clear();
+    if (parse_plain_face(line, plain_indices_) && add_plain_face(plain_indices_.data(), plain_indices_.size())) return;
     if (const std::size_t nul = line.find('\0'); nul != std::string_view::npos) {
       error(nul + 1, "the file contains a NUL byte: it is not an OBJ text file",
             "give a Wavefront OBJ text file (for glTF or GLB examples use a .gltf/.glb path)");
@@ -181,6 +132,16 @@ class Reader {
       return;  // an extension some exporter added: nothing we need
     }
     recognised_ = true;
+  }
+
+  // A line as ObjLines gives it: one the read-ahead parsed goes straight
+  // in (a face only if each index names a vertex above it); any other as
+  // read_line takes it.
+  void read_line(const ObjLine& l, std::string_view line, std::uint32_t number) {
+    line_ = number;
+    if (l.plain == PlainLine::Vertex) return add_plain_vertex(l.vertex);
+    if (l.plain == PlainLine::Face && add_plain_face(l.indices, l.index_count)) return;
+    read_line(line, number);
   }
 
   // Hands over what is still pending at the end of the file.
@@ -404,52 +365,23 @@ class Reader {
     }
   }
 
-  static const char* skip_blanks(const char* p, const char* end) {
-    while (p != end && (*p == ' ' || *p == '\t')) ++p;
-    return p;
-  }
-
-  // `v x y z` of three plain decimals within kMaxObjCoordinate and
-  // nothing else: added, true. Otherwise nothing is added.
-  bool read_plain_vertex(std::string_view line) {
-    const char* p = line.data() + 2;
-    const char* const end = line.data() + line.size();
-    glm::dvec3 v;
-    for (int i = 0; i < 3; ++i) {
-      p = skip_blanks(p, end);
-      p = scan_plain_decimal(p, end, v[i]);
-      if (p == nullptr || (p != end && *p != ' ' && *p != '\t') || std::abs(v[i]) > kMaxObjCoordinate) return false;
-    }
-    if (skip_blanks(p, end) != end) return false;
+  void add_plain_vertex(const glm::dvec3& v) {
     positions_.push_back(v);
-    return true;
+    recognised_ = true;
   }
 
-  // `f i j k ...` of at least three plain vertex indices, each naming a
-  // vertex above it, and nothing else: added, true. Otherwise nothing is
-  // added.
-  bool read_plain_face(std::string_view line) {
-    const char* p = skip_blanks(line.data() + 2, line.data() + line.size());
-    const char* const end = line.data() + line.size();
-    const std::size_t first = corners_.size();
-    while (p != end) {
-      std::uint32_t index = 0;
-      p = scan_plain_index(p, end, index);
-      if (p == nullptr || (p != end && *p != ' ' && *p != '\t') || index == 0 || index > positions_.size()) {
-        corners_.resize(first);
-        return false;
-      }
+  // The face of a plain line's indices (from 1) if each names a vertex
+  // above it: added, true. Otherwise nothing is added.
+  bool add_plain_face(const std::uint32_t* indices, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k)
+      if (indices[k] > positions_.size()) return false;
+    for (std::size_t k = 0; k < n; ++k) {
       Mesh::Corner c;
-      c.position = index - 1;
+      c.position = indices[k] - 1;
       corners_.push_back(c);
-      p = skip_blanks(p, end);
-    }
-    const std::size_t n = corners_.size() - first;
-    if (n < 3) {
-      corners_.resize(first);
-      return false;
     }
     add_face(n);
+    recognised_ = true;
     return true;
   }
 
@@ -469,6 +401,7 @@ class Reader {
   const ObjObjectSink& each_;
   std::uint32_t line_ = 0;
   std::vector<Token> tokens_;
+  std::vector<std::uint32_t> plain_indices_;  // a plain face's, reused
   bool recognised_ = false;
   bool any_object_ = false;
   bool object_has_faces_ = false;  // the current `o` segment, or the faces before any `o`
@@ -496,15 +429,17 @@ class Reader {
 
 }  // namespace
 
-void read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits, const ObjObjectSink& each) {
+void read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits, const ObjObjectSink& each,
+              bool read_ahead) {
   Reader reader(source_name, limits, each);
-  LineSplitter lines(in);
+  ObjLines lines(in, read_ahead);
   std::string joined;  // a statement continued over lines with a trailing '\'
   std::uint32_t number = 0;
   std::uint32_t statement_line = 0;
-  std::string_view line;
-  bool last = false;
-  while (lines.next(line, last)) {
+  ObjLine next;
+  while (lines.next(next)) {
+    std::string_view line = next.text;
+    const bool last = next.last;
     ++number;
     // `got` counts the line break too, as std::istream::getline did.
     const std::size_t got = line.size() + (last ? 0 : 1);
@@ -524,7 +459,7 @@ void read_obj(std::istream& in, const std::string& source_name, const ObjLimits&
       reader.read_line(joined, statement_line);
       joined.clear();
     } else {
-      reader.read_line(line, number);
+      reader.read_line(next, line, number);
     }
   }
   if (!joined.empty()) reader.read_line(joined, statement_line);
@@ -538,7 +473,8 @@ std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name
   return objects;
 }
 
-void read_obj_file(const std::filesystem::path& path, const ObjLimits& limits, const ObjObjectSink& each) {
+void read_obj_file(const std::filesystem::path& path, const ObjLimits& limits, const ObjObjectSink& each,
+                   bool read_ahead) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
@@ -550,7 +486,7 @@ void read_obj_file(const std::filesystem::path& path, const ObjLimits& limits, c
     fail(ErrorKind::Io, path.string(), {}, std::string("cannot open: ") + std::strerror(err),
          "check the path and the file's permissions");
   }
-  read_obj(in, path.string(), limits, each);
+  read_obj(in, path.string(), limits, each, read_ahead);
 }
 
 std::vector<ObjObject> read_obj_file(const std::filesystem::path& path, const ObjLimits& limits) {

@@ -72,8 +72,12 @@ std::vector<ObjObject> read_obj_file(const std::filesystem::path& path, const Ob
 // Streaming forms: each object, in the same order, is handed to `each` when
 // its last face has been read, in a buffer the next object reuses (copy
 // what you keep). An error may come after some objects were handed over.
+// read_ahead: a second thread reads and parses the lines ahead (the
+// objects and errors are the same; `each` runs on the calling thread).
 using ObjObjectSink = std::function<void(const ObjObject&)>;
-void read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits, const ObjObjectSink& each);
-void read_obj_file(const std::filesystem::path& path, const ObjLimits& limits, const ObjObjectSink& each);
+void read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits, const ObjObjectSink& each,
+              bool read_ahead = false);
+void read_obj_file(const std::filesystem::path& path, const ObjLimits& limits, const ObjObjectSink& each,
+                   bool read_ahead = false);
 
 }  // namespace vern

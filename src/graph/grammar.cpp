@@ -27,11 +27,15 @@ NodeId Grammar::intern(Node node) {
 
 void Grammar::reserve(std::size_t nodes) {
   nodes_.reserve(nodes);
-  while (interned_.size() < 2 * nodes) grow_intern_table();
+  std::size_t slots = std::max<std::size_t>(64, interned_.size());
+  while (slots < 2 * nodes) slots *= 2;
+  if (slots > interned_.size()) rehash(slots);  // once, not once per doubling
 }
 
-void Grammar::grow_intern_table() {
-  std::vector<InternSlot> old(std::max<std::size_t>(64, 2 * interned_.size()));
+void Grammar::grow_intern_table() { rehash(std::max<std::size_t>(64, 2 * interned_.size())); }
+
+void Grammar::rehash(std::size_t slots) {
+  std::vector<InternSlot> old(slots);
   old.swap(interned_);
   const std::size_t mask = interned_.size() - 1;
   for (const InternSlot& s : old) {

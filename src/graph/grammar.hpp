@@ -82,6 +82,7 @@ class Grammar {
   };
   static constexpr NodeId kEmptySlot = ~NodeId{0};
   void grow_intern_table();
+  void rehash(std::size_t slots);  // a power of two, more than twice the nodes interned
 
   std::vector<Node> nodes_;
   std::vector<std::string> labels_;

@@ -78,7 +78,7 @@ std::string too_many_parts_hint(const ExampleLimits& limits) {
          "), or split the example into smaller buildings";
 }
 
-Example load_obj_example(const fs::path& path, const ExampleLimits& limits) {
+Example load_obj_example(const fs::path& path, const ExampleLimits& limits, bool read_ahead) {
   Example ex;
   ex.source = path.string();
   PartAdder adder(ex);
@@ -91,7 +91,7 @@ Example load_obj_example(const fs::path& path, const ExampleLimits& limits) {
     } else if (!unnamed) {
       adder.add(o.name, o.line, o.mesh);
     }
-  });
+  }, read_ahead);
   if (unnamed) {
     fail(ErrorKind::Input, ex.source, {*unnamed, 1},
          "these faces have no name: inference cannot tell which primitive they are",
@@ -538,7 +538,7 @@ std::string describe_object(const LabelledBox& box) {
   return text;
 }
 
-Example load_example(const fs::path& path, const ExampleLimits& limits) {
+Example load_example(const fs::path& path, const ExampleLimits& limits, unsigned threads) {
   std::error_code ec;
   if (!fs::exists(path, ec)) {
     fail(ErrorKind::Io, path.string(), {}, "no such file", "check the path of the example");
@@ -549,7 +549,7 @@ Example load_example(const fs::path& path, const ExampleLimits& limits) {
   }
   Example ex;
   switch (format_of(path)) {
-    case Format::Obj: ex = load_obj_example(path, limits); break;
+    case Format::Obj: ex = load_obj_example(path, limits, threads != 1); break;
     case Format::Glb: ex = load_gltf_example(path, true, limits); break;
     case Format::Gltf: ex = load_gltf_example(path, false, limits); break;
     case Format::Other: not_an_example(path);

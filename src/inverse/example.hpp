@@ -63,7 +63,9 @@ struct ExampleLimits {
 // reached twice or naming a missing mesh, or is not a valid OBJ or glTF
 // file; Limit for more parts than limits.max_parts; Usage for another
 // extension. A part flat on one axis (a facade panel) is fine.
-Example load_example(const std::filesystem::path& path, const ExampleLimits& limits = {});
+// threads: 1 reads on this thread alone; otherwise a second thread reads an
+// OBJ's text ahead (obj_reader.hpp; the same example, and the same error).
+Example load_example(const std::filesystem::path& path, const ExampleLimits& limits = {}, unsigned threads = 1);
 
 // The files that command-line arguments name, in the order given; a folder
 // stands for every .obj, .glb and .gltf file directly inside it, sorted by
