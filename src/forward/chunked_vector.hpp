@@ -14,9 +14,10 @@ namespace vern {
 
 // The first block is an ordinary vector that grows up to a block's size:
 // a file of a few parts (every built-in primitive is read at start-up)
-// then allocates what it holds, not a 1.5 MB block per array, which cost
-// more than the reading (and kept a sanitizer's freed-memory quarantine
-// full). Later blocks are allocated whole and left uninitialised.
+// then allocates what it holds, not a whole block per array (with blocks
+// of 65536 that cost more than the reading, and kept a sanitizer's
+// freed-memory quarantine full). Later blocks are allocated whole and
+// left uninitialised.
 template <class T>
 class ChunkedVector {
  public:
