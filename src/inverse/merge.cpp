@@ -682,15 +682,17 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
     merged = Unifier(g, options, book, tile_counts, counts).run(nesting.root);
   }
   // The recursive rules' bodies are reached through calls, not children:
-  // each is settled, fitted and simplified like the root.
-  merged = settle_repeats(g, merged, tile_counts, book, options.tolerance);
-  for (Rule& rule : g.rules) rule.body = settle_repeats(g, rule.body, tile_counts, book, options.tolerance);
+  // each step below runs on them as on the root.
+  auto everywhere = [&](auto&& step) {
+    merged = step(merged);
+    for (Rule& rule : g.rules) rule.body = step(rule.body);
+  };
+  everywhere([&](NodeId n) { return settle_repeats(g, n, tile_counts, book, options.tolerance); });
   Fitter fitter(g, options, book);
-  merged = fitter.run(merged);
-  for (Rule& rule : g.rules) rule.body = fitter.run(rule.body);
+  everywhere([&](NodeId n) { return fitter.run(n); });
   Simplifier simplifier(g, options);
-  for (Rule& rule : g.rules) rule.body = simplifier.run(rule.body);
-  return simplifier.run(merged);
+  everywhere([&](NodeId n) { return simplifier.run(n); });
+  return merged;
 }
 
 }  // namespace vern

@@ -1,9 +1,9 @@
 #include "inverse/self_nesting.hpp"
 
 #include <algorithm>
-#include <map>
 #include <optional>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "graph/structural.hpp"
 #include "inverse/merge.hpp"
@@ -179,12 +179,11 @@ class Nester {
 
   std::size_t subgraph_size(NodeId root) const {
     std::vector<NodeId> stack{root};
-    std::vector<NodeId> seen;
+    std::unordered_set<NodeId> seen;
     while (!stack.empty()) {
       const NodeId id = stack.back();
       stack.pop_back();
-      if (std::find(seen.begin(), seen.end(), id) != seen.end()) continue;
-      seen.push_back(id);
+      if (!seen.insert(id).second) continue;
       for_each_child(g_.op(id), [&](NodeId c) { stack.push_back(c); });
     }
     return seen.size();
