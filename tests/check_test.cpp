@@ -543,3 +543,47 @@ TEST(CheckBundledAcross, AnExampleOfOneGrammarDoesNotFitAnother) {
 
 }  // namespace
 }  // namespace vern
+
+namespace vern {
+namespace {
+
+// The lengths a derivation gave its random parts, lined up by place: the
+// same rule run at two places is two places, one place in two examples is
+// one (joint_sizes.hpp reads sizes that vary together this way).
+TEST(CheckMatchedParts, EachRandomPartIsMeasuredAtItsOwnPlace) {
+  const Grammar g = parse_grammar(R"(
+@scope 12, 8, 10
+b --> split(x){ ~1 : col | ~1 : col }
+col --> split(z){ ~rand(1, 9) : I(rect) | ~rand(1, 9) : nil }
+)");
+  std::vector<std::vector<MatchedPart>> seen;
+  for (std::uint64_t seed : {1, 2}) {
+    const CheckedExample e = derive_example(g, seed);
+    const CheckResult r = check_example(g, e.boxes, e.size);
+    ASSERT_TRUE(r.derivable) << r.mismatch;
+    ASSERT_EQ(r.parts.size(), 4u);  // two parts in each of two columns
+    for (const MatchedPart& m : r.parts) EXPECT_EQ(m.split, g.rules[1].body);
+    // Each column's two parts fill its 10 m; the rect is as tall as its box.
+    for (std::size_t column = 0; column < 2; ++column) {
+      const MatchedPart& rect = r.parts[2 * column];
+      const MatchedPart& air = r.parts[2 * column + 1];
+      EXPECT_EQ(rect.path, air.path);
+      EXPECT_EQ(rect.part, 0u);
+      EXPECT_EQ(air.part, 1u);
+      EXPECT_NEAR(rect.length + air.length, 10.0, 1e-6);
+      const double x = 6.0 * static_cast<double>(column);
+      const auto top =
+          std::ranges::find_if(e.boxes, [&](const LabelledBox& b) { return std::abs(b.min.x - x) < 1e-6; });
+      ASSERT_NE(top, e.boxes.end());
+      EXPECT_NEAR(rect.length, top->max.z, 1e-6);
+    }
+    EXPECT_NE(r.parts[0].path, r.parts[2].path);
+    seen.push_back(r.parts);
+  }
+  EXPECT_EQ(seen[0][0].path, seen[1][0].path);
+  EXPECT_EQ(seen[0][2].path, seen[1][2].path);
+  EXPECT_NE(seen[0][0].length, seen[1][0].length);
+}
+
+}  // namespace
+}  // namespace vern

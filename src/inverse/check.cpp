@@ -135,6 +135,8 @@ struct WitnessLine {
   NodeId node = 0;                   // the operation
   std::size_t index = 0, count = 0;  // alternative index of count; part index
   double value = 0, size = 0;        // the value; Tiles: the count and a tile size (0: repeatN)
+  double length = 0;                 // Part: its length in metres
+  std::uint64_t path = 0;            // Part: the split's derivation_path
   std::string name;                  // Value: the parameter or constant
   Origin origin;                     // Value: what drew it
 };
@@ -350,6 +352,13 @@ class Matcher {
       return fail(rule.body, start, "cannot check: the start rule '" + rule.label + "' takes parameters");
     }
     return match(rule.body, start, all);
+  }
+
+  std::vector<MatchedPart> matched_parts() const {
+    std::vector<MatchedPart> out;
+    for (const WitnessLine& w : witness_)
+      if (w.kind == WitnessLine::Kind::Part) out.push_back({w.path, w.node, w.index, w.length, w.value});
+    return out;
   }
 
   std::vector<std::string> witness() const {
@@ -699,6 +708,8 @@ class Matcher {
     budget_.step();
     const Marks m = marks();
     ++depth_;
+    path_.push_back(derivation_path(path_.back(), id, slot_));
+    slot_ = 0;
     // Only where the grammar below has one outcome and places contents
     // with T or S: the one place the matcher may not follow it.
     const bool placed = deterministic_.placed(id);
@@ -708,6 +719,7 @@ class Matcher {
       restore(m, false);
       ok = derives_here(id, s, inside, before);
     }
+    path_.pop_back();
     --depth_;
     restore(m, ok);
     return ok;
@@ -1240,6 +1252,7 @@ class Matcher {
         w.count = op.options.size();
         witness_.push_back(std::move(w));
       }
+      slot_ = static_cast<std::uint32_t>(i + 1);
       if (match(op.options[i].child, s, inside)) return true;
       witness_.resize(mark);
     }
@@ -1557,6 +1570,10 @@ class Matcher {
   std::vector<Unknown> unknowns_;
   std::vector<std::pair<int, std::optional<double>>> trail_;
   std::vector<Frame> frames_;
+  // Where the node being matched lies (derivation_path), and the part or
+  // option the next match() enters through.
+  std::vector<std::uint64_t> path_{0};
+  std::uint32_t slot_ = 0;
   std::vector<WitnessLine> witness_;
   std::vector<std::int8_t> vanishes_;
   std::vector<std::int8_t> trails_;
@@ -1976,6 +1993,85 @@ class SplitSearch {
     return true;
   }
 
+  // Where the unknown enters the sizes of parts holding boxes linearly (a
+  // share ~s1 beside ~(10 - s1), a height 0.5 * s1 + 1), their lengths pin
+  // it down: the values solving those equations, to try before scanning.
+  // Only a shortcut: each is still tried in full.
+  std::vector<double> linear_guesses(Unknown& u) {
+    std::vector<double> out;
+    if (mode_ != Mode::Fill) return out;
+    const double lo = u.support.lower(), hi = u.support.upper();
+    const double u0 = lo + (hi - lo) / 4, step = (hi - lo) / 4;
+    if (!(step > 0)) return out;
+    std::vector<std::array<double, 3>> size(parts_.size());
+    std::vector<bool> linear(parts_.size(), true);
+    for (int k = 0; k < 3; ++k) {
+      u.value = u0 + k * step;
+      const bool ok = refresh_shares();
+      for (std::size_t i = 0; i < parts_.size(); ++i) {
+        if (!ok || !parts_[i].share.is_point()) linear[i] = false;
+        else size[i][static_cast<std::size_t>(k)] = parts_[i].share.lower();
+      }
+    }
+    u.value.reset();
+    refresh_shares();
+    struct SizeLine {  // size = a + b * unknown, on a part this long
+      double a, b, length;
+      bool relative;
+    };
+    std::vector<SizeLine> lines;
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+      const Placement& pl = placement_[i];
+      if (!linear[i] || !pl.filled || pl.floating) continue;
+      const auto& v = size[i];
+      const double b = (v[1] - v[0]) / step;
+      if (std::abs((v[2] - v[1]) - (v[1] - v[0])) > 1e-9 * std::max(1.0, std::abs(v[2]))) continue;
+      lines.push_back({v[0] - b * u0, b, at(pl.to) - at(pl.from), parts_[i].relative});
+    }
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      const SizeLine& p = lines[i];
+      if (!p.relative) {
+        if (p.b != 0) out.push_back((p.length - p.a) / p.b);
+        continue;
+      }
+      // Two relative parts: their lengths in the ratio of their sizes.
+      for (std::size_t j = i + 1; j < lines.size(); ++j) {
+        const SizeLine& q = lines[j];
+        if (!q.relative) continue;
+        const double d = p.length * q.b - q.length * p.b;
+        if (d != 0) out.push_back((q.length * p.a - p.length * q.a) / d);
+      }
+    }
+    // Every size a point on a line: the relative parts share what the
+    // absolute ones leave of the scope, so one part holding boxes is
+    // enough (a tower of share s1 under air of share 77 - s1).
+    if (std::ranges::all_of(linear, [](bool l) { return l; })) {
+      double sum_a = 0, sum_b = 0, fixed = 0;
+      bool absolute_move = false;
+      for (std::size_t i = 0; i < parts_.size(); ++i) {
+        const auto& v = size[i];
+        const double b = (v[1] - v[0]) / step;
+        if (parts_[i].relative) {
+          sum_a += v[0] - b * u0;
+          sum_b += b;
+        } else {
+          fixed += v[0];
+          absolute_move = absolute_move || b != 0;
+        }
+      }
+      const double rest = length_ - fixed;
+      if (!absolute_move && rest > 0)
+        for (const SizeLine& p : lines) {
+          if (!p.relative) continue;
+          // length * (sum_a + sum_b u) = (a + b u) * rest
+          const double d = p.length * sum_b - p.b * rest;
+          if (d != 0) out.push_back((p.a * rest - p.length * sum_a) / d);
+        }
+    }
+    std::erase_if(out, [&](double v) { return !(v >= lo && v <= hi); });
+    return out;
+  }
+
   // Finds a value of the unknown st_.solve_for that makes this placement
   // fit: a scan of its support, then a golden-section refinement around the
   // best point (the misfit is piecewise linear and V-shaped at a solution).
@@ -1994,6 +2090,9 @@ class SplitSearch {
       return ok;
     };
     std::optional<double> found;
+    if (!u.support.values(256) && u.support.bounded())
+      for (double v : linear_guesses(u))
+        if (fits(v)) return v;
     if (auto values = u.support.values(256)) {
       for (double v : *values)
         if (fits(v)) {
@@ -2142,6 +2241,7 @@ class SplitSearch {
         }
       }
       const std::size_t mark = m_.witness_.size(), trail = m_.trail_.size();
+      m_.slot_ = static_cast<std::uint32_t>(i + 1);
       const bool ok = m_.match(parts_[i].child, s_.slice(axis_, from, len), cuts_.boxes(pl.from, pl.to));
       // Remember the result unless it pinned down an unknown from outside.
       if (memo && m_.trail_.size() == trail)
@@ -2155,6 +2255,7 @@ class SplitSearch {
       if (r.last - r.first != 1 || gap <= tol_ || (r.final && mode_ == Mode::NoFill)) continue;
       const PartInfo& p = parts_[r.first];
       if (p.vanishes || (p.relative && mode_ == Mode::Overflow)) continue;
+      m_.slot_ = static_cast<std::uint32_t>(r.first + 1);
       if (!m_.match(p.child, s_.slice(axis_, start, gap), {})) return false;
     }
     return true;
@@ -2242,11 +2343,12 @@ class SplitSearch {
 
   // One line per part whose size is random: the value that reproduces it.
   void add_witness(double k) {
-    std::vector<double> value(parts_.size(), 0.0);
+    std::vector<double> value(parts_.size(), 0.0), length(parts_.size(), 0.0);
     for (std::size_t i = 0; i < parts_.size(); ++i) {
       const Placement& pl = placement_[i];
       if (!pl.filled) continue;
       const double len = pl.floating ? pl.length : at(pl.to) - at(pl.from);
+      length[i] = len;
       value[i] = mode_ == Mode::Fill && parts_[i].relative ? len / k : (mode_ == Mode::Overflow ? len * k : len);
     }
     for (const Run& r : runs()) {
@@ -2267,6 +2369,8 @@ class SplitSearch {
       for (std::size_t i = r.first; i < r.last; ++i) {
         const Support& sh = parts_[i].share;
         value[i] = std::isfinite(sh.upper()) ? sh.lower() + t * (sh.upper() - sh.lower()) : sh.lower();
+        const bool shares = parts_[i].relative && mode_ == Mode::Fill;
+        length[i] = mode_ == Mode::Overflow ? (parts_[i].relative ? 0.0 : value[i] / k) : (shares ? value[i] * k : value[i]);
       }
     }
     for (std::size_t i = 0; i < parts_.size(); ++i) {
@@ -2274,6 +2378,8 @@ class SplitSearch {
       WitnessLine w = m_.line(WitnessLine::Kind::Part, id_);
       w.index = i;
       w.value = value[i];
+      w.path = m_.path_.back();
+      w.length = length[i];
       m_.witness_.push_back(std::move(w));
     }
   }
@@ -2371,8 +2477,9 @@ struct ConstantChoice {
 
 class Checker {
  public:
-  Checker(const Grammar& g, const std::vector<LabelledBox>& boxes, double tol, Budget& budget, const Scope& start)
-      : g_(g), boxes_(boxes), tol_(tol), budget_(budget), deterministic_(g), start_(start) {
+  Checker(const Grammar& g, const std::vector<LabelledBox>& boxes, double tol, Budget& budget, const Scope& start,
+          bool text)
+      : g_(g), boxes_(boxes), tol_(tol), budget_(budget), deterministic_(g), start_(start), text_(text) {
     for (std::size_t k = 0; k < boxes.size(); ++k) all_.push_back(static_cast<std::uint32_t>(k));
   }
 
@@ -2388,6 +2495,7 @@ class Checker {
     r.derivable = found_;
     if (found_) {
       r.witness = witness_;
+      r.parts = parts_;
     } else {
       r.mismatch = best_.message.empty() ? "the grammar does not derive the example" : best_.message;
       if (!uncheckable_.empty() && best_.message.find("cannot check") == std::string::npos)
@@ -2457,6 +2565,8 @@ class Checker {
       found_ = true;
       // The first line says what was matched, so even a grammar without
       // choices has a witness.
+      parts_ = m.matched_parts();
+      if (!text_) return;
       witness_ = {"start: " + g_.rules[g_.start_rule].label + " on " + bounds_text(start_.origin, start_.size) + ", " +
                   std::to_string(boxes_.size()) + " boxes"};
       witness_.insert(witness_.end(), c.lines.begin(), c.lines.end());
@@ -2484,6 +2594,8 @@ class Checker {
   BoxList all_;
   bool found_ = false;
   std::vector<std::string> witness_;
+  std::vector<MatchedPart> parts_;
+  bool text_ = true;  // spell the witness out
   Mismatch best_;
   std::string uncheckable_;
   bool open_ends_ = false;
@@ -2514,7 +2626,7 @@ CheckResult check_example(const Grammar& grammar, const std::vector<LabelledBox>
     return r;
   }
   Budget budget(options.max_steps);
-  return Checker(grammar, boxes, tol, budget, start).run();
+  return Checker(grammar, boxes, tol, budget, start, options.witness).run();
 }
 
 }  // namespace vern

@@ -68,6 +68,31 @@ struct CheckOptions {
   // Matching steps (operations tried, placements considered) before giving
   // up with a vern::Error (Limit).
   std::uint64_t max_steps = 10'000'000;
+  // Spell the witness out (CheckResult::witness); parts are kept either way.
+  bool witness = true;
+};
+
+// Where in a derivation a node runs: a hash of the chain of nodes from
+// the start rule's body down to it, and of the part (1, 2, ... of a split)
+// or option (of a choose) each step entered through (0: any other step,
+// such as a call's body or a transform's child). The same place in every
+// example has the same path, which is how values seen at one place are
+// lined up across examples (joint_sizes.hpp).
+inline std::uint64_t derivation_path(std::uint64_t parent, NodeId node, std::uint32_t slot) {
+  std::uint64_t h = parent * 0x9e3779b97f4a7c15ULL + (std::uint64_t{node} << 20) + slot + 1;
+  h ^= h >> 31;
+  h *= 0xbf58476d1ce4e5b9ULL;
+  return h ^ (h >> 29);
+}
+
+// One part whose size is random, as the derivation that reproduces an
+// example places it.
+struct MatchedPart {
+  std::uint64_t path = 0;  // the split's derivation_path
+  NodeId split = 0;
+  std::size_t part = 0;
+  double length = 0;  // metres, along the split's axis
+  double value = 0;   // the size's value (a relative size: the share, for the scale chosen)
 };
 
 struct CheckResult {
@@ -79,6 +104,8 @@ struct CheckResult {
   //   "garage, split(z) at 26:12, part 1: 1.04 (~rand(0.75, 1.25))"
   //   "plot, floors at 53:10: numFloors = 3 (randint(minFloors, maxFloors))"
   std::vector<std::string> witness;
+  // When derivable: every random split part of that derivation, in order.
+  std::vector<MatchedPart> parts;
   // When not: where the deepest-reaching attempt failed and why, e.g.
   //   "at house (25:1), split(z) at 25:10 on x 0..6.66667, y 0..10, z 0..10: no placement of the
   //    parts on the cuts of the example's boxes fits sizes ~2 : ~1 (cuts at z = 0, 6.5, 10)"
