@@ -213,6 +213,11 @@ class Unifier {
       for (NodeId id : members) {
         SizedMember m;
         for (const Expr* e : sized(g_.op(id))) m.sizes.push_back(literal_range(*e));
+        // Empty space is what the other parts leave: 0.2 m or 1 m of air
+        // above a house are not two kinds of house.
+        if (const auto* s = std::get_if<Split>(&g_.op(id)))
+          for (std::size_t i = 0; i < s->parts.size(); ++i)
+            if (std::holds_alternative<Nil>(g_.op(s->parts[i].child))) m.sizes[i].reset();
         m.weight = id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0;
         sizes.push_back(std::move(m));
       }

@@ -9,8 +9,8 @@ namespace vern {
 
 namespace {
 
-constexpr double kMinGap = 1.25;   // lengths within a quarter are never apart
-constexpr double kSpacings = 3.0;  // a gap this many average spacings wide is one
+constexpr double kMinGap = 1.25;  // lengths within a quarter are never apart
+constexpr double kChance = 0.1;   // a gap one kind of lengths shows this rarely parts two kinds
 
 // Each member's kind along one sized part.
 std::vector<std::size_t> clusters_of_part(const std::vector<SizedMember>& members, std::size_t part) {
@@ -25,9 +25,16 @@ std::vector<std::size_t> clusters_of_part(const std::vector<SizedMember>& member
     observations += members[m].weight;
     order.push_back(m);
   }
-  if (order.size() < 2 || observations <= 1) return kind;
-  const double spacing = std::log(highest / lowest) / (observations - 1);
-  const double gap = std::max(kMinGap, std::exp(kSpacings * spacing));
+  // Two lengths alone show no gap inside a range: they are its ends.
+  if (order.size() < 2 || observations < 3) return kind;
+  // Between the shortest and the longest, n - 2 lengths of one kind spread
+  // evenly (on a log scale) leave a gap wider than a share g of the range
+  // with chance about (n - 1) (1 - g)^(n - 2). A gap that rare parts two
+  // kinds. (A fixed multiple of the average spacing, as before, parts one
+  // kind in two more often the more examples there are: the widest of n
+  // spacings grows like ln n.)
+  const double share = 1 - std::pow(kChance / (observations - 1), 1 / (observations - 2));
+  const double gap = std::max(kMinGap, std::exp(share * std::log(highest / lowest)));
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return members[a].sizes[part]->lo < members[b].sizes[part]->lo; });
   std::size_t current = 0;
