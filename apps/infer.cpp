@@ -42,6 +42,10 @@ CommandLine make_command_line() {
   cl.add({"--distributions", "", 1, "KIND",
           "fitted (default): each varying size as the best of constant, choice(...), rand, tnormal;\n"
           "uniform: rand(min, max) over the values seen, as the thesis"});
+  cl.add({"--sizes", "", 1, "KIND",
+          "joint (default): sizes the examples vary together are drawn once and shared, a split's\n"
+          "parts that vary in one way only draw once (checks every example: slower);\n"
+          "independent: each size drawn on its own"});
   cl.add({"--seed", "-s", 1, "S", "seed of the test derivations run on the result (default 1)"});
   cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
   cl.add_standard_options();
@@ -100,6 +104,8 @@ int run(int argc, char** argv) {
   if (args.has("--threads")) options.threads = static_cast<unsigned>(CommandLine::integer(args, "--threads", 1, 1024));
   if (args.has("--distributions"))
     options.uniform_distributions = CommandLine::one_of(args, "--distributions", {"fitted", "uniform"}) == "uniform";
+  if (args.has("--sizes"))
+    options.joint_sizes = CommandLine::one_of(args, "--sizes", {"joint", "independent"}) == "joint";
   if (args.has("--start")) {
     options.start = args.value("--start");
     if (!is_rule_name(options.start))

@@ -5,6 +5,7 @@
 #include "graph/alongside.hpp"
 #include "graph/parallel_for.hpp"
 #include "inverse/box_split.hpp"
+#include "inverse/joint_sizes.hpp"
 #include "inverse/merge.hpp"
 #include "inverse/orientation.hpp"
 #include "inverse/rule_naming.hpp"
@@ -13,6 +14,11 @@
 
 namespace vern {
 
+namespace {
+// Joining sizes checks every example twice; beyond this many parts in all
+// it is not tried (a million-part example is one example anyway).
+constexpr std::size_t kJoinedPartsLimit = 200'000;
+}  // namespace
 
 Inference infer(const std::vector<Example>& examples, const InferOptions& options) {
   if (examples.empty()) throw Error(ErrorKind::Usage, "infer: error: no examples given");
@@ -69,6 +75,16 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   root = tidy_numbers(graph, root, smallest / 4);
   for (Rule& rule : graph.rules) rule.body = tidy_numbers(graph, rule.body, smallest / 4);
   out.grammar = rules_for(graph, root, NamingOptions{options.start});
+  // Sizes that vary together, drawn once: from the lengths of the
+  // derivations that reproduce the examples, so only where they are few
+  // enough to check quickly.
+  if (options.joint_sizes && parts <= kJoinedPartsLimit) {
+    JointSizesOptions joint;
+    joint.tolerance = smallest;
+    joint.uniform_distributions = options.uniform_distributions;
+    joint.threads = options.threads;
+    out.joint = join_sizes(out.grammar, examples, joint);
+  }
 
   // @scope: each axis's size, or the range the examples span.
   for (int axis = 0; axis < 3; ++axis) {

@@ -14,6 +14,7 @@
 #include "forward/primitive_library.hpp"
 #include "graph/grammar.hpp"
 #include "inverse/example.hpp"
+#include "inverse/joint_sizes.hpp"
 
 namespace vern {
 
@@ -25,6 +26,9 @@ struct InferOptions {
   // `--distributions uniform`: varying sizes as rand(min, max), the
   // thesis's ranges, instead of fitted distributions.
   bool uniform_distributions = false;
+  // Sizes that vary together drawn once (joint_sizes.hpp); false: each
+  // size drawn on its own (`--sizes independent`).
+  bool joint_sizes = true;
   // The meshes parts are compared with to find turned ones (--primitives);
   // null: the built-in primitives. A label's first part's own mesh stands
   // in where the library's is not one of its turns.
@@ -39,6 +43,7 @@ struct Inference {
   Grammar grammar;               // rules, start rule, @scope (not @primitives)
   PrimitiveLibrary primitives;   // each label's canonical mesh, in the unit box (orientation.hpp)
   double tolerance = 0;          // the tolerance used
+  JointSizes joint;              // sizes drawn once for several parts (joint_sizes.hpp)
   std::size_t unturned_parts = 0;  // parts whose mesh is no turn of their label's: written unturned
   // "file:line:1: warning: ...\n  hint: ...", one per group of parts that no
   // straight cut separates (placed with S(...), split_graph.hpp), in

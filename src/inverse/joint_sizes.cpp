@@ -1,0 +1,816 @@
+#include "inverse/joint_sizes.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "graph/parallel_for.hpp"
+#include "graph/reserved_words.hpp"
+#include "inverse/check.hpp"
+#include "inverse/derived_example.hpp"
+#include "inverse/fit_distribution.hpp"
+#include "inverse/substitute.hpp"
+#include "inverse/tidy_numbers.hpp"
+
+namespace vern {
+
+namespace {
+
+constexpr double kCorrelated = 0.9;      // |r| at which one size follows another
+constexpr std::size_t kMinNoisy = 5;     // examples needed to call a loose fit a dependence
+
+// A split of a region whose sizes draw, where it runs.
+struct Occurrence {
+  std::uint64_t path = 0;
+  NodeId split = 0;
+};
+
+struct Region {
+  NodeId root = 0;
+  RuleId rule = 0;  // the rule whose body holds the root: the new rule's name
+  std::vector<Occurrence> splits;
+};
+
+// Rules that can reach a call of themselves: a region never enters them
+// (their bodies run at several depths, each a different place).
+std::vector<bool> recursive_rules(const Grammar& g) {
+  const std::size_t n = g.rules.size();
+  std::vector<std::vector<RuleId>> calls(n);
+  for (RuleId r = 0; r < n; ++r) {
+    std::vector<NodeId> stack{g.rules[r].body};
+    std::unordered_set<NodeId> seen;
+    while (!stack.empty()) {
+      const NodeId id = stack.back();
+      stack.pop_back();
+      if (!seen.insert(id).second) continue;
+      if (const auto* c = std::get_if<Call>(&g.op(id))) calls[r].push_back(c->rule);
+      for_each_child(g.op(id), [&](NodeId child) { stack.push_back(child); });
+    }
+  }
+  std::vector<bool> out(n, false);
+  for (RuleId r = 0; r < n; ++r) {
+    std::vector<RuleId> stack(calls[r].begin(), calls[r].end());
+    std::vector<bool> seen(n, false);
+    while (!stack.empty() && !out[r]) {
+      const RuleId c = stack.back();
+      stack.pop_back();
+      if (c == r) out[r] = true;
+      if (c >= n || seen[c]) continue;
+      seen[c] = true;
+      stack.insert(stack.end(), calls[c].begin(), calls[c].end());
+    }
+  }
+  return out;
+}
+
+std::string fresh_label(const Grammar& g, const std::string& base) {
+  std::string label = base;
+  for (int k = 2; g.find_rule(label) || is_operation_word(label); ++k) label = base + std::to_string(k);
+  return label;
+}
+
+bool draws(const Split& s) {
+  return std::ranges::any_of(s.parts, [](const SplitPart& p) { return p.size.value.draws_random(); });
+}
+
+// The regions of a grammar, and a region's nodes rebuilt with new sizes.
+// Both follow the nodes in the order check() matches them, computing the
+// same derivation_path.
+class Regions {
+ public:
+  Regions(Grammar& g) : g_(g), recursive_(recursive_rules(g)), visits_(g.node_count(), 0) {
+    const NodeId body = g.rules[g.start_rule].body;
+    regions_.push_back({body, g.start_rule, {}});
+    collect(body, 0, 0, 0, g.start_rule);
+  }
+
+  const std::vector<Region>& all() const { return regions_; }
+  // A region's root reached at one place only can be replaced by node id.
+  bool unique(const Region& r) const { return visits_[r.root] == 1; }
+
+  // The region below `root` with sizes[k] (per part: a new size, or none)
+  // for its k-th occurrence.
+  NodeId rebuild(NodeId root, const std::vector<std::vector<std::optional<Size>>>& sizes) {
+    std::size_t next = 0;
+    return rebuild(root, sizes, next);
+  }
+
+ private:
+  bool enters(const Call& c) const {
+    return !recursive_[c.rule] && g_.rules[c.rule].params.empty() && c.args.empty();
+  }
+
+  void collect(NodeId id, std::uint64_t parent, std::uint32_t slot, std::size_t region, RuleId rule) {
+    const std::uint64_t path = derivation_path(parent, id, slot);
+    ++visits_[id];
+    const Operation& op = g_.op(id);
+    if (const auto* s = std::get_if<Split>(&op)) {
+      if (draws(*s)) regions_[region].splits.push_back({path, id});
+      for (std::size_t i = 0; i < s->parts.size(); ++i)
+        collect(s->parts[i].child, path, static_cast<std::uint32_t>(i + 1), region, rule);
+    } else if (const auto* c = std::get_if<Call>(&op)) {
+      if (enters(*c)) collect(g_.rules[c->rule].body, path, 0, region, c->rule);
+    } else if (const auto* ch = std::get_if<Choose>(&op)) {
+      for (std::size_t j = 0; j < ch->options.size(); ++j) {
+        const std::size_t inner = regions_.size();
+        regions_.push_back({ch->options[j].child, rule, {}});
+        collect(ch->options[j].child, path, static_cast<std::uint32_t>(j + 1), inner, rule);
+      }
+    } else if (std::holds_alternative<Translate>(op) || std::holds_alternative<Scale>(op) ||
+               std::holds_alternative<Rotate>(op)) {
+      collect(node_children(op)[0], path, 0, region, rule);
+    }
+    // Repeats draw anew per tile and comps' faces are not lined up: a
+    // region stops there.
+  }
+
+  NodeId rebuild(NodeId id, const std::vector<std::vector<std::optional<Size>>>& sizes, std::size_t& next) {
+    Operation op = g_.op(id);  // a copy: interning may move the arena
+    const SourceLoc loc = g_.node(id).loc;
+    if (auto* s = std::get_if<Split>(&op)) {
+      if (draws(*s)) {
+        const auto& mine = sizes[next++];
+        for (std::size_t i = 0; i < s->parts.size(); ++i)
+          if (mine[i]) s->parts[i].size = *mine[i];
+      }
+      for (auto& part : s->parts) part.child = rebuild(part.child, sizes, next);
+      return kept(id, std::move(op), loc);
+    }
+    if (const auto* c = std::get_if<Call>(&op)) {
+      // Written out only where a size below it changes.
+      if (!enters(*c)) return id;
+      const NodeId body = g_.rules[c->rule].body;
+      const NodeId now = rebuild(body, sizes, next);
+      return now == body ? id : now;
+    }
+    if (std::holds_alternative<Translate>(op) || std::holds_alternative<Scale>(op) ||
+        std::holds_alternative<Rotate>(op)) {
+      NodeId* child = child_slots(op)[0];
+      *child = rebuild(*child, sizes, next);
+      return kept(id, std::move(op), loc);
+    }
+    return id;
+  }
+
+  // The node itself where nothing changed.
+  NodeId kept(NodeId id, Operation op, SourceLoc loc) {
+    if (op == g_.op(id)) return id;
+    return g_.intern({std::move(op), loc});
+  }
+
+  Grammar& g_;
+  std::vector<bool> recursive_;
+  std::vector<std::uint32_t> visits_;
+  std::vector<Region> regions_;
+};
+
+// c0 + sum(c[k] * param k): what a size becomes.
+struct Linear {
+  double c0 = 0;
+  std::vector<double> c;    // per parameter
+  std::vector<Expr> draws;  // draws written in place (a parameter used once), added
+  double coefficient(std::size_t k) const { return k < c.size() ? c[k] : 0.0; }
+  void add(std::size_t k, double v) {
+    if (c.size() <= k) c.resize(k + 1, 0.0);
+    c[k] += v;
+  }
+};
+
+Expr linear_expr(const Linear& f) {
+  std::optional<Expr> out;
+  auto plus = [&](Expr term, bool negative) {
+    if (!out) out = negative ? Expr::unary(UnaryOp::Neg, std::move(term)) : std::move(term);
+    else out = Expr::binary(negative ? BinaryOp::Sub : BinaryOp::Add, std::move(*out), std::move(term));
+  };
+  const bool lead = f.c0 > 0 && std::ranges::any_of(f.c, [](double v) { return v < 0; });
+  if (lead) out = Expr::number(f.c0);
+  for (std::size_t k = 0; k < f.c.size(); ++k) {
+    const double v = f.c[k];
+    if (v == 0) continue;
+    Expr p = Expr::param(static_cast<std::uint32_t>(k));
+    if (std::abs(v) != 1) p = Expr::binary(BinaryOp::Mul, Expr::number(std::abs(v)), std::move(p));
+    plus(std::move(p), v < 0);
+  }
+  if (!lead && (f.c0 != 0 || (!out && f.draws.empty()))) {
+    if (!out) out = Expr::number(f.c0);
+    else plus(Expr::number(std::abs(f.c0)), f.c0 < 0);
+  }
+  for (const Expr& d : f.draws) plus(d, false);
+  return *out;
+}
+
+// One varying size of a region, its value in each example that shows it.
+struct Quantity {
+  std::size_t occurrence = 0, part = 0;
+  bool relative = false;
+  std::vector<double> values;  // per example of the region
+};
+
+struct Fit {
+  double a = 0, b = 0, worst = 0, r = 0;
+};
+
+Fit line_fit(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    mx += x[i] / n;
+    my += y[i] / n;
+  }
+  double sxx = 0, sxy = 0, syy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sxx += (x[i] - mx) * (x[i] - mx);
+    sxy += (x[i] - mx) * (y[i] - my);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  Fit f;
+  if (sxx <= 0) return f;
+  f.b = sxy / sxx;
+  f.a = my - f.b * mx;
+  f.r = syy > 0 ? sxy / std::sqrt(sxx * syy) : 0;
+  return f;
+}
+
+double worst_miss(const std::vector<double>& x, const std::vector<double>& y, double a, double b) {
+  double worst = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) worst = std::max(worst, std::abs(y[i] - a - b * x[i]));
+  return worst;
+}
+
+// The line through the points with short decimals: within `tol` where
+// the exact line is, or, for a loose one, missing by at most a tenth more.
+Fit short_line(const std::vector<double>& x, const std::vector<double>& y, Fit f, double tol) {
+  double reach = 1;
+  for (double v : x) reach = std::max(reach, std::abs(v));
+  const double slack = std::max(tol, 0.1 * f.worst);
+  for (double step : {0.5, 0.1, 0.01, 0.001, 0.0001}) {
+    Fit t = f;
+    t.b = shortest_decimal(f.b, step * slack / reach);
+    double mean = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) mean += (y[i] - t.b * x[i]) / static_cast<double>(x.size());
+    t.a = shortest_decimal(mean, step * slack);
+    t.worst = worst_miss(x, y, t.a, t.b);
+    if (t.worst <= f.worst + slack) return t;
+  }
+  return f;
+}
+
+// The support a parameter's distribution gives it.
+std::pair<double, double> support(const Distribution& d) {
+  switch (d.kind) {
+    case DistributionKind::Constant: return {d.values[0], d.values[0]};
+    case DistributionKind::Choice: return {d.values.front(), d.values.back()};
+    default: return {d.lo, d.hi};
+  }
+}
+
+double lowest(const Linear& f, const std::vector<std::pair<double, double>>& ranges) {
+  double v = f.c0;
+  for (std::size_t k = 0; k < f.c.size(); ++k) v += f.c[k] * (f.c[k] > 0 ? ranges[k].first : ranges[k].second);
+  return v;
+}
+
+class Joiner {
+ public:
+  Joiner(Grammar& g, const JointSizesOptions& o) : g_(g), opt_(o) {}
+
+  // What the examples' derivations placed at each path, per example.
+  using Seen = std::unordered_map<std::uint64_t, std::vector<MatchedPart>>;
+
+  // Rewrites one region; the new call that replaces its root, or none.
+  std::optional<NodeId> region(Regions& regions, const Region& r, const std::vector<Seen>& seen, JointSizes& out) {
+    // The examples that ran the region, and its parts' lengths in each.
+    std::vector<std::vector<const std::vector<MatchedPart>*>> rows;
+    for (const Seen& s : seen) {
+      std::vector<const std::vector<MatchedPart>*> row;
+      for (const Occurrence& o : r.splits)
+        if (const auto it = s.find(o.path); it != s.end()) row.push_back(&it->second);
+      if (row.empty()) continue;
+      if (row.size() != r.splits.size()) return std::nullopt;  // partly run: not one region there
+      rows.push_back(std::move(row));
+    }
+    if (rows.size() < opt_.min_examples) return std::nullopt;
+    const std::size_t n = rows.size();
+
+    // Per occurrence: per part, its length in each example.
+    std::vector<Quantity> quantities;
+    std::vector<std::vector<std::optional<Linear>>> formula(r.splits.size());
+    struct Rest {
+      std::size_t occurrence, part;
+      double total;
+    };
+    std::vector<Rest> rests;
+    for (std::size_t o = 0; o < r.splits.size(); ++o) {
+      const Split split = std::get<Split>(g_.op(r.splits[o].split));
+      const std::size_t parts = split.parts.size();
+      formula[o].resize(parts);
+      std::vector<std::vector<double>> length(parts, std::vector<double>(n, 0.0)), value = length;
+      std::vector<bool> random(parts, false);
+      for (std::size_t i = 0; i < parts; ++i) random[i] = split.parts[i].size.value.draws_random();
+      for (std::size_t e = 0; e < n; ++e) {
+        std::vector<int> count(parts, 0);
+        for (const MatchedPart& m : *rows[e][o]) {
+          if (m.part >= parts) return std::nullopt;
+          ++count[m.part];
+          length[m.part][e] = m.length;
+          value[m.part][e] = m.value;
+        }
+        for (std::size_t i = 0; i < parts; ++i)
+          if (count[i] != (random[i] ? 1 : 0)) return std::nullopt;  // run twice, or not lined up
+      }
+      std::vector<std::size_t> relative, relative_random;
+      for (std::size_t i = 0; i < parts; ++i) {
+        if (!split.parts[i].size.relative) continue;
+        relative.push_back(i);
+        if (random[i]) relative_random.push_back(i);
+      }
+      const bool shares_only = relative.size() >= 2 && relative_random.size() == relative.size();
+      double total = 0;
+      if (shares_only) {
+        for (std::size_t e = 0; e < n; ++e)
+          for (std::size_t i : relative) total += length[i][e] / static_cast<double>(n);
+        if (!(total > 0)) return std::nullopt;
+        total = shortest_decimal(total, total * 0.01);
+        for (std::size_t e = 0; e < n; ++e) {
+          double sum = 0;
+          for (std::size_t i : relative) sum += length[i][e];
+          if (!(sum > 0)) return std::nullopt;
+          for (std::size_t i : relative) value[i][e] = total * length[i][e] / sum;
+        }
+        rests.push_back({o, relative.back(), total});
+      }
+      for (std::size_t i = 0; i < parts; ++i) {
+        if (!random[i] || (shares_only && i == relative.back())) continue;
+        // A lone relative part takes the rest whatever its size says.
+        if (split.parts[i].size.relative && relative.size() == 1) continue;
+        quantities.push_back({o, i, split.parts[i].size.relative, split.parts[i].size.relative ? value[i] : length[i]});
+      }
+    }
+
+    // Each size against the ones before it.
+    std::vector<Distribution> drawn;  // per parameter: its distribution, or a deviation's
+    std::vector<std::vector<double>> drawn_values;
+    std::vector<std::size_t> drawn_at;  // the occurrence that first uses it
+    std::vector<std::size_t> leaders;   // quantities that are parameters
+    std::vector<std::size_t> leader_param;
+    std::size_t gained = 0, linked = 0;
+    FitOptions fit;
+    fit.resolution = opt_.tolerance;
+    fit.floor = 0;
+    fit.uniform_only = opt_.uniform_distributions;
+    for (std::size_t q = 0; q < quantities.size(); ++q) {
+      const Quantity& Q = quantities[q];
+      Linear f;
+      const auto [lo, hi] = std::ranges::minmax(Q.values);
+      if (hi - lo <= opt_.tolerance) {
+        f.c0 = shortest_decimal((lo + hi) / 2, opt_.tolerance / 4);
+        formula[Q.occurrence][Q.part] = f;
+        ++gained;
+        continue;
+      }
+      std::optional<std::size_t> best;
+      Fit best_fit;
+      for (std::size_t l = 0; l < leaders.size(); ++l) {
+        const Quantity& L = quantities[leaders[l]];
+        Fit t = line_fit(L.values, Q.values);
+        t.worst = worst_miss(L.values, Q.values, t.a, t.b);
+        if (!best || t.worst < best_fit.worst) {
+          best = l;
+          best_fit = t;
+        }
+      }
+      const bool exact = best && best_fit.worst <= opt_.tolerance / 4;
+      const bool loose = best && !exact && std::abs(best_fit.r) >= kCorrelated && n >= kMinNoisy &&
+                         quantities[leaders[*best]].occurrence != Q.occurrence;
+      if (exact || loose) {
+        const Quantity& L = quantities[leaders[*best]];
+        const Fit s = short_line(L.values, Q.values, best_fit, opt_.tolerance / 4);
+        f.c0 = s.a;
+        f.add(leader_param[*best], s.b);
+        if (loose) {
+          // The deviation: a parameter too, for the rest of its split
+          // may need it again.
+          const double e = shortest_decimal(s.worst + opt_.tolerance / 4, opt_.tolerance / 4, +1);
+          std::vector<double> misses;
+          for (std::size_t i = 0; i < n; ++i) misses.push_back(Q.values[i] - s.a - s.b * L.values[i]);
+          f.add(drawn.size(), 1);
+          drawn.push_back(Distribution{DistributionKind::Uniform, {}, -e, e});
+          drawn_values.push_back(std::move(misses));
+          drawn_at.push_back(Q.occurrence);
+        }
+        formula[Q.occurrence][Q.part] = f;
+        ++gained;
+        if (L.occurrence != Q.occurrence) ++linked;
+        continue;
+      }
+      std::vector<Observation> obs;
+      for (double v : Q.values) obs.push_back({v, 1});
+      leaders.push_back(q);
+      leader_param.push_back(drawn.size());
+      drawn.push_back(fit_distribution(obs, fit));
+      drawn_values.push_back(Q.values);
+      drawn_at.push_back(Q.occurrence);
+      f.add(leader_param.back(), 1);
+      formula[Q.occurrence][Q.part] = f;
+    }
+    // Splits that vary on their own are share_splits' (one rule each, not
+    // one per region).
+    if (linked == 0) return std::nullopt;
+
+    // The rest of a split of shares: its total less the others' shares.
+    for (const Rest& rest : rests) {
+      Linear f;
+      f.c0 = rest.total;
+      for (std::size_t i = 0; i < formula[rest.occurrence].size(); ++i) {
+        const auto& other = formula[rest.occurrence][i];
+        if (i == rest.part || !other) continue;
+        const Size& size = std::get<Split>(g_.op(r.splits[rest.occurrence].split)).parts[i].size;
+        if (!size.relative) continue;
+        f.c0 -= other->c0;
+        for (std::size_t k = 0; k < other->c.size(); ++k) f.add(k, -other->c[k]);
+      }
+      formula[rest.occurrence][rest.part] = f;
+    }
+
+    // A parameter used in one size only is drawn there; the others are
+    // the new rule's parameters. check() pins a parameter down at the
+    // first split that uses it, so each split may bring one.
+    std::vector<std::size_t> uses(drawn.size(), 0);
+    for (const auto& parts : formula)
+      for (const auto& f : parts)
+        if (f)
+          for (std::size_t k = 0; k < f->c.size(); ++k) uses[k] += f->c[k] != 0 ? 1 : 0;
+    std::vector<std::pair<double, double>> ranges;
+    for (const Distribution& d : drawn) ranges.push_back(support(d));
+    for (const auto& parts : formula)
+      for (const auto& f : parts)
+        if (f && !(lowest(*f, ranges) > 0)) {
+          // Variants would get no room: keep to the values seen.
+          for (std::size_t k = 0; k < drawn.size(); ++k) {
+            const auto [lo, hi] = std::ranges::minmax(drawn_values[k]);
+            drawn[k] = Distribution{DistributionKind::Uniform, {}, lo, hi};
+            ranges[k] = {lo, hi};
+          }
+        }
+    for (const auto& parts : formula)
+      for (const auto& f : parts)
+        if (f && !(lowest(*f, ranges) > 0)) return std::nullopt;
+    std::vector<std::optional<std::uint32_t>> param(drawn.size());
+    std::vector<Expr> args;
+    std::vector<std::string> names;
+    std::vector<std::size_t> brought(r.splits.size(), 0);
+    for (std::size_t k = 0; k < drawn.size(); ++k) {
+      if (uses[k] < 2) continue;
+      param[k] = static_cast<std::uint32_t>(args.size());
+      args.push_back(distribution_expr(tidy(drawn[k])));
+      names.push_back("s" + std::to_string(args.size()));
+      if (++brought[drawn_at[k]] > 1) return std::nullopt;
+    }
+
+    std::vector<std::vector<std::optional<Size>>> sizes(r.splits.size());
+    for (std::size_t o = 0; o < r.splits.size(); ++o) {
+      const Split& split = std::get<Split>(g_.op(r.splits[o].split));
+      sizes[o].resize(split.parts.size());
+      for (std::size_t i = 0; i < split.parts.size(); ++i) {
+        const auto& f = formula[o][i];
+        if (!f) continue;
+        Linear renamed;
+        renamed.c0 = f->c0;
+        for (std::size_t k = 0; k < f->c.size(); ++k) {
+          if (f->c[k] == 0) continue;
+          if (param[k]) renamed.add(*param[k], f->c[k]);
+          // Used here only, with coefficient 1 (a leader or a deviation):
+          // drawn in place.
+          else renamed.draws.push_back(distribution_expr(tidy(drawn[k])));
+        }
+        sizes[o][i] = Size{linear_expr(renamed), split.parts[i].size.relative};
+      }
+    }
+    const NodeId body = regions.rebuild(r.root, sizes);
+    Rule rule;
+    rule.label = fresh_label(g_, g_.rules[r.rule].label + "Sizes");
+    rule.params = names;
+    rule.body = body;
+    rule.loc = g_.rules[r.rule].loc;
+    const RuleId id = static_cast<RuleId>(g_.rules.size());
+    g_.rules.push_back(std::move(rule));
+    out.regions += 1;
+    out.joined += gained + rests.size();
+    return g_.intern({Call{id, std::move(args)}, g_.node(r.root).loc});
+  }
+
+ private:
+  // Short decimals for a fitted distribution's numbers (merging tidies
+  // the others before this runs).
+  Distribution tidy(Distribution d) const {
+    const double t = opt_.tolerance / 4;
+    for (double& v : d.values) v = shortest_decimal(v, t);
+    d.lo = shortest_decimal(d.lo, t, -1);
+    d.hi = shortest_decimal(d.hi, t, +1);
+    d.mu = shortest_decimal(d.mu, std::max(t, d.sigma * 0.01));
+    d.sigma = shortest_decimal(d.sigma, std::max(t, d.sigma * 0.01));
+    return d;
+  }
+
+  Grammar& g_;
+  const JointSizesOptions& opt_;
+};
+
+// ---- splits of two shares ----
+
+// The lines of one run of a split (a repeat runs it once per tile, on one
+// path): each starts where the part index does not go up.
+struct SplitRun {
+  NodeId split = 0;
+  std::vector<const MatchedPart*> parts;
+};
+
+std::vector<SplitRun> runs_of(const std::vector<MatchedPart>& parts) {
+  std::vector<SplitRun> out;
+  for (const MatchedPart& m : parts) {
+    if (out.empty() || out.back().split != m.split || out.back().parts.back()->path != m.path ||
+        out.back().parts.back()->part >= m.part)
+      out.push_back({m.split, {}});
+    out.back().parts.push_back(&m);
+  }
+  return out;
+}
+
+// Up to three primitive labels below a node and its axis: rectZ.
+std::string describe(const Grammar& g, NodeId id) {
+  std::vector<std::string> labels;
+  std::vector<NodeId> stack{id};
+  std::unordered_set<NodeId> seen;
+  while (!stack.empty() && labels.size() < 3) {
+    const NodeId n = stack.back();
+    stack.pop_back();
+    if (!seen.insert(n).second) continue;
+    const Operation& op = g.op(n);
+    if (const auto* p = std::get_if<Primitive>(&op)) {
+      if (std::ranges::find(labels, g.label(p->label)) == labels.end()) labels.push_back(g.label(p->label));
+      continue;
+    }
+    if (const auto* c = std::get_if<Call>(&op)) stack.push_back(g.rules[c->rule].body);
+    std::vector<NodeId> children;
+    for_each_child(op, [&](NodeId child) { children.push_back(child); });
+    stack.insert(stack.end(), children.rbegin(), children.rend());
+  }
+  std::string out;
+  for (const std::string& label : labels) {
+    bool first = true;  // of a label after the first: upper case
+    for (char ch : label) {
+      if (!std::isalnum(static_cast<unsigned char>(ch))) continue;
+      out += first && !out.empty() ? static_cast<char>(std::toupper(static_cast<unsigned char>(ch))) : ch;
+      first = false;
+    }
+  }
+  if (out.empty() || !std::isalpha(static_cast<unsigned char>(out[0]))) out = "part" + out;
+  const Expr& axis = std::get<Split>(g.op(id)).axis;
+  const ExprNode& a = axis.node(axis.root());
+  if (a.kind == ExprKind::Axis) out += static_cast<char>('X' + a.op);
+  return out;
+}
+
+// The two relative parts of a split whose relative parts are exactly two,
+// both drawn, nothing using a parameter.
+std::optional<std::pair<std::size_t, std::size_t>> two_shares(const Split& s) {
+  std::vector<std::size_t> relative;
+  for (std::size_t i = 0; i < s.parts.size(); ++i) {
+    if (s.parts[i].size.value.uses_params()) return std::nullopt;
+    if (s.parts[i].size.relative) relative.push_back(i);
+  }
+  if (relative.size() != 2) return std::nullopt;
+  for (std::size_t i : relative)
+    if (!s.parts[i].size.value.draws_random()) return std::nullopt;
+  return std::make_pair(relative[0], relative[1]);
+}
+
+// Every split of two drawn shares becomes one draw and the rest:
+// `rectZ(s1) --> split(z){ ~s1 : I(rect) | ~(9 - s1) : nil }`, s1 drawn
+// by its callers from the shares the examples show (all its runs, in
+// every example). Returns how many splits changed.
+std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, const JointSizesOptions& opt) {
+  struct Seen {
+    std::vector<std::pair<double, double>> lengths;  // the two parts, per run
+    bool lined_up = true;
+  };
+  std::unordered_map<NodeId, Seen> seen;
+  for (const CheckResult& r : results)
+    for (const SplitRun& run : runs_of(r.parts)) {
+      const auto* split = std::get_if<Split>(&g.op(run.split));
+      if (!split) continue;
+      const auto pair = two_shares(*split);
+      if (!pair) continue;
+      Seen& s = seen[run.split];
+      double a = -1, b = -1;
+      for (const MatchedPart* m : run.parts) {
+        if (m->part == pair->first) a = m->length;
+        if (m->part == pair->second) b = m->length;
+      }
+      if (a < 0 || b < 0 || !(a + b > 0)) s.lined_up = false;
+      else s.lengths.emplace_back(a, b);
+    }
+
+  // The rule each changed split runs as, the call that stands for it.
+  std::vector<NodeId> replace(g.node_count(), kNoReplacement);
+  std::unordered_map<NodeId, RuleId> rule_of;  // changed split -> its rule
+  std::unordered_map<RuleId, NodeId> body_of;  // that rule -> the split with shares
+  std::vector<std::vector<RuleId>> bodies(g.node_count());
+  for (RuleId r = 0; r < g.rules.size(); ++r)
+    if (g.rules[r].params.empty() && r != g.start_rule) bodies[g.rules[r].body].push_back(r);  // the start takes none
+  std::vector<NodeId> order;
+  for (const auto& [id, s] : seen)
+    if (s.lined_up && !s.lengths.empty()) order.push_back(id);
+  std::ranges::sort(order);  // the rules come out in one order every time
+  for (NodeId id : order) {
+    const Seen& s = seen[id];
+    double total = 0;
+    for (const auto& [a, b] : s.lengths) total += (a + b) / static_cast<double>(s.lengths.size());
+    total = shortest_decimal(total, total * 0.01);
+    std::vector<Observation> shares;
+    for (const auto& [a, b] : s.lengths) shares.push_back({total * a / (a + b), 1});
+    FitOptions fit;
+    fit.resolution = opt.tolerance;
+    fit.floor = 0;
+    fit.uniform_only = opt.uniform_distributions;
+    Distribution d = fit_distribution(shares, fit);
+    if (d.kind == DistributionKind::Uniform || d.kind == DistributionKind::TruncatedNormal) {
+      if (d.hi >= total) {
+        // The rest must stay a share: keep to the shares seen.
+        const auto [lo, hi] = std::ranges::minmax(shares, {}, &Observation::value);
+        d = Distribution{DistributionKind::Uniform, {}, lo.value, hi.value};
+      }
+    }
+    Split split = std::get<Split>(g.op(id));
+    const auto pair = *two_shares(split);
+    split.parts[pair.first].size = Size{Expr::param(0), true};
+    split.parts[pair.second].size =
+        Size{Expr::binary(BinaryOp::Sub, Expr::number(total), Expr::param(0)), true};
+    const SourceLoc loc = g.node(id).loc;
+    const NodeId shared = g.intern({std::move(split), loc});
+    RuleId rule;
+    if (!bodies[id].empty()) {
+      rule = bodies[id].front();
+    } else {
+      rule = static_cast<RuleId>(g.rules.size());
+      g.rules.push_back(Rule{fresh_label(g, describe(g, id)), {}, shared, loc});
+    }
+    g.rules[rule].params = {"s1"};
+    rule_of[id] = rule;
+    body_of[rule] = shared;
+    const double t = opt.tolerance / 4;
+    d.lo = shortest_decimal(d.lo, t, -1);
+    d.hi = shortest_decimal(d.hi, t, +1);
+    for (double& v : d.values) v = shortest_decimal(v, t);
+    if (d.kind == DistributionKind::TruncatedNormal) {
+      d.mu = shortest_decimal(d.mu, std::max(t, d.sigma * 0.01));
+      d.sigma = shortest_decimal(d.sigma, std::max(t, d.sigma * 0.01));
+    }
+    const NodeId call = g.intern({Call{rule, {distribution_expr(d)}}, loc});
+    if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
+    replace[id] = call;
+  }
+  if (rule_of.empty()) return 0;
+  // Calls of a rule that now takes the share: with it.
+  for (NodeId id = 0; id < replace.size(); ++id)
+    if (const auto* c = std::get_if<Call>(&g.op(id)); c && c->args.empty() && body_of.count(c->rule))
+      replace[id] = replace[g.rules[c->rule].body];
+  for (RuleId r = 0; r < g.rules.size(); ++r) {
+    const auto own = body_of.find(r);
+    g.rules[r].body = substitute(g, own != body_of.end() ? own->second : g.rules[r].body, replace);
+  }
+  return rule_of.size();
+}
+
+// Rules nothing calls any more (their bodies were written out inside a
+// region's rule) are dropped; the others keep their order.
+void drop_unused_rules(Grammar& g) {
+  std::vector<bool> used(g.rules.size(), false);
+  std::vector<RuleId> stack{g.start_rule};
+  used[g.start_rule] = true;
+  std::unordered_set<NodeId> seen;
+  while (!stack.empty()) {
+    const RuleId r = stack.back();
+    stack.pop_back();
+    std::vector<NodeId> nodes{g.rules[r].body};
+    while (!nodes.empty()) {
+      const NodeId id = nodes.back();
+      nodes.pop_back();
+      if (!seen.insert(id).second) continue;
+      if (const auto* c = std::get_if<Call>(&g.op(id)); c && !used[c->rule]) {
+        used[c->rule] = true;
+        stack.push_back(c->rule);
+      }
+      for_each_child(g.op(id), [&](NodeId child) { nodes.push_back(child); });
+    }
+  }
+  if (std::ranges::all_of(used, [](bool u) { return u; })) return;
+  // A fresh grammar of what is still used: derive() compiles every node
+  // it holds, and the dropped rules' calls would name rules gone.
+  std::vector<RuleId> index(g.rules.size(), 0);
+  RuleId next = 0;
+  for (RuleId r = 0; r < g.rules.size(); ++r)
+    if (used[r]) index[r] = next++;
+  Grammar out;
+  out.source_name = g.source_name;
+  out.start_rule = index[g.start_rule];
+  out.start_written = g.start_written;
+  out.scope = g.scope;
+  out.primitives = g.primitives;
+  out.constants = g.constants;
+  for (const std::string& label : g.labels()) out.label_id(label);  // the same ids
+  std::unordered_map<NodeId, NodeId> copied;
+  std::function<NodeId(NodeId)> copy = [&](NodeId id) {
+    if (const auto it = copied.find(id); it != copied.end()) return it->second;
+    Operation op = g.op(id);
+    for (NodeId* child : child_slots(op)) *child = copy(*child);
+    if (auto* c = std::get_if<Call>(&op)) c->rule = index[c->rule];
+    const NodeId now = out.intern({std::move(op), g.node(id).loc});
+    copied.emplace(id, now);
+    return now;
+  };
+  for (RuleId r = 0; r < g.rules.size(); ++r) {
+    if (!used[r]) continue;
+    Rule rule = g.rules[r];
+    rule.body = copy(rule.body);
+    out.rules.push_back(std::move(rule));
+  }
+  g = std::move(out);
+}
+
+}  // namespace
+
+JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const JointSizesOptions& options) {
+  JointSizes out;
+  if (examples.size() < options.min_examples) return out;
+  std::vector<Example> placed;
+  for (const Example& e : examples) placed.push_back(at_origin(e));
+  CheckOptions check;
+  check.tolerance = options.tolerance;
+  check.witness = false;  // the parts' lengths are all this step reads
+  auto check_all = [&](const Grammar& grammar, std::vector<CheckResult>& results) {
+    results.assign(placed.size(), {});
+    parallel_for(placed.size(), options.threads, [&](std::size_t i) {
+      try {
+        results[i] = check_example(grammar, placed[i].boxes, example_size(placed[i]), check);
+      } catch (const Error&) {
+        results[i] = {};  // too many steps: not derivable as far as this step knows
+      }
+    });
+    return std::ranges::all_of(results, [](const CheckResult& r) { return r.derivable; });
+  };
+  std::vector<CheckResult> results;
+  if (!check_all(g, results)) return out;
+
+  std::vector<Joiner::Seen> seen(results.size());
+  for (std::size_t i = 0; i < results.size(); ++i)
+    for (const MatchedPart& m : results[i].parts) seen[i][m.path].push_back(m);
+
+  // Regions whose sizes follow each other, then splits that vary in one
+  // way only; checked once for both (checking is most of this step's
+  // time), and again only if that fails.
+  const Grammar before = g;
+  auto regions_joined = [&] {
+    Regions regions(g);
+    Joiner joiner(g, options);
+    std::vector<NodeId> replace;
+    for (const Region& r : regions.all()) {
+      if (r.splits.empty() || !regions.unique(r)) continue;
+      const auto call = joiner.region(regions, r, seen, out);
+      if (!call) continue;
+      if (replace.size() <= r.root) replace.resize(r.root + 1, kNoReplacement);
+      replace[r.root] = *call;
+    }
+    if (out.regions == 0) return;
+    for (Rule& rule : g.rules) rule.body = substitute(g, rule.body, replace);
+  };
+  auto splits_shared = [&] {
+    // The runs seen in regions just rewritten no longer happen; they only
+    // widen the shares of the splits still called elsewhere.
+    const std::size_t shared = share_splits(g, results, options);
+    out.joined += shared;
+    return shared;
+  };
+  regions_joined();
+  splits_shared();
+  if (out.joined == 0) return out;
+  drop_unused_rules(g);
+  std::vector<CheckResult> again;
+  if (check_all(g, again)) return out;
+  // Most likely a region's order of draws that check cannot follow: the
+  // splits alone.
+  g = before;
+  out = {};
+  if (splits_shared() > 0) {
+    drop_unused_rules(g);
+    if (check_all(g, again)) return out;
+  }
+  g = before;
+  return {};
+}
+
+}  // namespace vern
