@@ -41,6 +41,21 @@ b2(h, e) --> split(x){
     ~1 : split(z){ h * 0.5 + e : I(rect) | ~1 : nil } }
 )";
 
+// The same, with a side part and a garage of three kinds each: their
+// choices lie below the house's split, so the garage's height follows a
+// size outside its choice.
+constexpr const char* kAnyGarage = R"(
+@scope 12, 8, 10
+b --> b2(rand(4, 10))
+b2(h) --> split(x){ ~1 : side | ~2 : split(z){ h : I(rect) | ~1 : nil } | ~1 : garage(h) }
+side --> I(rect) : 1
+side --> split(y){ ~1 : I(rect) | ~1 : I(shed) } : 1
+side --> split(y){ ~1 : I(shed) | ~1 : I(rect) } : 1
+garage(h) --> split(z){ h * 0.5 : I(rect) | ~1 : nil } : 1
+garage(h) --> split(z){ h * 0.5 : I(shed) | ~1 : nil } : 1
+garage(h) --> split(z){ h * 0.5 : I(hut) | ~1 : nil } : 1
+)";
+
 // House and garage heights drawn apart.
 constexpr const char* kApart = R"(
 @scope 12, 8, 10
@@ -75,11 +90,11 @@ std::vector<Example> examples_of(const Grammar& source, std::size_t count) {
   return out;
 }
 
-Inference inferred_from(const char* text, bool joint) {
+Inference inferred_from(const char* text, bool joint, std::size_t examples = 10) {
   const Grammar source = parse_grammar(text, "source.grm");
   InferOptions o;
   o.joint_sizes = joint;
-  return infer(examples_of(source, 10), o);
+  return infer(examples_of(source, examples), o);
 }
 
 // The house's and the garage's heights in a building of kHalfAsHigh's
@@ -109,8 +124,8 @@ double worst_miss_of_half(const Grammar& g) {
   return worst;
 }
 
-void expect_every_example_derivable(const char* text, const Grammar& g) {
-  for (const Example& e : examples_of(parse_grammar(text, "source.grm"), 10)) {
+void expect_every_example_derivable(const char* text, const Grammar& g, std::size_t examples = 10) {
+  for (const Example& e : examples_of(parse_grammar(text, "source.grm"), examples)) {
     const CheckResult r = check_example(g, e.boxes, example_size(e));
     EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(g);
   }
@@ -134,6 +149,14 @@ TEST(JointSizes, AGarageRoughlyHalfAsHighStaysClose) {
   EXPECT_LT(worst_miss_of_half(joint.grammar), 0.6) << write_grammar(joint.grammar);
   const Inference apart = inferred_from(kRoughlyHalf, false);
   EXPECT_GT(worst_miss_of_half(apart.grammar), 0.6) << write_grammar(apart.grammar);
+}
+
+TEST(JointSizes, AGarageOfAnyKindFollowsItsHouse) {
+  const Inference joint = inferred_from(kAnyGarage, true, 16);
+  expect_every_example_derivable(kAnyGarage, joint.grammar, 16);
+  EXPECT_LT(worst_miss_of_half(joint.grammar), 1e-3) << write_grammar(joint.grammar);
+  const Inference apart = inferred_from(kAnyGarage, false, 16);
+  EXPECT_GT(worst_miss_of_half(apart.grammar), 0.5) << write_grammar(apart.grammar);
 }
 
 TEST(JointSizes, SizesDrawnApartStayApart) {

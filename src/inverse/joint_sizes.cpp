@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 #include <unordered_set>
@@ -32,7 +33,9 @@ struct Occurrence {
 struct Region {
   NodeId root = 0;
   RuleId rule = 0;  // the rule whose body holds the root: the new rule's name
-  std::vector<Occurrence> splits;
+  std::vector<Occurrence> splits;  // in the order check() matches them
+  std::size_t parent = kNoRegion;  // the region whose choice it is an alternative of
+  static constexpr std::size_t kNoRegion = ~std::size_t{0};
 };
 
 // Rules that can reach a call of themselves: a region never enters them
@@ -85,7 +88,8 @@ class Regions {
   Regions(Grammar& g) : g_(g), recursive_(recursive_rules(g)), visits_(g.node_count(), 0) {
     const NodeId body = g.rules[g.start_rule].body;
     regions_.push_back({body, g.start_rule, {}});
-    collect(body, 0, 0, 0, g.start_rule);
+    std::vector<std::size_t> open{0};
+    collect(body, 0, 0, open, g.start_rule);
   }
 
   const std::vector<Region>& all() const { return regions_; }
@@ -94,8 +98,12 @@ class Regions {
 
   // The region below `root` with sizes[k] (per part: a new size, or none)
   // for its k-th occurrence.
-  NodeId rebuild(NodeId root, const std::vector<std::vector<std::optional<Size>>>& sizes) {
+  // params: the new rule's; a choice whose sizes change becomes a rule
+  // taking them too (a choice is written as a rule's alternatives).
+  NodeId rebuild(NodeId root, const std::vector<std::vector<std::optional<Size>>>& sizes,
+                 const std::vector<std::string>& params) {
     std::size_t next = 0;
+    params_ = &params;
     return rebuild(root, sizes, next);
   }
 
@@ -104,25 +112,31 @@ class Regions {
     return !recursive_[c.rule] && g_.rules[c.rule].params.empty() && c.args.empty();
   }
 
-  void collect(NodeId id, std::uint64_t parent, std::uint32_t slot, std::size_t region, RuleId rule) {
+  // `open`: the regions the node lies in, outermost first. An alternative
+  // of a choice is a region of its own and stays in the ones around it:
+  // its sizes may follow sizes outside the choice.
+  void collect(NodeId id, std::uint64_t parent, std::uint32_t slot, std::vector<std::size_t>& open, RuleId rule) {
     const std::uint64_t path = derivation_path(parent, id, slot);
     ++visits_[id];
     const Operation& op = g_.op(id);
     if (const auto* s = std::get_if<Split>(&op)) {
-      if (draws(*s)) regions_[region].splits.push_back({path, id});
+      if (draws(*s))
+        for (std::size_t r : open) regions_[r].splits.push_back({path, id});
       for (std::size_t i = 0; i < s->parts.size(); ++i)
-        collect(s->parts[i].child, path, static_cast<std::uint32_t>(i + 1), region, rule);
+        collect(s->parts[i].child, path, static_cast<std::uint32_t>(i + 1), open, rule);
     } else if (const auto* c = std::get_if<Call>(&op)) {
-      if (enters(*c)) collect(g_.rules[c->rule].body, path, 0, region, c->rule);
+      if (enters(*c)) collect(g_.rules[c->rule].body, path, 0, open, c->rule);
     } else if (const auto* ch = std::get_if<Choose>(&op)) {
       for (std::size_t j = 0; j < ch->options.size(); ++j) {
         const std::size_t inner = regions_.size();
-        regions_.push_back({ch->options[j].child, rule, {}});
-        collect(ch->options[j].child, path, static_cast<std::uint32_t>(j + 1), inner, rule);
+        regions_.push_back({ch->options[j].child, rule, {}, open.back()});
+        open.push_back(inner);
+        collect(ch->options[j].child, path, static_cast<std::uint32_t>(j + 1), open, rule);
+        open.pop_back();
       }
     } else if (std::holds_alternative<Translate>(op) || std::holds_alternative<Scale>(op) ||
                std::holds_alternative<Rotate>(op)) {
-      collect(node_children(op)[0], path, 0, region, rule);
+      collect(node_children(op)[0], path, 0, open, rule);
     }
     // Repeats draw anew per tile and comps' faces are not lined up: a
     // region stops there.
@@ -145,12 +159,23 @@ class Regions {
       if (!enters(*c)) return id;
       const NodeId body = g_.rules[c->rule].body;
       const NodeId now = rebuild(body, sizes, next);
-      return now == body ? id : now;
+      if (now == body) return id;
+      if (!std::holds_alternative<Choose>(g_.op(now))) return now;
+      Rule rule{fresh_label(g_, g_.rules[c->rule].label + "Sizes"), *params_, now, g_.rules[c->rule].loc};
+      const auto called = static_cast<RuleId>(g_.rules.size());
+      g_.rules.push_back(std::move(rule));
+      std::vector<Expr> args;
+      for (std::size_t k = 0; k < params_->size(); ++k) args.push_back(Expr::param(static_cast<std::uint32_t>(k)));
+      return g_.intern({Call{called, std::move(args)}, loc});
     }
     if (std::holds_alternative<Translate>(op) || std::holds_alternative<Scale>(op) ||
         std::holds_alternative<Rotate>(op)) {
       NodeId* child = child_slots(op)[0];
       *child = rebuild(*child, sizes, next);
+      return kept(id, std::move(op), loc);
+    }
+    if (auto* ch = std::get_if<Choose>(&op)) {
+      for (auto& option : ch->options) option.child = rebuild(option.child, sizes, next);
       return kept(id, std::move(op), loc);
     }
     return id;
@@ -163,6 +188,7 @@ class Regions {
   }
 
   Grammar& g_;
+  const std::vector<std::string>* params_ = nullptr;
   std::vector<bool> recursive_;
   std::vector<std::uint32_t> visits_;
   std::vector<Region> regions_;
@@ -259,6 +285,27 @@ Fit short_line(const std::vector<double>& x, const std::vector<double>& y, Fit f
   return f;
 }
 
+// A quantity's value in an example that did not run its split.
+constexpr double kAbsent = std::numeric_limits<double>::quiet_NaN();
+
+std::vector<double> present_values(const std::vector<double>& v) {
+  std::vector<double> out;
+  for (double x : v)
+    if (!std::isnan(x)) out.push_back(x);
+  return out;
+}
+
+// The examples showing both: their x and y values.
+std::pair<std::vector<double>, std::vector<double>> paired(const std::vector<double>& x, const std::vector<double>& y) {
+  std::pair<std::vector<double>, std::vector<double>> out;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!std::isnan(x[i]) && !std::isnan(y[i])) {
+      out.first.push_back(x[i]);
+      out.second.push_back(y[i]);
+    }
+  return out;
+}
+
 // The support a parameter's distribution gives it.
 std::pair<double, double> support(const Distribution& d) {
   switch (d.kind) {
@@ -283,15 +330,18 @@ class Joiner {
 
   // Rewrites one region; the new call that replaces its root, or none.
   std::optional<NodeId> region(Regions& regions, const Region& r, const std::vector<Seen>& seen, JointSizes& out) {
-    // The examples that ran the region, and its parts' lengths in each.
+    // The examples that ran the region, and its parts' lengths in each
+    // (none for a split in an alternative the example did not take).
     std::vector<std::vector<const std::vector<MatchedPart>*>> rows;
     for (const Seen& s : seen) {
       std::vector<const std::vector<MatchedPart>*> row;
-      for (const Occurrence& o : r.splits)
-        if (const auto it = s.find(o.path); it != s.end()) row.push_back(&it->second);
-      if (row.empty()) continue;
-      if (row.size() != r.splits.size()) return std::nullopt;  // partly run: not one region there
-      rows.push_back(std::move(row));
+      bool ran = false;
+      for (const Occurrence& o : r.splits) {
+        const auto it = s.find(o.path);
+        row.push_back(it != s.end() ? &it->second : nullptr);
+        ran = ran || it != s.end();
+      }
+      if (ran) rows.push_back(std::move(row));
     }
     if (rows.size() < opt_.min_examples) return std::nullopt;
     const std::size_t n = rows.size();
@@ -308,10 +358,13 @@ class Joiner {
       const Split split = std::get<Split>(g_.op(r.splits[o].split));
       const std::size_t parts = split.parts.size();
       formula[o].resize(parts);
-      std::vector<std::vector<double>> length(parts, std::vector<double>(n, 0.0)), value = length;
+      std::vector<std::vector<double>> length(parts, std::vector<double>(n, kAbsent)), value = length;
       std::vector<bool> random(parts, false);
       for (std::size_t i = 0; i < parts; ++i) random[i] = split.parts[i].size.value.draws_random();
+      std::size_t present = 0;
       for (std::size_t e = 0; e < n; ++e) {
+        if (!rows[e][o]) continue;
+        ++present;
         std::vector<int> count(parts, 0);
         for (const MatchedPart& m : *rows[e][o]) {
           if (m.part >= parts) return std::nullopt;
@@ -332,10 +385,12 @@ class Joiner {
       double total = 0;
       if (shares_only) {
         for (std::size_t e = 0; e < n; ++e)
-          for (std::size_t i : relative) total += length[i][e] / static_cast<double>(n);
+          if (rows[e][o])
+            for (std::size_t i : relative) total += length[i][e] / static_cast<double>(present);
         if (!(total > 0)) return std::nullopt;
         total = shortest_decimal(total, total * 0.01);
         for (std::size_t e = 0; e < n; ++e) {
+          if (!rows[e][o]) continue;
           double sum = 0;
           for (std::size_t i : relative) sum += length[i][e];
           if (!(sum > 0)) return std::nullopt;
@@ -365,30 +420,36 @@ class Joiner {
     for (std::size_t q = 0; q < quantities.size(); ++q) {
       const Quantity& Q = quantities[q];
       Linear f;
-      const auto [lo, hi] = std::ranges::minmax(Q.values);
-      if (hi - lo <= opt_.tolerance) {
+      const std::vector<double> seen_values = present_values(Q.values);
+      const auto [lo, hi] = std::ranges::minmax(seen_values);
+      if (hi - lo <= opt_.tolerance && seen_values.size() >= opt_.min_examples) {
         f.c0 = shortest_decimal((lo + hi) / 2, opt_.tolerance / 4);
         formula[Q.occurrence][Q.part] = f;
         ++gained;
         continue;
       }
+      // Against each earlier drawn size, over the examples showing both.
       std::optional<std::size_t> best;
       Fit best_fit;
+      std::vector<double> best_x, best_y;
       for (std::size_t l = 0; l < leaders.size(); ++l) {
-        const Quantity& L = quantities[leaders[l]];
-        Fit t = line_fit(L.values, Q.values);
-        t.worst = worst_miss(L.values, Q.values, t.a, t.b);
+        auto [x, y] = paired(quantities[leaders[l]].values, Q.values);
+        if (x.size() < opt_.min_examples) continue;
+        Fit t = line_fit(x, y);
+        t.worst = worst_miss(x, y, t.a, t.b);
         if (!best || t.worst < best_fit.worst) {
           best = l;
           best_fit = t;
+          best_x = std::move(x);
+          best_y = std::move(y);
         }
       }
       const bool exact = best && best_fit.worst <= opt_.tolerance / 4;
-      const bool loose = best && !exact && std::abs(best_fit.r) >= kCorrelated && n >= kMinNoisy &&
+      const bool loose = best && !exact && std::abs(best_fit.r) >= kCorrelated && best_x.size() >= kMinNoisy &&
                          quantities[leaders[*best]].occurrence != Q.occurrence;
       if (exact || loose) {
         const Quantity& L = quantities[leaders[*best]];
-        const Fit s = short_line(L.values, Q.values, best_fit, opt_.tolerance / 4);
+        const Fit s = short_line(best_x, best_y, best_fit, opt_.tolerance / 4);
         f.c0 = s.a;
         f.add(leader_param[*best], s.b);
         if (loose) {
@@ -396,7 +457,7 @@ class Joiner {
           // may need it again.
           const double e = shortest_decimal(s.worst + opt_.tolerance / 4, opt_.tolerance / 4, +1);
           std::vector<double> misses;
-          for (std::size_t i = 0; i < n; ++i) misses.push_back(Q.values[i] - s.a - s.b * L.values[i]);
+          for (std::size_t i = 0; i < best_x.size(); ++i) misses.push_back(best_y[i] - s.a - s.b * best_x[i]);
           f.add(drawn.size(), 1);
           drawn.push_back(Distribution{DistributionKind::Uniform, {}, -e, e});
           drawn_values.push_back(std::move(misses));
@@ -408,11 +469,11 @@ class Joiner {
         continue;
       }
       std::vector<Observation> obs;
-      for (double v : Q.values) obs.push_back({v, 1});
+      for (double v : seen_values) obs.push_back({v, 1});
       leaders.push_back(q);
       leader_param.push_back(drawn.size());
       drawn.push_back(fit_distribution(obs, fit));
-      drawn_values.push_back(Q.values);
+      drawn_values.push_back(seen_values);
       drawn_at.push_back(Q.occurrence);
       f.add(leader_param.back(), 1);
       formula[Q.occurrence][Q.part] = f;
@@ -490,7 +551,7 @@ class Joiner {
         sizes[o][i] = Size{linear_expr(renamed), split.parts[i].size.relative};
       }
     }
-    const NodeId body = regions.rebuild(r.root, sizes);
+    const NodeId body = regions.rebuild(r.root, sizes, names);
     Rule rule;
     rule.label = fresh_label(g_, g_.rules[r.rule].label + "Sizes");
     rule.params = names;
@@ -778,10 +839,19 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
     Regions regions(g);
     Joiner joiner(g, options);
     std::vector<NodeId> replace;
-    for (const Region& r : regions.all()) {
+    // Outer regions first: one rewritten holds its alternatives' sizes
+    // already, and its copy no longer holds their roots.
+    std::vector<bool> done(regions.all().size(), false);
+    for (std::size_t k = 0; k < regions.all().size(); ++k) {
+      const Region& r = regions.all()[k];
+      if (r.parent != Region::kNoRegion && done[r.parent]) {
+        done[k] = true;
+        continue;
+      }
       if (r.splits.empty() || !regions.unique(r)) continue;
       const auto call = joiner.region(regions, r, seen, out);
       if (!call) continue;
+      done[k] = true;
       if (replace.size() <= r.root) replace.resize(r.root + 1, kNoReplacement);
       replace[r.root] = *call;
     }

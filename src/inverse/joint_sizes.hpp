@@ -13,9 +13,10 @@
 // length of every random part in it (MatchedPart, lined up across
 // examples by derivation_path). This step reads those lengths region by
 // region (a region: what one derivation runs below the start or below an
-// alternative of a choice, through splits, transforms and calls of rules
-// that do not recurse, but not into repeats, whose tiles draw anew), and
-// per region:
+// alternative of a choice, through splits, transforms, choices and calls
+// of rules that do not recurse, but not into repeats, whose tiles draw
+// anew; a size inside an alternative is compared over the examples that
+// took it), and per region:
 //   - in a split whose relative parts all vary, only their shares are
 //     free: the last one is the rest, `~(10 - s1)`;
 //   - each other varying size, in derivation order, is compared with the
@@ -23,14 +24,15 @@
 //     one (within the tolerance) is written as that function, `~(0.5 *
 //     s1)`; one that follows an earlier one closely (|correlation| >= 0.9,
 //     five examples or more) is that function plus a drawn deviation
-//     `e1 = rand(-e, e)` as wide as the examples' largest; one the region's
+//     `s2 = rand(-e, e)` as wide as the examples' largest; one the region's
 //     examples all show the same is that constant; any other is drawn,
 //     `s2`, from the distribution its values fit best (fit_distribution).
 // A region with something to join becomes a rule with those draws as
 // parameters, `buildingSizes(s1, e1) --> split(x){ ... }`, called where
 // the region stood with the draws as arguments; the rules it called are
-// written out inside it. The whole change is kept only when every example
-// still checks.
+// written out inside it, but for a choice whose sizes change: that is a
+// rule of its own taking the same parameters. The whole change is kept
+// only when every example still checks.
 #pragma once
 
 #include <cstddef>
