@@ -161,9 +161,11 @@ class Regions {
       const NodeId now = rebuild(body, sizes, next);
       if (now == body) return id;
       if (!std::holds_alternative<Choose>(g_.op(now))) return now;
-      Rule rule{fresh_label(g_, g_.rules[c->rule].label + "Sizes"), *params_, now, g_.rules[c->rule].loc};
-      const auto called = static_cast<RuleId>(g_.rules.size());
-      g_.rules.push_back(std::move(rule));
+      auto [it, fresh] = choice_rules_.try_emplace(now, static_cast<RuleId>(g_.rules.size()));
+      const RuleId called = it->second;
+      if (fresh)
+        g_.rules.push_back(
+            Rule{fresh_label(g_, g_.rules[c->rule].label + "Sizes"), *params_, now, g_.rules[c->rule].loc});
       std::vector<Expr> args;
       for (std::size_t k = 0; k < params_->size(); ++k) args.push_back(Expr::param(static_cast<std::uint32_t>(k)));
       return g_.intern({Call{called, std::move(args)}, loc});
@@ -189,6 +191,7 @@ class Regions {
 
   Grammar& g_;
   const std::vector<std::string>* params_ = nullptr;
+  std::unordered_map<NodeId, RuleId> choice_rules_;  // a changed choice -> the rule made for it
   std::vector<bool> recursive_;
   std::vector<std::uint32_t> visits_;
   std::vector<Region> regions_;
