@@ -10,6 +10,7 @@
 #include <ceres/gradient_problem_solver.h>
 
 #include "graph/error.hpp"
+#include "inverse/tidy_numbers.hpp"
 
 namespace vern {
 
@@ -167,6 +168,17 @@ Expr distribution_expr(const Distribution& d) {
                         {Expr::number(d.mu), Expr::number(d.sigma), Expr::number(d.lo), Expr::number(d.hi)});
   }
   return Expr::number(0);
+}
+
+Distribution short_decimals(Distribution d, double tolerance) {
+  for (double& v : d.values) v = shortest_decimal(v, tolerance);
+  d.lo = shortest_decimal(d.lo, tolerance, -1);
+  d.hi = shortest_decimal(d.hi, tolerance, +1);
+  if (d.kind == DistributionKind::TruncatedNormal) {
+    d.mu = shortest_decimal(d.mu, std::max(tolerance, d.sigma * 0.01));
+    d.sigma = shortest_decimal(d.sigma, std::max(tolerance, d.sigma * 0.01));
+  }
+  return d;
 }
 
 }  // namespace vern

@@ -56,4 +56,8 @@ Distribution fit_distribution(const std::vector<Observation>& observations, cons
 // rand(lo, hi) or tnormal(mu, sigma, lo, hi).
 Expr distribution_expr(const Distribution& d);
 
+// The distribution's numbers as short decimals: support bounds rounded
+// outwards within `tolerance`, mu and sigma to about a hundredth of sigma.
+Distribution short_decimals(Distribution d, double tolerance);
+
 }  // namespace vern

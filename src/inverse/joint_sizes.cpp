@@ -10,11 +10,13 @@
 #include <unordered_set>
 
 #include "graph/parallel_for.hpp"
-#include "graph/reserved_words.hpp"
 #include "inverse/check.hpp"
 #include "inverse/derived_example.hpp"
 #include "inverse/fit_distribution.hpp"
+#include "inverse/rule_naming.hpp"
+#include "inverse/share_splits.hpp"
 #include "inverse/substitute.hpp"
+#include "inverse/unused_rules.hpp"
 #include "inverse/tidy_numbers.hpp"
 
 namespace vern {
@@ -68,12 +70,6 @@ std::vector<bool> recursive_rules(const Grammar& g) {
     }
   }
   return out;
-}
-
-std::string fresh_label(const Grammar& g, const std::string& base) {
-  std::string label = base;
-  for (int k = 2; g.find_rule(label) || is_operation_word(label); ++k) label = base + std::to_string(k);
-  return label;
 }
 
 bool draws(const Split& s) {
@@ -165,7 +161,7 @@ class Regions {
       const RuleId called = it->second;
       if (fresh)
         g_.rules.push_back(
-            Rule{fresh_label(g_, g_.rules[c->rule].label + "Sizes"), *params_, now, g_.rules[c->rule].loc});
+            Rule{free_label(g_, g_.rules[c->rule].label + "Sizes"), *params_, now, g_.rules[c->rule].loc});
       std::vector<Expr> args;
       for (std::size_t k = 0; k < params_->size(); ++k) args.push_back(Expr::param(static_cast<std::uint32_t>(k)));
       return g_.intern({Call{called, std::move(args)}, loc});
@@ -530,7 +526,7 @@ class Joiner {
     for (std::size_t k = 0; k < drawn.size(); ++k) {
       if (uses[k] < 2) continue;
       param[k] = static_cast<std::uint32_t>(args.size());
-      args.push_back(distribution_expr(tidy(drawn[k])));
+      args.push_back(distribution_expr(short_decimals(drawn[k], opt_.tolerance / 4)));
       names.push_back("s" + std::to_string(args.size()));
       if (++brought[drawn_at[k]] > 1) return std::nullopt;
     }
@@ -549,14 +545,14 @@ class Joiner {
           if (param[k]) renamed.add(*param[k], f->c[k]);
           // Used here only, with coefficient 1 (a leader or a deviation):
           // drawn in place.
-          else renamed.draws.push_back(distribution_expr(tidy(drawn[k])));
+          else renamed.draws.push_back(distribution_expr(short_decimals(drawn[k], opt_.tolerance / 4)));
         }
         sizes[o][i] = Size{linear_expr(renamed), split.parts[i].size.relative};
       }
     }
     const NodeId body = regions.rebuild(r.root, sizes, names);
     Rule rule;
-    rule.label = fresh_label(g_, g_.rules[r.rule].label + "Sizes");
+    rule.label = free_label(g_, g_.rules[r.rule].label + "Sizes");
     rule.params = names;
     rule.body = body;
     rule.loc = g_.rules[r.rule].loc;
@@ -568,243 +564,9 @@ class Joiner {
   }
 
  private:
-  // Short decimals for a fitted distribution's numbers (merging tidies
-  // the others before this runs).
-  Distribution tidy(Distribution d) const {
-    const double t = opt_.tolerance / 4;
-    for (double& v : d.values) v = shortest_decimal(v, t);
-    d.lo = shortest_decimal(d.lo, t, -1);
-    d.hi = shortest_decimal(d.hi, t, +1);
-    d.mu = shortest_decimal(d.mu, std::max(t, d.sigma * 0.01));
-    d.sigma = shortest_decimal(d.sigma, std::max(t, d.sigma * 0.01));
-    return d;
-  }
-
   Grammar& g_;
   const JointSizesOptions& opt_;
 };
-
-// ---- splits of two shares ----
-
-// The lines of one run of a split (a repeat runs it once per tile, on one
-// path): each starts where the part index does not go up.
-struct SplitRun {
-  NodeId split = 0;
-  std::vector<const MatchedPart*> parts;
-};
-
-std::vector<SplitRun> runs_of(const std::vector<MatchedPart>& parts) {
-  std::vector<SplitRun> out;
-  for (const MatchedPart& m : parts) {
-    if (out.empty() || out.back().split != m.split || out.back().parts.back()->path != m.path ||
-        out.back().parts.back()->part >= m.part)
-      out.push_back({m.split, {}});
-    out.back().parts.push_back(&m);
-  }
-  return out;
-}
-
-// Up to three primitive labels below a node and its axis: rectZ.
-std::string describe(const Grammar& g, NodeId id) {
-  std::vector<std::string> labels;
-  std::vector<NodeId> stack{id};
-  std::unordered_set<NodeId> seen;
-  while (!stack.empty() && labels.size() < 3) {
-    const NodeId n = stack.back();
-    stack.pop_back();
-    if (!seen.insert(n).second) continue;
-    const Operation& op = g.op(n);
-    if (const auto* p = std::get_if<Primitive>(&op)) {
-      if (std::ranges::find(labels, g.label(p->label)) == labels.end()) labels.push_back(g.label(p->label));
-      continue;
-    }
-    if (const auto* c = std::get_if<Call>(&op)) stack.push_back(g.rules[c->rule].body);
-    std::vector<NodeId> children;
-    for_each_child(op, [&](NodeId child) { children.push_back(child); });
-    stack.insert(stack.end(), children.rbegin(), children.rend());
-  }
-  std::string out;
-  for (const std::string& label : labels) {
-    bool first = true;  // of a label after the first: upper case
-    for (char ch : label) {
-      if (!std::isalnum(static_cast<unsigned char>(ch))) continue;
-      out += first && !out.empty() ? static_cast<char>(std::toupper(static_cast<unsigned char>(ch))) : ch;
-      first = false;
-    }
-  }
-  if (out.empty() || !std::isalpha(static_cast<unsigned char>(out[0]))) out = "part" + out;
-  const Expr& axis = std::get<Split>(g.op(id)).axis;
-  const ExprNode& a = axis.node(axis.root());
-  if (a.kind == ExprKind::Axis) out += static_cast<char>('X' + a.op);
-  return out;
-}
-
-// The two relative parts of a split whose relative parts are exactly two,
-// both drawn, nothing using a parameter.
-std::optional<std::pair<std::size_t, std::size_t>> two_shares(const Split& s) {
-  std::vector<std::size_t> relative;
-  for (std::size_t i = 0; i < s.parts.size(); ++i) {
-    if (s.parts[i].size.value.uses_params()) return std::nullopt;
-    if (s.parts[i].size.relative) relative.push_back(i);
-  }
-  if (relative.size() != 2) return std::nullopt;
-  for (std::size_t i : relative)
-    if (!s.parts[i].size.value.draws_random()) return std::nullopt;
-  return std::make_pair(relative[0], relative[1]);
-}
-
-// Every split of two drawn shares becomes one draw and the rest:
-// `rectZ(s1) --> split(z){ ~s1 : I(rect) | ~(9 - s1) : nil }`, s1 drawn
-// by its callers from the shares the examples show (all its runs, in
-// every example). Returns how many splits changed.
-std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, const JointSizesOptions& opt) {
-  struct Seen {
-    std::vector<std::pair<double, double>> lengths;  // the two parts, per run
-    bool lined_up = true;
-  };
-  std::unordered_map<NodeId, Seen> seen;
-  for (const CheckResult& r : results)
-    for (const SplitRun& run : runs_of(r.parts)) {
-      const auto* split = std::get_if<Split>(&g.op(run.split));
-      if (!split) continue;
-      const auto pair = two_shares(*split);
-      if (!pair) continue;
-      Seen& s = seen[run.split];
-      double a = -1, b = -1;
-      for (const MatchedPart* m : run.parts) {
-        if (m->part == pair->first) a = m->length;
-        if (m->part == pair->second) b = m->length;
-      }
-      if (a < 0 || b < 0 || !(a + b > 0)) s.lined_up = false;
-      else s.lengths.emplace_back(a, b);
-    }
-
-  // The rule each changed split runs as, the call that stands for it.
-  std::vector<NodeId> replace(g.node_count(), kNoReplacement);
-  std::unordered_map<NodeId, RuleId> rule_of;  // changed split -> its rule
-  std::unordered_map<RuleId, NodeId> body_of;  // that rule -> the split with shares
-  std::vector<std::vector<RuleId>> bodies(g.node_count());
-  for (RuleId r = 0; r < g.rules.size(); ++r)
-    if (g.rules[r].params.empty() && r != g.start_rule) bodies[g.rules[r].body].push_back(r);  // the start takes none
-  std::vector<NodeId> order;
-  for (const auto& [id, s] : seen)
-    if (s.lined_up && !s.lengths.empty()) order.push_back(id);
-  std::ranges::sort(order);  // the rules come out in one order every time
-  for (NodeId id : order) {
-    const Seen& s = seen[id];
-    double total = 0;
-    for (const auto& [a, b] : s.lengths) total += (a + b) / static_cast<double>(s.lengths.size());
-    total = shortest_decimal(total, total * 0.01);
-    std::vector<Observation> shares;
-    for (const auto& [a, b] : s.lengths) shares.push_back({total * a / (a + b), 1});
-    FitOptions fit;
-    fit.resolution = opt.tolerance;
-    fit.floor = 0;
-    fit.uniform_only = opt.uniform_distributions;
-    Distribution d = fit_distribution(shares, fit);
-    if (d.kind == DistributionKind::Uniform || d.kind == DistributionKind::TruncatedNormal) {
-      if (d.hi >= total) {
-        // The rest must stay a share: keep to the shares seen.
-        const auto [lo, hi] = std::ranges::minmax(shares, {}, &Observation::value);
-        d = Distribution{DistributionKind::Uniform, {}, lo.value, hi.value};
-      }
-    }
-    Split split = std::get<Split>(g.op(id));
-    const auto pair = *two_shares(split);
-    split.parts[pair.first].size = Size{Expr::param(0), true};
-    split.parts[pair.second].size =
-        Size{Expr::binary(BinaryOp::Sub, Expr::number(total), Expr::param(0)), true};
-    const SourceLoc loc = g.node(id).loc;
-    const NodeId shared = g.intern({std::move(split), loc});
-    RuleId rule;
-    if (!bodies[id].empty()) {
-      rule = bodies[id].front();
-    } else {
-      rule = static_cast<RuleId>(g.rules.size());
-      g.rules.push_back(Rule{fresh_label(g, describe(g, id)), {}, shared, loc});
-    }
-    g.rules[rule].params = {"s1"};
-    rule_of[id] = rule;
-    body_of[rule] = shared;
-    const double t = opt.tolerance / 4;
-    d.lo = shortest_decimal(d.lo, t, -1);
-    d.hi = shortest_decimal(d.hi, t, +1);
-    for (double& v : d.values) v = shortest_decimal(v, t);
-    if (d.kind == DistributionKind::TruncatedNormal) {
-      d.mu = shortest_decimal(d.mu, std::max(t, d.sigma * 0.01));
-      d.sigma = shortest_decimal(d.sigma, std::max(t, d.sigma * 0.01));
-    }
-    const NodeId call = g.intern({Call{rule, {distribution_expr(d)}}, loc});
-    if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
-    replace[id] = call;
-  }
-  if (rule_of.empty()) return 0;
-  // Calls of a rule that now takes the share: with it.
-  for (NodeId id = 0; id < replace.size(); ++id)
-    if (const auto* c = std::get_if<Call>(&g.op(id)); c && c->args.empty() && body_of.count(c->rule))
-      replace[id] = replace[g.rules[c->rule].body];
-  for (RuleId r = 0; r < g.rules.size(); ++r) {
-    const auto own = body_of.find(r);
-    g.rules[r].body = substitute(g, own != body_of.end() ? own->second : g.rules[r].body, replace);
-  }
-  return rule_of.size();
-}
-
-// Rules nothing calls any more (their bodies were written out inside a
-// region's rule) are dropped; the others keep their order.
-void drop_unused_rules(Grammar& g) {
-  std::vector<bool> used(g.rules.size(), false);
-  std::vector<RuleId> stack{g.start_rule};
-  used[g.start_rule] = true;
-  std::unordered_set<NodeId> seen;
-  while (!stack.empty()) {
-    const RuleId r = stack.back();
-    stack.pop_back();
-    std::vector<NodeId> nodes{g.rules[r].body};
-    while (!nodes.empty()) {
-      const NodeId id = nodes.back();
-      nodes.pop_back();
-      if (!seen.insert(id).second) continue;
-      if (const auto* c = std::get_if<Call>(&g.op(id)); c && !used[c->rule]) {
-        used[c->rule] = true;
-        stack.push_back(c->rule);
-      }
-      for_each_child(g.op(id), [&](NodeId child) { nodes.push_back(child); });
-    }
-  }
-  if (std::ranges::all_of(used, [](bool u) { return u; })) return;
-  // A fresh grammar of what is still used: derive() compiles every node
-  // it holds, and the dropped rules' calls would name rules gone.
-  std::vector<RuleId> index(g.rules.size(), 0);
-  RuleId next = 0;
-  for (RuleId r = 0; r < g.rules.size(); ++r)
-    if (used[r]) index[r] = next++;
-  Grammar out;
-  out.source_name = g.source_name;
-  out.start_rule = index[g.start_rule];
-  out.start_written = g.start_written;
-  out.scope = g.scope;
-  out.primitives = g.primitives;
-  out.constants = g.constants;
-  for (const std::string& label : g.labels()) out.label_id(label);  // the same ids
-  std::unordered_map<NodeId, NodeId> copied;
-  std::function<NodeId(NodeId)> copy = [&](NodeId id) {
-    if (const auto it = copied.find(id); it != copied.end()) return it->second;
-    Operation op = g.op(id);
-    for (NodeId* child : child_slots(op)) *child = copy(*child);
-    if (auto* c = std::get_if<Call>(&op)) c->rule = index[c->rule];
-    const NodeId now = out.intern({std::move(op), g.node(id).loc});
-    copied.emplace(id, now);
-    return now;
-  };
-  for (RuleId r = 0; r < g.rules.size(); ++r) {
-    if (!used[r]) continue;
-    Rule rule = g.rules[r];
-    rule.body = copy(rule.body);
-    out.rules.push_back(std::move(rule));
-  }
-  g = std::move(out);
-}
 
 }  // namespace
 
@@ -864,7 +626,7 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   auto splits_shared = [&] {
     // The runs seen in regions just rewritten no longer happen; they only
     // widen the shares of the splits still called elsewhere.
-    const std::size_t shared = share_splits(g, results, options);
+    const std::size_t shared = share_splits(g, results, {options.tolerance, options.uniform_distributions});
     out.joined += shared;
     return shared;
   };

@@ -200,4 +200,10 @@ Grammar rules_for(const Grammar& graph, NodeId root, const NamingOptions& option
   return RuleMaker(graph, options).run(root);
 }
 
+std::string free_label(const Grammar& g, const std::string& base) {
+  std::string label = base;
+  for (int k = 2; g.find_rule(label) || is_operation_word(label); ++k) label = base + std::to_string(k);
+  return label;
+}
+
 }  // namespace vern

@@ -22,4 +22,8 @@ struct NamingOptions {
 // 3, ... Deriving the result gives the same buildings as deriving root.
 Grammar rules_for(const Grammar& graph, NodeId root, const NamingOptions& options = {});
 
+// base, else base2, base3, ...: the first label no rule of g has and no
+// operation is spelled as (for rules added to a named grammar).
+std::string free_label(const Grammar& g, const std::string& base);
+
 }  // namespace vern

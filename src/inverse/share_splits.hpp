@@ -1,0 +1,29 @@
+// A split of two relative parts whose sizes both draw varies in one way
+// only, their ratio, yet draws twice: `~rand(2.5, 3.4) : I(rect) |
+// ~rand(5.6, 6.4) : nil`. Each such split becomes one draw and the rest,
+// `rectZ(s1) --> split(z){ ~s1 : I(rect) | ~(9 - s1) : nil }`, s1 drawn by
+// its callers from the distribution the shares the examples show fit
+// best (all its runs, in every example; joint_sizes.hpp says where the
+// lengths come from). A split that is a rule's body (not the start's)
+// gives that rule the parameter; any other runs as a new rule named after
+// its primitives.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "graph/grammar.hpp"
+#include "inverse/check.hpp"
+
+namespace vern {
+
+struct ShareOptions {
+  double tolerance = 1e-6;             // metres
+  bool uniform_distributions = false;  // shares as rand(min, max)
+};
+
+// results: each example checked against g (CheckResult::parts). Returns
+// how many splits changed; rules it leaves uncalled stay (unused_rules.hpp).
+std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, const ShareOptions& options);
+
+}  // namespace vern
