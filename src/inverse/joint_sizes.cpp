@@ -374,6 +374,7 @@ class Joiner {
         for (std::size_t i = 0; i < parts; ++i)
           if (count[i] != (random[i] ? 1 : 0)) return std::nullopt;  // run twice, or not lined up
       }
+      if (present == 0) continue;  // an alternative no example took: left as it is
       std::vector<std::size_t> relative, relative_random;
       for (std::size_t i = 0; i < parts; ++i) {
         if (!split.parts[i].size.relative) continue;
@@ -420,6 +421,7 @@ class Joiner {
       const Quantity& Q = quantities[q];
       Linear f;
       const std::vector<double> seen_values = present_values(Q.values);
+      if (seen_values.empty()) continue;
       const auto [lo, hi] = std::ranges::minmax(seen_values);
       if (hi - lo <= opt_.tolerance && seen_values.size() >= opt_.min_examples) {
         f.c0 = shortest_decimal((lo + hi) / 2, opt_.tolerance / 4);
