@@ -182,6 +182,36 @@ TEST(JointSizes, SizesDrawnApartStayApart) {
   EXPECT_LT(std::abs(sxy / std::sqrt(sxx * syy)), 0.5) << write_grammar(joint.grammar);
 }
 
+// A slab with a box centred on it, 2 to 8 times as wide as each inset.
+constexpr const char* kCentred = R"(
+@scope 10, 6, 8
+b --> split(z){ ~1 : I(rect) | ~3 : split(x){ ~1 : nil | ~rand(2, 8) : I(rect) | ~1 : nil } }
+)";
+
+// The largest difference between the left and the right inset of the
+// upper box, over 100 variants of g.
+double worst_off_centre(const Grammar& g) {
+  double worst = 0;
+  for (std::uint64_t seed = 1001; seed <= 1100; ++seed) {
+    const std::vector<LabelledBox> parts = test::derived_parts(derive_seed(g, seed));
+    double width = 0;
+    for (const LabelledBox& b : parts) width = std::max(width, b.max.x);
+    for (const LabelledBox& b : parts)
+      if (b.min.z > 1e-6) worst = std::max(worst, std::abs(b.min.x - (width - b.max.x)));
+  }
+  return worst;
+}
+
+TEST(JointSizes, EqualInsetsStayEqual) {
+  // Three shares, each drawn, where the examples vary in one way: the two
+  // insets are one share, s1, and the box the rest.
+  const Inference joint = inferred_from(kCentred, true);
+  expect_every_example_derivable(kCentred, joint.grammar);
+  EXPECT_LT(worst_off_centre(joint.grammar), 1e-3) << write_grammar(joint.grammar);
+  const Inference apart = inferred_from(kCentred, false);
+  EXPECT_GT(worst_off_centre(apart.grammar), 0.1) << write_grammar(apart.grammar);
+}
+
 // How many splits of g (as its rules reach them) draw two or more of
 // their sizes.
 std::size_t splits_drawing_twice(const Grammar& g) {

@@ -13,6 +13,7 @@
 #include "inverse/check.hpp"
 #include "inverse/derived_example.hpp"
 #include "inverse/fit_distribution.hpp"
+#include "inverse/linear_size.hpp"
 #include "inverse/rule_naming.hpp"
 #include "inverse/share_splits.hpp"
 #include "inverse/substitute.hpp"
@@ -193,96 +194,12 @@ class Regions {
   std::vector<Region> regions_;
 };
 
-// c0 + sum(c[k] * param k): what a size becomes.
-struct Linear {
-  double c0 = 0;
-  std::vector<double> c;    // per parameter
-  std::vector<Expr> draws;  // draws written in place (a parameter used once), added
-  double coefficient(std::size_t k) const { return k < c.size() ? c[k] : 0.0; }
-  void add(std::size_t k, double v) {
-    if (c.size() <= k) c.resize(k + 1, 0.0);
-    c[k] += v;
-  }
-};
-
-Expr linear_expr(const Linear& f) {
-  std::optional<Expr> out;
-  auto plus = [&](Expr term, bool negative) {
-    if (!out) out = negative ? Expr::unary(UnaryOp::Neg, std::move(term)) : std::move(term);
-    else out = Expr::binary(negative ? BinaryOp::Sub : BinaryOp::Add, std::move(*out), std::move(term));
-  };
-  const bool lead = f.c0 > 0 && std::ranges::any_of(f.c, [](double v) { return v < 0; });
-  if (lead) out = Expr::number(f.c0);
-  for (std::size_t k = 0; k < f.c.size(); ++k) {
-    const double v = f.c[k];
-    if (v == 0) continue;
-    Expr p = Expr::param(static_cast<std::uint32_t>(k));
-    if (std::abs(v) != 1) p = Expr::binary(BinaryOp::Mul, Expr::number(std::abs(v)), std::move(p));
-    plus(std::move(p), v < 0);
-  }
-  if (!lead && (f.c0 != 0 || (!out && f.draws.empty()))) {
-    if (!out) out = Expr::number(f.c0);
-    else plus(Expr::number(std::abs(f.c0)), f.c0 < 0);
-  }
-  for (const Expr& d : f.draws) plus(d, false);
-  return *out;
-}
-
 // One varying size of a region, its value in each example that shows it.
 struct Quantity {
   std::size_t occurrence = 0, part = 0;
   bool relative = false;
   std::vector<double> values;  // per example of the region
 };
-
-struct Fit {
-  double a = 0, b = 0, worst = 0, r = 0;
-};
-
-Fit line_fit(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    mx += x[i] / n;
-    my += y[i] / n;
-  }
-  double sxx = 0, sxy = 0, syy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sxx += (x[i] - mx) * (x[i] - mx);
-    sxy += (x[i] - mx) * (y[i] - my);
-    syy += (y[i] - my) * (y[i] - my);
-  }
-  Fit f;
-  if (sxx <= 0) return f;
-  f.b = sxy / sxx;
-  f.a = my - f.b * mx;
-  f.r = syy > 0 ? sxy / std::sqrt(sxx * syy) : 0;
-  return f;
-}
-
-double worst_miss(const std::vector<double>& x, const std::vector<double>& y, double a, double b) {
-  double worst = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) worst = std::max(worst, std::abs(y[i] - a - b * x[i]));
-  return worst;
-}
-
-// The line through the points with short decimals: within `tol` where
-// the exact line is, or, for a loose one, missing by at most a tenth more.
-Fit short_line(const std::vector<double>& x, const std::vector<double>& y, Fit f, double tol) {
-  double reach = 1;
-  for (double v : x) reach = std::max(reach, std::abs(v));
-  const double slack = std::max(tol, 0.1 * f.worst);
-  for (double step : {0.5, 0.1, 0.01, 0.001, 0.0001}) {
-    Fit t = f;
-    t.b = shortest_decimal(f.b, step * slack / reach);
-    double mean = 0;
-    for (std::size_t i = 0; i < x.size(); ++i) mean += (y[i] - t.b * x[i]) / static_cast<double>(x.size());
-    t.a = shortest_decimal(mean, step * slack);
-    t.worst = worst_miss(x, y, t.a, t.b);
-    if (t.worst <= f.worst + slack) return t;
-  }
-  return f;
-}
 
 // A quantity's value in an example that did not run its split.
 constexpr double kAbsent = std::numeric_limits<double>::quiet_NaN();
@@ -435,7 +352,7 @@ class Joiner {
       std::vector<double> best_x, best_y;
       for (std::size_t l = 0; l < leaders.size(); ++l) {
         auto [x, y] = paired(quantities[leaders[l]].values, Q.values);
-        if (x.size() < opt_.min_examples) continue;
+        if (x.size() < opt_.min_examples || !shows_a_line(x, opt_.tolerance)) continue;
         Fit t = line_fit(x, y);
         t.worst = worst_miss(x, y, t.a, t.b);
         if (!best || t.worst < best_fit.worst) {
@@ -495,6 +412,8 @@ class Joiner {
         f.c0 -= other->c0;
         for (std::size_t k = 0; k < other->c.size(); ++k) f.add(k, -other->c[k]);
       }
+      f.c0 = shortest_decimal(f.c0, opt_.tolerance / 4);
+      for (double& c : f.c) c = shortest_decimal(c, 1e-9);  // sums of short decimals, not float noise
       formula[rest.occurrence][rest.part] = f;
     }
 

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "inverse/fit_distribution.hpp"
+#include "inverse/linear_size.hpp"
 #include "inverse/rule_naming.hpp"
 #include "inverse/substitute.hpp"
 #include "inverse/tidy_numbers.hpp"
@@ -67,25 +69,71 @@ std::string describe(const Grammar& g, NodeId id) {
   return out;
 }
 
-// The two relative parts of a split whose relative parts are exactly two,
-// both drawn, nothing using a parameter.
-std::optional<std::pair<std::size_t, std::size_t>> two_shares(const Split& s) {
+// The relative parts of a split whose relative parts, two or more, all
+// draw, nothing using a parameter.
+std::optional<std::vector<std::size_t>> drawn_shares(const Split& s) {
   std::vector<std::size_t> relative;
   for (std::size_t i = 0; i < s.parts.size(); ++i) {
     if (s.parts[i].size.value.uses_params()) return std::nullopt;
     if (s.parts[i].size.relative) relative.push_back(i);
   }
-  if (relative.size() != 2) return std::nullopt;
+  if (relative.size() < 2) return std::nullopt;
   for (std::size_t i : relative)
     if (!s.parts[i].size.value.draws_random()) return std::nullopt;
-  return std::make_pair(relative[0], relative[1]);
+  return relative;
+}
+
+// The shares of one split, as lines in one parameter s1 (index 0): the
+// first share that varies is s1, the others constants or straight-line
+// functions of it within `tol` (the two equal insets around a tier: s1
+// and s1), the last the rest. None when two shares vary apart: check()
+// pins down one parameter per split.
+std::optional<std::vector<Linear>> share_lines(const std::vector<std::vector<double>>& shares, double total,
+                                               double tol) {
+  const std::size_t k = shares.size();
+  std::vector<Linear> out(k);
+  std::optional<std::size_t> leader;
+  for (std::size_t j = 0; j + 1 < k; ++j) {
+    const auto [lo, hi] = std::ranges::minmax(shares[j]);
+    if (hi - lo <= tol) {
+      out[j].c0 = shortest_decimal((lo + hi) / 2, tol / 4);
+      continue;
+    }
+    if (!leader) {
+      leader = j;
+      out[j].add(0, 1);
+      continue;
+    }
+    if (!shows_a_line(shares[*leader], tol)) return std::nullopt;
+    Fit f = line_fit(shares[*leader], shares[j]);
+    f.worst = worst_miss(shares[*leader], shares[j], f.a, f.b);
+    if (f.worst > tol / 4) return std::nullopt;
+    const Fit s = short_line(shares[*leader], shares[j], f, tol / 4);
+    out[j].c0 = s.a;
+    out[j].add(0, s.b);
+  }
+  if (!leader) return std::nullopt;  // nothing varies: no draw to share
+  out[k - 1].c0 = total;
+  for (std::size_t j = 0; j + 1 < k; ++j) {
+    out[k - 1].c0 -= out[j].c0;
+    out[k - 1].add(0, -out[j].coefficient(0));
+  }
+  out[k - 1].c0 = shortest_decimal(out[k - 1].c0, tol / 4);
+  for (double& c : out[k - 1].c) c = shortest_decimal(c, 1e-9);  // -1 - 0.69 is not quite -1.69
+  return out;
+}
+
+// The lowest a line reaches for s1 in [lo, hi].
+double lowest(const Linear& f, double lo, double hi) {
+  const double b = f.coefficient(0);
+  return f.c0 + b * (b > 0 ? lo : hi);
 }
 
 }  // namespace
 
 std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, const ShareOptions& opt) {
   struct Seen {
-    std::vector<std::pair<double, double>> lengths;  // the two parts, per run
+    std::vector<std::vector<double>> lengths;  // per run: the relative parts' lengths
     bool lined_up = true;
   };
   std::unordered_map<NodeId, Seen> seen;
@@ -93,16 +141,17 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
     for (const SplitRun& run : runs_of(r.parts)) {
       const auto* split = std::get_if<Split>(&g.op(run.split));
       if (!split) continue;
-      const auto pair = two_shares(*split);
-      if (!pair) continue;
+      const auto relative = drawn_shares(*split);
+      if (!relative) continue;
       Seen& s = seen[run.split];
-      double a = -1, b = -1;
-      for (const MatchedPart* m : run.parts) {
-        if (m->part == pair->first) a = m->length;
-        if (m->part == pair->second) b = m->length;
-      }
-      if (a < 0 || b < 0 || !(a + b > 0)) s.lined_up = false;
-      else s.lengths.emplace_back(a, b);
+      std::vector<double> lengths(relative->size(), -1);
+      for (const MatchedPart* m : run.parts)
+        for (std::size_t j = 0; j < relative->size(); ++j)
+          if (m->part == (*relative)[j]) lengths[j] = m->length;
+      double sum = 0;
+      for (double l : lengths) sum += l;
+      if (std::ranges::any_of(lengths, [](double l) { return l < 0; }) || !(sum > 0)) s.lined_up = false;
+      else s.lengths.push_back(std::move(lengths));
     }
 
   // The rule each changed split runs as, the call that stands for it.
@@ -118,28 +167,43 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
   std::ranges::sort(order);  // the rules come out in one order every time
   for (NodeId id : order) {
     const Seen& s = seen[id];
+    const std::size_t k = s.lengths.front().size();
+    const double runs = static_cast<double>(s.lengths.size());
     double total = 0;
-    for (const auto& [a, b] : s.lengths) total += (a + b) / static_cast<double>(s.lengths.size());
+    for (const auto& run : s.lengths)
+      for (double l : run) total += l / runs;
     total = shortest_decimal(total, total * 0.01);
-    std::vector<Observation> shares;
-    for (const auto& [a, b] : s.lengths) shares.push_back({total * a / (a + b), 1});
+    std::vector<std::vector<double>> shares(k);  // per part, per run
+    for (const auto& run : s.lengths) {
+      double sum = 0;
+      for (double l : run) sum += l;
+      for (std::size_t j = 0; j < k; ++j) shares[j].push_back(total * run[j] / sum);
+    }
+    const auto lines = share_lines(shares, total, opt.tolerance);
+    if (!lines) continue;
+    std::vector<Observation> drawn;
+    for (std::size_t j = 0; j + 1 < k; ++j)
+      if ((*lines)[j].coefficient(0) == 1 && (*lines)[j].c0 == 0 && drawn.empty())
+        for (double v : shares[j]) drawn.push_back({v, 1});
     FitOptions fit;
     fit.resolution = opt.tolerance;
     fit.floor = 0;
     fit.uniform_only = opt.uniform_distributions;
-    Distribution d = fit_distribution(shares, fit);
-    if (d.kind == DistributionKind::Uniform || d.kind == DistributionKind::TruncatedNormal) {
-      if (d.hi >= total) {
-        // The rest must stay a share: keep to the shares seen.
-        const auto [lo, hi] = std::ranges::minmax(shares, {}, &Observation::value);
-        d = Distribution{DistributionKind::Uniform, {}, lo.value, hi.value};
-      }
+    Distribution d = fit_distribution(drawn, fit);
+    auto room = [&](double lo, double hi) {
+      return std::ranges::all_of(*lines, [&](const Linear& f) { return lowest(f, lo, hi) > 0; });
+    };
+    if ((d.kind == DistributionKind::Uniform || d.kind == DistributionKind::TruncatedNormal) && !room(d.lo, d.hi)) {
+      // Every share must stay a share: keep to the values seen.
+      const auto [lo, hi] = std::ranges::minmax(drawn, {}, &Observation::value);
+      d = Distribution{DistributionKind::Uniform, {}, lo.value, hi.value};
     }
+    const double lo = d.kind == DistributionKind::Choice ? d.values.front() : d.lo;
+    const double hi = d.kind == DistributionKind::Choice ? d.values.back() : d.hi;
+    if (!room(lo, hi)) continue;
     Split split = std::get<Split>(g.op(id));
-    const auto pair = *two_shares(split);
-    split.parts[pair.first].size = Size{Expr::param(0), true};
-    split.parts[pair.second].size =
-        Size{Expr::binary(BinaryOp::Sub, Expr::number(total), Expr::param(0)), true};
+    const std::vector<std::size_t> relative = *drawn_shares(split);
+    for (std::size_t j = 0; j < k; ++j) split.parts[relative[j]].size = Size{linear_expr((*lines)[j]), true};
     const SourceLoc loc = g.node(id).loc;
     const NodeId shared = g.intern({std::move(split), loc});
     RuleId rule;
