@@ -1,12 +1,17 @@
-// A split of two relative parts whose sizes both draw varies in one way
-// only, their ratio, yet draws twice: `~rand(2.5, 3.4) : I(rect) |
-// ~rand(5.6, 6.4) : nil`. Each such split becomes one draw and the rest,
-// `rectZ(s1) --> split(z){ ~s1 : I(rect) | ~(9 - s1) : nil }`, s1 drawn by
-// its callers from the distribution the shares the examples show fit
-// best (all its runs, in every example; joint_sizes.hpp says where the
+// A split whose relative parts all draw varies in fewer ways than it
+// draws: `~rand(2.5, 3.4) : I(rect) | ~rand(5.6, 6.4) : nil` varies in its
+// ratio only, a tier's `~rand : nil | ~rand : tier | ~rand : nil` in its
+// (equal) insets only. Where the shares the examples show vary in one way
+// (each a constant or a straight-line function of the first that varies,
+// within the tolerance), the split becomes one draw and the rest:
+// `rectZ(s1) --> split(z){ ~s1 : I(rect) | ~(9 - s1) : nil }`,
+// `rectX(s1) --> split(x){ ~s1 : nil | ~(4.7 - 2 * s1) : ... | ~s1 : nil }`,
+// s1 drawn by its callers from the distribution the first share fits best
+// (all the split's runs, in every example; joint_sizes.hpp says where the
 // lengths come from). A split that is a rule's body (not the start's)
 // gives that rule the parameter; any other runs as a new rule named after
-// its primitives.
+// its primitives. Shares that vary in two ways are left as they are:
+// check() pins down one parameter per split.
 #pragma once
 
 #include <cstddef>
