@@ -87,8 +87,11 @@ class Regions {
     regions_.push_back({body, g.start_rule, {}});
     std::vector<std::size_t> open{0};
     collect(body, 0, 0, open, g.start_rule);
+    if (steps_ > kMaxSteps) regions_.clear();
   }
 
+  // None when the grammar, unrolled through its calls and alternatives,
+  // is too large to walk (joining is then not tried).
   const std::vector<Region>& all() const { return regions_; }
   // A region's root reached at one place only can be replaced by node id.
   bool unique(const Region& r) const { return visits_[r.root] == 1; }
@@ -113,6 +116,9 @@ class Regions {
   // of a choice is a region of its own and stays in the ones around it:
   // its sizes may follow sizes outside the choice.
   void collect(NodeId id, std::uint64_t parent, std::uint32_t slot, std::vector<std::size_t>& open, RuleId rule) {
+    // Every place a node runs is visited: calls and alternatives of
+    // shared rules multiply, so the walk stops at a bound.
+    if (++steps_ > kMaxSteps) return;
     const std::uint64_t path = derivation_path(parent, id, slot);
     ++visits_[id];
     const Operation& op = g_.op(id);
@@ -186,6 +192,8 @@ class Regions {
     return g_.intern({std::move(op), loc});
   }
 
+  static constexpr std::size_t kMaxSteps = 1'000'000;
+  std::size_t steps_ = 0;
   Grammar& g_;
   const std::vector<std::string>* params_ = nullptr;
   std::unordered_map<NodeId, RuleId> choice_rules_;  // a changed choice -> the rule made for it

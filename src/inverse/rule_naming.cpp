@@ -1,5 +1,6 @@
 #include "inverse/rule_naming.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <functional>
 #include <unordered_map>
@@ -11,6 +12,48 @@
 namespace vern {
 
 namespace {
+
+// A label as one word of a camel-case name: "right_angle" -> "RightAngle"
+// (first: "rightAngle").
+std::string word(const std::string& label, bool first) {
+  std::string w;
+  bool upper = !first;
+  for (char c : label) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) {
+      upper = true;
+      continue;
+    }
+    w += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
+    upper = false;
+  }
+  return w;
+}
+
+// What the node does, after its labels: Z for split(z), RowX, Choice, ...
+std::string suffix(const Grammar& g, NodeId id) {
+  auto axis_letter = [](const Expr& e) -> std::string {
+    const ExprNode& n = e.node(e.root());
+    return n.kind == ExprKind::Axis ? std::string(1, static_cast<char>('X' + n.op)) : std::string();
+  };
+  return std::visit(Overload{
+                        [&](const Split& s) { return axis_letter(s.axis); },
+                        [&](const RepeatN& r) { return "Row" + axis_letter(r.axis); },
+                        [&](const Repeat& r) { return "Row" + axis_letter(r.axis); },
+                        [&](const Choose&) { return std::string("Choice"); },
+                        [&](const Rotate&) { return std::string("Turned"); },
+                        [&](const auto&) { return std::string("Part"); },
+                    },
+                    g.op(id));
+}
+
+// The labels' words and the node's suffix (kind, where given, in its
+// place): rectRoofZ.
+std::string base_name(const Grammar& g, const std::vector<LabelId>& labels, NodeId id, const std::string& kind) {
+  std::string base;
+  for (std::size_t i = 0; i < labels.size(); ++i) base += word(g.label(labels[i]), i == 0);
+  if (base.empty() || !std::isalpha(static_cast<unsigned char>(base[0]))) base = "empty" + base;
+  return base + (kind.empty() ? suffix(g, id) : kind);
+}
 
 class RuleMaker {
  public:
@@ -79,43 +122,8 @@ class RuleMaker {
     return known.labels;
   }
 
-  static std::string word(const std::string& label, bool first) {
-    std::string w;
-    bool upper = !first;
-    for (char c : label) {
-      if (!std::isalnum(static_cast<unsigned char>(c))) {
-        upper = true;
-        continue;
-      }
-      w += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
-      upper = false;
-    }
-    return w;
-  }
-
-  std::string suffix(NodeId id) const {
-    auto axis_letter = [](const Expr& e) -> std::string {
-      const ExprNode& n = e.node(e.root());
-      return n.kind == ExprKind::Axis ? std::string(1, static_cast<char>('X' + n.op)) : std::string();
-    };
-    return std::visit(Overload{
-                          [&](const Split& s) { return axis_letter(s.axis); },
-                          [&](const RepeatN& r) { return "Row" + axis_letter(r.axis); },
-                          [&](const Repeat& r) { return "Row" + axis_letter(r.axis); },
-                          [&](const Choose&) { return std::string("Choice"); },
-                          [&](const Rotate&) { return std::string("Turned"); },
-                          [&](const auto&) { return std::string("Part"); },
-                      },
-                      from_.op(id));
-  }
-
   std::string name_for(NodeId id, const std::string& kind = {}) {
-    const std::vector<LabelId> labels = labels_below(id);
-    std::string base;
-    for (std::size_t i = 0; i < labels.size(); ++i) base += word(from_.label(labels[i]), i == 0);
-    if (base.empty() || !std::isalpha(static_cast<unsigned char>(base[0]))) base = "empty" + base;
-    base += kind.empty() ? suffix(id) : kind;
-    return unique(base);
+    return unique(base_name(from_, labels_below(id), id, kind));
   }
 
   // base, else base2, base3, ...: the first name not taken. Each base
@@ -198,6 +206,28 @@ class RuleMaker {
 
 Grammar rules_for(const Grammar& graph, NodeId root, const NamingOptions& options) {
   return RuleMaker(graph, options).run(root);
+}
+
+std::string node_name(const Grammar& g, NodeId id) {
+  // The first three labels depth first, through the rules it calls.
+  std::vector<LabelId> labels;
+  std::vector<NodeId> stack{id};
+  std::unordered_set<NodeId> seen;
+  while (!stack.empty() && labels.size() < 3) {
+    const NodeId n = stack.back();
+    stack.pop_back();
+    if (!seen.insert(n).second) continue;
+    const Operation& op = g.op(n);
+    if (const auto* p = std::get_if<Primitive>(&op)) {
+      if (std::find(labels.begin(), labels.end(), p->label) == labels.end()) labels.push_back(p->label);
+      continue;
+    }
+    if (const auto* c = std::get_if<Call>(&op)) stack.push_back(g.rules[c->rule].body);
+    std::vector<NodeId> children;
+    for_each_child(op, [&](NodeId child) { children.push_back(child); });
+    stack.insert(stack.end(), children.rbegin(), children.rend());
+  }
+  return base_name(g, labels, id, {});
 }
 
 std::string free_label(const Grammar& g, const std::string& base) {

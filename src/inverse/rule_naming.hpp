@@ -22,6 +22,11 @@ struct NamingOptions {
 // 3, ... Deriving the result gives the same buildings as deriving root.
 Grammar rules_for(const Grammar& graph, NodeId root, const NamingOptions& options = {});
 
+// The name rules_for gives a rule whose body is this node, before it is
+// made unique: its first three primitives' labels and what it does
+// (rectRoofZ), looking through the rules it calls.
+std::string node_name(const Grammar& g, NodeId id);
+
 // base, else base2, base3, ...: the first label no rule of g has and no
 // operation is spelled as (for rules added to a named grammar).
 std::string free_label(const Grammar& g, const std::string& base);

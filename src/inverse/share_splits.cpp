@@ -1,7 +1,6 @@
 #include "inverse/share_splits.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <optional>
 #include <unordered_map>
 #include <unordered_set>
@@ -31,41 +30,6 @@ std::vector<SplitRun> runs_of(const std::vector<MatchedPart>& parts) {
       out.push_back({m.split, {}});
     out.back().parts.push_back(&m);
   }
-  return out;
-}
-
-// Up to three primitive labels below a node and its axis: rectZ.
-std::string describe(const Grammar& g, NodeId id) {
-  std::vector<std::string> labels;
-  std::vector<NodeId> stack{id};
-  std::unordered_set<NodeId> seen;
-  while (!stack.empty() && labels.size() < 3) {
-    const NodeId n = stack.back();
-    stack.pop_back();
-    if (!seen.insert(n).second) continue;
-    const Operation& op = g.op(n);
-    if (const auto* p = std::get_if<Primitive>(&op)) {
-      if (std::ranges::find(labels, g.label(p->label)) == labels.end()) labels.push_back(g.label(p->label));
-      continue;
-    }
-    if (const auto* c = std::get_if<Call>(&op)) stack.push_back(g.rules[c->rule].body);
-    std::vector<NodeId> children;
-    for_each_child(op, [&](NodeId child) { children.push_back(child); });
-    stack.insert(stack.end(), children.rbegin(), children.rend());
-  }
-  std::string out;
-  for (const std::string& label : labels) {
-    bool first = true;  // of a label after the first: upper case
-    for (char ch : label) {
-      if (!std::isalnum(static_cast<unsigned char>(ch))) continue;
-      out += first && !out.empty() ? static_cast<char>(std::toupper(static_cast<unsigned char>(ch))) : ch;
-      first = false;
-    }
-  }
-  if (out.empty() || !std::isalpha(static_cast<unsigned char>(out[0]))) out = "part" + out;
-  const Expr& axis = std::get<Split>(g.op(id)).axis;
-  const ExprNode& a = axis.node(axis.root());
-  if (a.kind == ExprKind::Axis) out += static_cast<char>('X' + a.op);
   return out;
 }
 
@@ -211,7 +175,7 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
       rule = bodies[id].front();
     } else {
       rule = static_cast<RuleId>(g.rules.size());
-      g.rules.push_back(Rule{free_label(g, describe(g, id)), {}, shared, loc});
+      g.rules.push_back(Rule{free_label(g, node_name(g, id)), {}, shared, loc});
     }
     g.rules[rule].params = {"s1"};
     rule_of[id] = rule;
