@@ -20,7 +20,7 @@ namespace {
 // block, valid until the next call, without its line break.
 class LineSplitter {
  public:
-  explicit LineSplitter(std::istream& in) : in_(in), block_(4 * kMaxObjLine) {}
+  explicit LineSplitter(std::istream& in) : in_(in), block_(kFirstBlock) {}
 
   // The next line; `last` when it ends the stream without a line break.
   bool next(std::string_view& line, bool& last) {
@@ -49,19 +49,29 @@ class LineSplitter {
   }
 
   // Moves the unfinished line to the front and fills the rest of the
-  // block; the line is at most kMaxObjLine bytes, so room is left.
+  // block. The block starts small and doubles, up to kLastBlock, while
+  // reads fill it or a line does not fit: a few-kilobyte mesh (the
+  // built-in primitives are ten) costs no 4 MB block, and a long line
+  // (at most kMaxObjLine bytes here) always finds room.
   void refill() {
     std::memmove(block_.data(), block_.data() + begin_, end_ - begin_);
     end_ -= begin_;
     begin_ = 0;
+    if ((filled_ || end_ == block_.size()) && block_.size() < kLastBlock) block_.resize(2 * block_.size());
     in_.read(block_.data() + end_, static_cast<std::streamsize>(block_.size() - end_));
+    filled_ = end_ + static_cast<std::size_t>(in_.gcount()) == block_.size();
     end_ += static_cast<std::size_t>(in_.gcount());
     failed_ = in_.bad();
     at_end_ = !in_ || in_.gcount() == 0;
   }
 
+  static constexpr std::size_t kFirstBlock = std::size_t{1} << 16;
+  static constexpr std::size_t kLastBlock = 4 * kMaxObjLine;
+  static_assert(kLastBlock > kMaxObjLine && kLastBlock % kFirstBlock == 0);
+
   std::istream& in_;
   std::vector<char> block_;
+  bool filled_ = false;  // the last read filled the block: the stream goes on
   std::size_t begin_ = 0, end_ = 0;  // the unread bytes of block_
   bool at_end_ = false, failed_ = false;
 };
