@@ -176,35 +176,40 @@ class Tidier {
     const Split& s = std::get<Split>(g_.op(id));  // no nodes are added until the end
     number_.assign(n, 0.0);
     other_.assign(n, std::nullopt);
+    // Relative sizes only matter as ratios to each other (the absolute
+    // parts take their metres first, whatever the relative ones say), so
+    // literal ones become small whole ratios where they have them, beside
+    // absolute parts too: ~0.40383 : 1.2 : ~0.80767 is ~1 : 1.2 : ~2.
     relative_.clear();
-    bool all_relative_literals = true;
+    bool relative_literals = true;
     for (const auto& p : s.parts) {
-      const auto v = p.size.value.literal();
-      if (!p.size.relative || !v) all_relative_literals = false;
-      else relative_.push_back(*v);
+      if (!p.size.relative) continue;
+      if (const auto v = p.size.value.literal()) relative_.push_back(*v);
+      else relative_literals = false;
     }
     std::optional<std::vector<double>> ratios;
-    if (all_relative_literals) ratios = whole_ratios(relative_);
-    if (ratios) {
-      number_ = *ratios;
-    } else {
-      // Literal sizes: round the cut positions, not the sizes, so errors do
-      // not add up along a split of many parts; each size is then the
-      // difference of two short decimals (cleaned of binary noise).
-      double position = 0, rounded_previous = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const auto v = s.parts[i].size.value.literal();
-        if (!v) {
-          // Past a range the cut positions are unknown: start again.
-          other_[i] = tidy(s.parts[i].size.value);
-          position = rounded_previous = 0;
-          continue;
-        }
-        position += *v;
-        const double rounded = shortest_decimal(position, tol_);
-        number_[i] = shortest_decimal(rounded - rounded_previous, 1e-12 * std::max(1.0, rounded));
-        rounded_previous = rounded;
+    if (relative_literals && !relative_.empty()) ratios = whole_ratios(relative_);
+    // Other literal sizes: round the cut positions, not the sizes, so
+    // errors do not add up along a split of many parts; each size is then
+    // the difference of two short decimals (cleaned of binary noise).
+    double position = 0, rounded_previous = 0;
+    std::size_t next_ratio = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (ratios && s.parts[i].size.relative) {
+        number_[i] = (*ratios)[next_ratio++];
+        continue;
       }
+      const auto v = s.parts[i].size.value.literal();
+      if (!v) {
+        // Past a range the cut positions are unknown: start again.
+        other_[i] = tidy(s.parts[i].size.value);
+        position = rounded_previous = 0;
+        continue;
+      }
+      position += *v;
+      const double rounded = shortest_decimal(position, tol_);
+      number_[i] = shortest_decimal(rounded - rounded_previous, 1e-12 * std::max(1.0, rounded));
+      rounded_previous = rounded;
     }
     for (std::size_t i = 0; i < n && same; ++i)
       same = other_[i] ? *other_[i] == s.parts[i].size.value : is_number(s.parts[i].size.value, number_[i]);

@@ -1,9 +1,11 @@
 // Numbers a person would write (GRAMMAR.md, "Written grammars"), without
 // losing exactness: every example must still derive within tolerance.
 //
-//   - A split whose parts are all relative literals becomes small whole
-//     ratios when the lengths allow it: ~6.666666666666667 : ~3.3333333333333335
-//     is ~2 : ~1 (checked to 1e-9 relative, far below any tolerance).
+//   - A split whose relative parts are all literals writes them as small
+//     whole ratios when the lengths allow it: ~6.666666666666667 :
+//     ~3.3333333333333335 is ~2 : ~1, and ~0.40383 : 1.2 : ~0.80767 is
+//     ~1 : 1.2 : ~2 (checked to 1e-9 relative, far below any tolerance;
+//     the absolute parts are rounded as below).
 //   - Any other literal becomes the shortest decimal within the tolerance:
 //     0.30000000000000004 is 0.3.
 //   - A range rand(lo, hi) rounds outward to the shortest decimals within
