@@ -13,39 +13,51 @@ DeterministicSubtrees::DeterministicSubtrees(const Grammar& g) : g_(g), memo_(g.
   for (const Constant& c : g.constants) fixed_constants_.push_back(fixed(c.value));
 }
 
-// No draw, no parameter (the matcher holds their values, a derivation
-// started here would not), no constant that draws.
+// No draw and no constant that draws. (A parameter is noted apart: it is
+// fixed where the call that passes it is.)
 bool DeterministicSubtrees::fixed(const Expr& e) const {
   if (e.empty()) return true;
-  if (e.draws_random() || e.uses_params()) return false;
+  if (e.draws_random()) return false;
   for (const ExprNode& n : e.nodes())
     if (n.kind == ExprKind::Constant && !(n.index < fixed_constants_.size() && fixed_constants_[n.index])) return false;
   return true;
 }
 
-DeterministicSubtrees::Memo DeterministicSubtrees::classify(NodeId id) {
-  if (memo_[id] != kUnknown) return static_cast<Memo>(memo_[id]);
+std::int8_t DeterministicSubtrees::classify(NodeId id) {
+  if (memo_[id] != kUnknown) return memo_[id];
   // A node met again while it is being classified is recursion: counted
   // as random, so nothing on the cycle is taken for fixed too early.
   memo_[id] = kRandom;
   const Operation& op = g_.op(id);
-  Memo out = std::holds_alternative<Translate>(op) || std::holds_alternative<Scale>(op) ? kFixedPlaced : kFixed;
+  std::int8_t out = kFixed;
+  if (std::holds_alternative<Translate>(op) || std::holds_alternative<Scale>(op)) out |= kPlaced;
   const auto* choose = std::get_if<Choose>(&op);
   bool one = !(choose && choose->options.size() > 1);
-  for (const Expr* e : node_expressions(op)) one = one && fixed(*e);
-  std::vector<NodeId> below = node_children(op);
-  if (const auto* call = std::get_if<Call>(&op)) below.push_back(g_.rules[call->rule].body);
-  for (NodeId child : below) {
-    if (!one) break;
-    const Memo m = classify(child);
-    one = m != kRandom;
-    if (m == kFixedPlaced) out = kFixedPlaced;
+  for (const Expr* e : node_expressions(op)) {
+    one = one && fixed(*e);
+    if (e->uses_params()) out |= kReadsParams;
   }
+  auto below = [&](NodeId child, bool passes_params) {
+    if (!one) return;
+    const std::int8_t m = classify(child);
+    one = m != kRandom;
+    out |= m & kPlaced;
+    // A rule's body reads the parameters its call passes: the call's own
+    // arguments say whether they are fixed.
+    if (!passes_params) out |= m & kReadsParams;
+  };
+  for_each_child(op, [&](NodeId child) { below(child, false); });
+  if (const auto* call = std::get_if<Call>(&op)) below(g_.rules[call->rule].body, true);
   memo_[id] = one ? out : kRandom;
-  return static_cast<Memo>(memo_[id]);
+  return memo_[id];
 }
 
-bool DeterministicSubtrees::placed(NodeId id) { return id < memo_.size() && classify(id) == kFixedPlaced; }
+// A derivation started at the node knows no parameters: only where the
+// node reads none (a call passing literals may have a body that reads
+// them: the twins of twin_rules.hpp).
+bool DeterministicSubtrees::placed(NodeId id) {
+  return id < memo_.size() && classify(id) == (kFixed | kPlaced);
+}
 
 std::optional<std::string> DeterministicSubtrees::difference(
     NodeId id, const Scope& s, const std::vector<LabelledBox>& boxes, const std::vector<std::uint32_t>& inside,

@@ -5,7 +5,8 @@
 // the S placements inference writes for a pinwheel (placements.hpp) reach
 // into the next piece, and no cut lies between the pieces. But where the
 // grammar below a node has one outcome (no random draw, no choice between
-// alternatives, no parameter, no random constant), the node derives one
+// alternatives, no random constant, no parameter but those a call below
+// passes as fixed values), the node derives one
 // thing on a given scope: deriving it there with the forward engine and
 // comparing its terminals with the example's boxes is exact, whatever the
 // operations do.
@@ -41,12 +42,15 @@ class DeterministicSubtrees {
                                         const std::function<std::string(const LabelledBox&)>& describe);
 
  private:
-  enum Memo : std::int8_t { kUnknown = -1, kRandom = 0, kFixed = 1, kFixedPlaced = 2 };
-  Memo classify(NodeId id);
+  // Per node: kUnknown, kRandom, or kFixed with the bits kPlaced (a T or
+  // S below) and kReadsParams (a parameter of its rule in it or below,
+  // short of a call: fixed where its rule's call passes fixed values).
+  static constexpr std::int8_t kUnknown = -1, kRandom = 0, kFixed = 1, kPlaced = 2, kReadsParams = 4;
+  std::int8_t classify(NodeId id);
   bool fixed(const Expr& e) const;
 
   const Grammar& g_;
-  std::vector<std::int8_t> memo_;        // per node: a Memo
+  std::vector<std::int8_t> memo_;        // per node: see classify
   std::vector<bool> fixed_constants_;    // per constant: no draw in it or the constants it uses
   std::optional<Grammar> probe_;         // g_ plus a rule deriving the node asked about (made once)
 };
