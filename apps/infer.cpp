@@ -46,6 +46,9 @@ CommandLine make_command_line() {
           "joint (default): sizes the examples vary together are drawn once and shared, a split's\n"
           "parts that vary in one way only draw once (checks every example: slower);\n"
           "independent: each size drawn on its own"});
+  cl.add({"--twins", "", 1, "KIND",
+          "joined (default): parts built alike but for some numbers or an axis become one rule\n"
+          "called with each part's values; apart: each written out in full"});
   cl.add({"--seed", "-s", 1, "S", "seed of the test derivations run on the result (default 1)"});
   cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
   cl.add_standard_options();
@@ -106,6 +109,8 @@ int run(int argc, char** argv) {
     options.uniform_distributions = CommandLine::one_of(args, "--distributions", {"fitted", "uniform"}) == "uniform";
   if (args.has("--sizes"))
     options.joint_sizes = CommandLine::one_of(args, "--sizes", {"joint", "independent"}) == "joint";
+  if (args.has("--twins"))
+    options.twin_rules = CommandLine::one_of(args, "--twins", {"joined", "apart"}) == "joined";
   if (args.has("--start")) {
     options.start = args.value("--start");
     if (!is_rule_name(options.start))

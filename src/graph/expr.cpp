@@ -169,6 +169,15 @@ std::vector<std::size_t> Expr::children(std::size_t i) const {
   return roots;
 }
 
+Expr Expr::with_leaf(std::size_t i, const ExprNode& leaf) const {
+  if (nodes()[i].size != 1 || leaf.size != 1 || leaf.argc != 0)
+    throw Error(ErrorKind::Internal, "Expr::with_leaf: only a leaf replaces a leaf");
+  Expr e = *this;
+  if (e.is_single()) e.single_ = leaf;
+  else e.many_->nodes[i] = leaf;
+  return e;
+}
+
 std::optional<double> Expr::literal() const {
   if (empty()) return std::nullopt;
   const auto& r = nodes().back();

@@ -1,6 +1,7 @@
 #include "graph/node.hpp"
 
 #include <array>
+#include <type_traits>
 
 #include "graph/overload.hpp"
 
@@ -69,32 +70,50 @@ std::vector<NodeId*> child_slots(Operation& op) {
   return out;
 }
 
+namespace {
+
+// Both spellings of "the node's expressions" (to read, to rewrite): Op is
+// Operation or const Operation, Out a vector of pointers to match.
+template <class Op, class Out>
+void collect_expressions(Op& op, Out& out) {
+  std::visit(
+      [&](auto& o) {
+        using T = std::remove_cvref_t<decltype(o)>;
+        if constexpr (std::is_same_v<T, Split>) {
+          out.push_back(&o.axis);
+          for (auto& p : o.parts) out.push_back(&p.size.value);
+        } else if constexpr (std::is_same_v<T, Repeat>) {
+          out.insert(out.end(), {&o.axis, &o.size});
+        } else if constexpr (std::is_same_v<T, RepeatN>) {
+          out.insert(out.end(), {&o.axis, &o.count});
+        } else if constexpr (std::is_same_v<T, Choose>) {
+          for (auto& c : o.options) out.insert(out.end(), {&c.condition, &c.priority});
+        } else if constexpr (std::is_same_v<T, Call>) {
+          for (auto& a : o.args) out.push_back(&a);
+        } else if constexpr (std::is_same_v<T, Translate>) {
+          for (auto& s : o.offset) out.push_back(&s.value);
+        } else if constexpr (std::is_same_v<T, Scale>) {
+          for (auto& s : o.size) out.push_back(&s.value);
+        } else if constexpr (std::is_same_v<T, Rotate>) {
+          out.insert(out.end(), {&o.axis, &o.angle});
+        } else if constexpr (std::is_same_v<T, Colour>) {
+          out.insert(out.end(), {&o.rgb[0], &o.rgb[1], &o.rgb[2]});
+        }
+      },
+      op);
+}
+
+}  // namespace
+
 std::vector<const Expr*> node_expressions(const Operation& op) {
   std::vector<const Expr*> out;
-  std::visit(Overload{
-                 [&](const Split& s) {
-                   out.push_back(&s.axis);
-                   for (const auto& p : s.parts) out.push_back(&p.size.value);
-                 },
-                 [&](const Repeat& r) { out.insert(out.end(), {&r.axis, &r.size}); },
-                 [&](const RepeatN& r) { out.insert(out.end(), {&r.axis, &r.count}); },
-                 [&](const Choose& c) {
-                   for (const auto& o : c.options) out.insert(out.end(), {&o.condition, &o.priority});
-                 },
-                 [&](const Call& c) {
-                   for (const auto& a : c.args) out.push_back(&a);
-                 },
-                 [&](const Translate& t) {
-                   for (const auto& s : t.offset) out.push_back(&s.value);
-                 },
-                 [&](const Scale& s) {
-                   for (const auto& z : s.size) out.push_back(&z.value);
-                 },
-                 [&](const Rotate& r) { out.insert(out.end(), {&r.axis, &r.angle}); },
-                 [&](const Colour& c) { out.insert(out.end(), {&c.rgb[0], &c.rgb[1], &c.rgb[2]}); },
-                 [](const auto&) {},
-             },
-             op);
+  collect_expressions(op, out);
+  return out;
+}
+
+std::vector<Expr*> expression_slots(Operation& op) {
+  std::vector<Expr*> out;
+  collect_expressions(op, out);
   return out;
 }
 

@@ -195,4 +195,7 @@ std::pair<std::vector<NodeId>, bool> map_children(const Operation& op, F f) {
 // priorities, arguments, ...); empty ones (an absent condition) included.
 std::vector<const Expr*> node_expressions(const Operation& op);
 
+// The same expressions as places to rewrite them, in the same order.
+std::vector<Expr*> expression_slots(Operation& op);
+
 }  // namespace vern

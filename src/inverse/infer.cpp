@@ -15,8 +15,9 @@
 namespace vern {
 
 namespace {
-// Joining sizes checks every example twice; beyond this many parts in all
-// it is not tried (a million-part example is one example anyway).
+// Joining sizes checks every example twice, and joining twins reads the
+// whole grammar once per rule it makes; beyond this many parts in all
+// neither is tried (a million-part example is one example anyway).
 constexpr std::size_t kJoinedPartsLimit = 200'000;
 }  // namespace
 
@@ -85,6 +86,10 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
     joint.threads = options.threads;
     out.joint = join_sizes(out.grammar, examples, joint);
   }
+  // Last: it only rewrites what is written, and joining sizes reads the
+  // grammar's structure as rules_for left it. Bounded like joining, as its
+  // rounds each read the whole grammar.
+  if (options.twin_rules && parts <= kJoinedPartsLimit) out.twins = parameterise_twins(out.grammar);
 
   // @scope: each axis's size, or the range the examples span.
   for (int axis = 0; axis < 3; ++axis) {

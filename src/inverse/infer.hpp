@@ -15,6 +15,7 @@
 #include "graph/grammar.hpp"
 #include "inverse/example.hpp"
 #include "inverse/joint_sizes.hpp"
+#include "inverse/twin_rules.hpp"
 
 namespace vern {
 
@@ -29,6 +30,10 @@ struct InferOptions {
   // Sizes that vary together drawn once (joint_sizes.hpp); false: each
   // size drawn on its own (`--sizes independent`).
   bool joint_sizes = true;
+  // Twin subgraphs (equal but for numbers or axes) as one rule with
+  // parameters (twin_rules.hpp); false: each copy written out
+  // (`--twins apart`).
+  bool twin_rules = true;
   // The meshes parts are compared with to find turned ones (--primitives);
   // null: the built-in primitives. A label's first part's own mesh stands
   // in where the library's is not one of its turns.
@@ -44,6 +49,7 @@ struct Inference {
   PrimitiveLibrary primitives;   // each label's canonical mesh, in the unit box (orientation.hpp)
   double tolerance = 0;          // the tolerance used
   JointSizes joint;              // sizes drawn once for several parts (joint_sizes.hpp)
+  TwinRules twins;               // copies written as calls of one parameterised rule (twin_rules.hpp)
   std::size_t unturned_parts = 0;  // parts whose mesh is no turn of their label's: written unturned
   // "file:line:1: warning: ...\n  hint: ...", one per group of parts that no
   // straight cut separates (placed with S(...), split_graph.hpp), in

@@ -36,7 +36,11 @@ std::string suffix(const Grammar& g, NodeId id) {
     return n.kind == ExprKind::Axis ? std::string(1, static_cast<char>('X' + n.op)) : std::string();
   };
   return std::visit(Overload{
-                        [&](const Split& s) { return axis_letter(s.axis); },
+                        // An axis given by a parameter (twin_rules.hpp): no letter.
+                        [&](const Split& s) {
+                          const std::string a = axis_letter(s.axis);
+                          return a.empty() ? std::string("Split") : a;
+                        },
                         [&](const RepeatN& r) { return "Row" + axis_letter(r.axis); },
                         [&](const Repeat& r) { return "Row" + axis_letter(r.axis); },
                         [&](const Choose&) { return std::string("Choice"); },

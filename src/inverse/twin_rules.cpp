@@ -1,0 +1,224 @@
+#include "inverse/twin_rules.hpp"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "inverse/rule_naming.hpp"
+#include "inverse/substitute.hpp"
+#include "inverse/unused_rules.hpp"
+
+namespace vern {
+
+namespace {
+
+constexpr NodeId kNone = static_cast<NodeId>(-1);
+// Each round joins one group; a grammar has far fewer worth joining.
+constexpr std::size_t kMaxRounds = 256;
+
+bool is_slot(const ExprNode& n) { return n.kind == ExprKind::Number || n.kind == ExprKind::Axis; }
+
+// One number or axis a twin writes, where its twins may write another.
+struct Slot {
+  ExprNode value;
+  friend bool operator==(const Slot&, const Slot&) = default;
+};
+
+// The expression with every number 0 and every axis x: what twins share.
+Expr blanked(const Expr& e) {
+  Expr out = e;
+  for (std::size_t i = 0; i < e.nodes().size(); ++i) {
+    const ExprNode& n = e.node(i);
+    if (n.kind == ExprKind::Number) out = out.with_leaf(i, {.kind = ExprKind::Number, .number = 0});
+    else if (n.kind == ExprKind::Axis) out = out.with_leaf(i, {.kind = ExprKind::Axis, .op = 0});
+  }
+  return out;
+}
+
+// What the grammar writes, node by node, as description_length counts it.
+struct Survey {
+  std::vector<std::size_t> writes;   // places the node is written (0: unreached)
+  std::vector<std::size_t> ops;      // operations written at and below it
+  std::vector<std::size_t> numbers;  // number literals written at and below it
+  std::vector<NodeId> shape;         // its shape (an id in a scratch grammar); kNone: reads a parameter
+};
+
+Survey survey(const Grammar& g) {
+  const std::size_t n = g.node_count();
+  Survey s{std::vector<std::size_t>(n, 0), std::vector<std::size_t>(n, 0), std::vector<std::size_t>(n, 0),
+           std::vector<NodeId>(n, kNone)};
+  for (const Rule& r : g.rules) ++s.writes[r.body];
+  // A node's children were added before it, so going down the ids passes
+  // every parent before its children.
+  for (NodeId id = static_cast<NodeId>(n); id-- > 0;)
+    if (s.writes[id] > 0) for_each_child(g.op(id), [&](NodeId c) { s.writes[c] += s.writes[id]; });
+  Grammar shapes;  // node ids there name shapes
+  for (NodeId id = 0; id < n; ++id) {
+    if (s.writes[id] == 0) continue;
+    Operation op = g.op(id);
+    bool reads_parameter = false;
+    s.ops[id] = 1;
+    for (Expr* e : expression_slots(op)) {
+      reads_parameter = reads_parameter || e->uses_params();
+      for (const ExprNode& node : e->nodes()) s.numbers[id] += node.kind == ExprKind::Number ? 1 : 0;
+      *e = blanked(*e);
+    }
+    for (NodeId* c : child_slots(op)) {
+      s.ops[id] += s.ops[*c];
+      s.numbers[id] += s.numbers[*c];
+      reads_parameter = reads_parameter || s.shape[*c] == kNone;
+      *c = s.shape[*c];
+    }
+    if (!reads_parameter) s.shape[id] = shapes.intern({std::move(op), {}});
+  }
+  return s;
+}
+
+// The numbers and axes written below id, in writing order: the node's
+// expressions, then its children's.
+void collect_slots(const Grammar& g, NodeId id, std::vector<Slot>& out) {
+  for (const Expr* e : node_expressions(g.op(id)))
+    for (const ExprNode& n : e->nodes())
+      if (is_slot(n)) out.push_back({n});
+  for_each_child(g.op(id), [&](NodeId c) { collect_slots(g, c, out); });
+}
+
+// A group of twins and what joining it would do.
+struct Plan {
+  std::vector<NodeId> members;
+  std::vector<std::optional<std::uint32_t>> param_of;  // by slot: its parameter, if it varies
+  std::vector<std::vector<Slot>> args;                 // by member: its value of each parameter
+  long saving = 0;
+};
+
+std::optional<Plan> plan_for(const Grammar& g, const Survey& s, std::vector<NodeId> members, std::size_t max_params) {
+  std::vector<std::vector<Slot>> slots(members.size());
+  for (std::size_t m = 0; m < members.size(); ++m) collect_slots(g, members[m], slots[m]);
+  Plan plan;
+  plan.param_of.assign(slots.front().size(), std::nullopt);
+  std::vector<std::vector<Slot>> columns;  // one per parameter: each member's value
+  std::size_t varying_numbers = 0;
+  for (std::size_t j = 0; j < slots.front().size(); ++j) {
+    std::vector<Slot> column;
+    for (const auto& member : slots) column.push_back(member[j]);
+    if (std::ranges::all_of(column, [&](const Slot& v) { return v == column.front(); })) continue;
+    varying_numbers += column.front().value.kind == ExprKind::Number ? 1 : 0;
+    const auto same = std::ranges::find(columns, column);
+    plan.param_of[j] = static_cast<std::uint32_t>(same - columns.begin());
+    if (same == columns.end()) columns.push_back(std::move(column));
+  }
+  const std::size_t p = columns.size();
+  if (p == 0 || p > max_params) return std::nullopt;
+  // Written before: every copy in full. After: the rule once (its label,
+  // its parameters, its body less the numbers that became parameters) and
+  // at each place a call with its arguments.
+  const NodeId first = members.front();
+  const std::size_t each = s.ops[first] + s.numbers[first];
+  std::size_t places = 0;
+  for (NodeId m : members) places += s.writes[m];
+  const long before = static_cast<long>(places * each);
+  const long after = static_cast<long>(1 + p + each - varying_numbers + places * (1 + p));
+  plan.saving = before - after;
+  if (plan.saving <= 0) return std::nullopt;
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    std::vector<Slot> values;
+    for (const auto& column : columns) values.push_back(column[m]);
+    plan.args.push_back(std::move(values));
+  }
+  plan.members = std::move(members);
+  return plan;
+}
+
+// The twin below id written with parameters where its slots vary; `next`
+// counts the slots in collect_slots' order.
+NodeId with_parameters(Grammar& g, NodeId id, const Plan& plan, std::size_t& next) {
+  Operation op = g.op(id);  // a copy: building the children grows the arena
+  for (Expr* e : expression_slots(op))
+    for (std::size_t i = 0; i < e->nodes().size(); ++i)
+      if (is_slot(e->node(i)))
+        if (const auto param = plan.param_of[next++])
+          *e = e->with_leaf(i, {.kind = ExprKind::Param, .index = *param});
+  for (NodeId* c : child_slots(op)) *c = with_parameters(g, *c, plan, next);
+  return g.intern({std::move(op), g.node(id).loc});
+}
+
+Expr argument(const Slot& v) {
+  return v.value.kind == ExprKind::Axis ? Expr::axis(static_cast<Axis>(v.value.op)) : Expr::number(v.value.number);
+}
+
+// Parameter names: a1, a2 ... for axes, v1, v2 ... for numbers.
+std::vector<std::string> parameter_names(const std::vector<Slot>& kinds) {
+  std::vector<std::string> out;
+  std::size_t axes = 0, numbers = 0;
+  for (const Slot& k : kinds)
+    out.push_back(k.value.kind == ExprKind::Axis ? "a" + std::to_string(++axes) : "v" + std::to_string(++numbers));
+  return out;
+}
+
+void join(Grammar& g, const Plan& plan) {
+  const NodeId first = plan.members.front();
+  // A rule whose body is a twin: the first such takes the parameters.
+  std::map<NodeId, std::vector<RuleId>> body_of;
+  for (RuleId r = 0; r < g.rules.size(); ++r)
+    if (g.rules[r].params.empty() && r != g.start_rule) body_of[g.rules[r].body].push_back(r);
+  std::optional<RuleId> reused;
+  for (NodeId m : plan.members)
+    if (const auto it = body_of.find(m); it != body_of.end())
+      reused = std::min(reused.value_or(it->second.front()), it->second.front());
+  std::size_t next = 0;
+  const NodeId body = with_parameters(g, first, plan, next);
+  const RuleId rule = reused.value_or(static_cast<RuleId>(g.rules.size()));
+  if (!reused) {
+    g.rules.push_back(Rule{free_label(g, node_name(g, body)), {}, body, g.node(first).loc});
+  } else if (const std::string named = node_name(g, body); named != node_name(g, first)) {
+    // Its name said which axis; the axis is a parameter now.
+    g.rules[rule].label.clear();
+    g.rules[rule].label = free_label(g, named);
+  }
+  g.rules[rule].params = parameter_names(plan.args.front());
+
+  std::vector<NodeId> replace(g.node_count(), kNoReplacement);
+  std::map<RuleId, NodeId> call_for;  // a rule whose body was a twin -> the call it now is
+  for (std::size_t m = 0; m < plan.members.size(); ++m) {
+    std::vector<Expr> args;
+    for (const Slot& v : plan.args[m]) args.push_back(argument(v));
+    const NodeId member = plan.members[m];
+    const NodeId call = g.intern({Call{rule, std::move(args)}, g.node(member).loc});
+    if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
+    replace[member] = call;
+    if (const auto it = body_of.find(member); it != body_of.end())
+      for (RuleId r : it->second) call_for[r] = call;
+  }
+  for (NodeId id = 0; id < replace.size(); ++id)
+    if (const auto* c = std::get_if<Call>(&g.op(id)); c && c->args.empty())
+      if (const auto it = call_for.find(c->rule); it != call_for.end()) replace[id] = it->second;
+  for (RuleId r = 0; r < g.rules.size(); ++r)
+    g.rules[r].body = substitute(g, r == rule ? body : g.rules[r].body, replace);
+  drop_unused_rules(g);
+}
+
+}  // namespace
+
+TwinRules parameterise_twins(Grammar& g, const TwinOptions& options) {
+  TwinRules out;
+  for (std::size_t round = 0; round < kMaxRounds; ++round) {
+    const Survey s = survey(g);
+    std::map<NodeId, std::vector<NodeId>> groups;  // by shape, members in id order
+    for (NodeId id = 0; id < g.node_count(); ++id)
+      if (s.shape[id] != kNone && s.ops[id] >= 2) groups[s.shape[id]].push_back(id);
+    std::optional<Plan> best;
+    for (auto& [shape, members] : groups) {
+      if (members.size() < 2) continue;
+      auto plan = plan_for(g, s, std::move(members), options.max_params);
+      if (plan && (!best || plan->saving > best->saving)) best = std::move(plan);
+    }
+    if (!best) break;
+    join(g, *best);
+    ++out.rules;
+    out.copies += best->members.size();
+  }
+  return out;
+}
+
+}  // namespace vern
