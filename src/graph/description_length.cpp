@@ -4,15 +4,11 @@
 
 namespace vern {
 
-namespace {
-
-std::size_t literals(const Expr& e) {
+std::size_t number_literals(const Expr& e) {
   std::size_t n = 0;
   for (const ExprNode& node : e.nodes()) n += node.kind == ExprKind::Number ? 1 : 0;
   return n;
 }
-
-}  // namespace
 
 DescriptionLength description_length(const Grammar& grammar) {
   DescriptionLength d;
@@ -26,11 +22,11 @@ DescriptionLength description_length(const Grammar& grammar) {
     stack.pop_back();
     ++d.operations;
     const Operation& op = grammar.op(id);
-    for (const Expr* e : node_expressions(op)) d.numbers += literals(*e);
+    for (const Expr* e : node_expressions(op)) d.numbers += number_literals(*e);
     for (const NodeId c : node_children(op)) stack.push_back(c);
   }
-  for (const Constant& c : grammar.constants) d.numbers += literals(c.value);
-  for (const Expr& e : grammar.scope) d.numbers += literals(e);
+  for (const Constant& c : grammar.constants) d.numbers += number_literals(c.value);
+  for (const Expr& e : grammar.scope) d.numbers += number_literals(e);
   return d;
 }
 

@@ -24,4 +24,7 @@ struct DescriptionLength {
 
 DescriptionLength description_length(const Grammar& grammar);
 
+// The number literals of one expression: what it adds to `numbers`.
+std::size_t number_literals(const Expr& e);
+
 }  // namespace vern

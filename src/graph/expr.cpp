@@ -169,13 +169,11 @@ std::vector<std::size_t> Expr::children(std::size_t i) const {
   return roots;
 }
 
-Expr Expr::with_leaf(std::size_t i, const ExprNode& leaf) const {
+void Expr::set_leaf(std::size_t i, const ExprNode& leaf) {
   if (nodes()[i].size != 1 || leaf.size != 1 || leaf.argc != 0)
-    throw Error(ErrorKind::Internal, "Expr::with_leaf: only a leaf replaces a leaf");
-  Expr e = *this;
-  if (e.is_single()) e.single_ = leaf;
-  else e.many_->nodes[i] = leaf;
-  return e;
+    throw Error(ErrorKind::Internal, "Expr::set_leaf: only a leaf replaces a leaf");
+  if (is_single()) single_ = leaf;
+  else many_->nodes[i] = leaf;
 }
 
 std::optional<double> Expr::literal() const {

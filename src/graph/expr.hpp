@@ -100,9 +100,9 @@ class Expr {
   std::size_t children(std::size_t i, std::size_t* roots, std::size_t capacity) const;
   std::vector<std::size_t> children(std::size_t i) const;
 
-  // A copy with leaf i (a node without children) replaced by another leaf:
-  // the tree keeps its shape, so no subtree size changes.
-  Expr with_leaf(std::size_t i, const ExprNode& leaf) const;
+  // Leaf i (a node without children) becomes another leaf: the tree keeps
+  // its shape, so no subtree size changes.
+  void set_leaf(std::size_t i, const ExprNode& leaf);
 
   // The literal number, if the whole expression is one.
   std::optional<double> literal() const;

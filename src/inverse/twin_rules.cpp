@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "graph/description_length.hpp"
 #include "inverse/rule_naming.hpp"
 #include "inverse/substitute.hpp"
 #include "inverse/unused_rules.hpp"
@@ -14,8 +15,9 @@ namespace vern {
 namespace {
 
 constexpr NodeId kNone = static_cast<NodeId>(-1);
-// Each round joins one group; a grammar has far fewer worth joining.
-constexpr std::size_t kMaxRounds = 256;
+// Each round joins every group it can apart from the others; twins
+// inside twins take a round per level of nesting.
+constexpr std::size_t kMaxRounds = 64;
 
 bool is_slot(const ExprNode& n) { return n.kind == ExprKind::Number || n.kind == ExprKind::Axis; }
 
@@ -25,15 +27,13 @@ struct Slot {
   friend bool operator==(const Slot&, const Slot&) = default;
 };
 
-// The expression with every number 0 and every axis x: what twins share.
-Expr blanked(const Expr& e) {
-  Expr out = e;
+// Every number becomes 0 and every axis x: what twins share.
+void blank(Expr& e) {
   for (std::size_t i = 0; i < e.nodes().size(); ++i) {
-    const ExprNode& n = e.node(i);
-    if (n.kind == ExprKind::Number) out = out.with_leaf(i, {.kind = ExprKind::Number, .number = 0});
-    else if (n.kind == ExprKind::Axis) out = out.with_leaf(i, {.kind = ExprKind::Axis, .op = 0});
+    const ExprKind kind = e.node(i).kind;
+    if (kind == ExprKind::Number) e.set_leaf(i, {.kind = ExprKind::Number, .number = 0});
+    else if (kind == ExprKind::Axis) e.set_leaf(i, {.kind = ExprKind::Axis, .op = 0});
   }
-  return out;
 }
 
 // What the grammar writes, node by node, as description_length counts it.
@@ -61,8 +61,8 @@ Survey survey(const Grammar& g) {
     s.ops[id] = 1;
     for (Expr* e : expression_slots(op)) {
       reads_parameter = reads_parameter || e->uses_params();
-      for (const ExprNode& node : e->nodes()) s.numbers[id] += node.kind == ExprKind::Number ? 1 : 0;
-      *e = blanked(*e);
+      s.numbers[id] += number_literals(*e);
+      blank(*e);
     }
     for (NodeId* c : child_slots(op)) {
       s.ops[id] += s.ops[*c];
@@ -138,7 +138,7 @@ NodeId with_parameters(Grammar& g, NodeId id, const Plan& plan, std::size_t& nex
     for (std::size_t i = 0; i < e->nodes().size(); ++i)
       if (is_slot(e->node(i)))
         if (const auto param = plan.param_of[next++])
-          *e = e->with_leaf(i, {.kind = ExprKind::Param, .index = *param});
+          e->set_leaf(i, {.kind = ExprKind::Param, .index = *param});
   for (NodeId* c : child_slots(op)) *c = with_parameters(g, *c, plan, next);
   return g.intern({std::move(op), g.node(id).loc});
 }
@@ -156,45 +156,83 @@ std::vector<std::string> parameter_names(const std::vector<Slot>& kinds) {
   return out;
 }
 
-void join(Grammar& g, const Plan& plan) {
-  const NodeId first = plan.members.front();
+// The nodes written below id (itself included), as collect_slots walks them.
+template <class F>
+void for_each_written(const Grammar& g, NodeId id, F f) {
+  f(id);
+  for_each_child(g.op(id), [&](NodeId c) { for_each_written(g, c, f); });
+}
+
+// The plans, largest saving first, whose twins neither hold nor lie inside
+// a twin of a plan taken before: each rewrites a part of the grammar no
+// other touches, so all of them are joined in one rewrite. (Twins sharing
+// a node below, an I(rect), touch nothing of each other.)
+std::vector<Plan> apart_from_each_other(const Grammar& g, std::vector<Plan> plans) {
+  std::stable_sort(plans.begin(), plans.end(), [](const Plan& a, const Plan& b) { return a.saving > b.saving; });
+  std::vector<bool> below(g.node_count(), false);  // in or below a taken twin
+  std::vector<bool> taken(g.node_count(), false);  // a taken twin
+  std::vector<Plan> out;
+  for (Plan& plan : plans) {
+    bool clear = true;
+    for (NodeId m : plan.members) {
+      clear = clear && !below[m];
+      for_each_written(g, m, [&](NodeId n) { clear = clear && !taken[n]; });
+    }
+    if (!clear) continue;
+    for (NodeId m : plan.members) {
+      taken[m] = true;
+      for_each_written(g, m, [&](NodeId n) { below[n] = true; });
+    }
+    out.push_back(std::move(plan));
+  }
+  return out;
+}
+
+void join(Grammar& g, const std::vector<Plan>& plans) {
   // A rule whose body is a twin: the first such takes the parameters.
   std::map<NodeId, std::vector<RuleId>> body_of;
   for (RuleId r = 0; r < g.rules.size(); ++r)
     if (g.rules[r].params.empty() && r != g.start_rule) body_of[g.rules[r].body].push_back(r);
-  std::optional<RuleId> reused;
-  for (NodeId m : plan.members)
-    if (const auto it = body_of.find(m); it != body_of.end())
-      reused = std::min(reused.value_or(it->second.front()), it->second.front());
-  std::size_t next = 0;
-  const NodeId body = with_parameters(g, first, plan, next);
-  const RuleId rule = reused.value_or(static_cast<RuleId>(g.rules.size()));
-  if (!reused) {
-    g.rules.push_back(Rule{free_label(g, node_name(g, body)), {}, body, g.node(first).loc});
-  } else if (const std::string named = node_name(g, body); named != node_name(g, first)) {
-    // Its name said which axis; the axis is a parameter now.
-    g.rules[rule].label.clear();
-    g.rules[rule].label = free_label(g, named);
-  }
-  g.rules[rule].params = parameter_names(plan.args.front());
-
-  std::vector<NodeId> replace(g.node_count(), kNoReplacement);
+  std::map<RuleId, NodeId> new_body;  // a rule taking parameters -> its body with them
+  std::map<NodeId, NodeId> call_of;   // a twin -> the call that stands for it
   std::map<RuleId, NodeId> call_for;  // a rule whose body was a twin -> the call it now is
-  for (std::size_t m = 0; m < plan.members.size(); ++m) {
-    std::vector<Expr> args;
-    for (const Slot& v : plan.args[m]) args.push_back(argument(v));
-    const NodeId member = plan.members[m];
-    const NodeId call = g.intern({Call{rule, std::move(args)}, g.node(member).loc});
-    if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
-    replace[member] = call;
-    if (const auto it = body_of.find(member); it != body_of.end())
-      for (RuleId r : it->second) call_for[r] = call;
+  for (const Plan& plan : plans) {
+    const NodeId first = plan.members.front();
+    std::optional<RuleId> reused;
+    for (NodeId m : plan.members)
+      if (const auto it = body_of.find(m); it != body_of.end())
+        reused = std::min(reused.value_or(it->second.front()), it->second.front());
+    std::size_t next = 0;
+    const NodeId body = with_parameters(g, first, plan, next);
+    const RuleId rule = reused.value_or(static_cast<RuleId>(g.rules.size()));
+    if (!reused) {
+      g.rules.push_back(Rule{free_label(g, node_name(g, body)), {}, body, g.node(first).loc});
+    } else if (const std::string named = node_name(g, body); named != node_name(g, first)) {
+      // Its name said which axis; the axis is a parameter now.
+      g.rules[rule].label.clear();
+      g.rules[rule].label = free_label(g, named);
+    }
+    g.rules[rule].params = parameter_names(plan.args.front());
+    new_body[rule] = body;
+    for (std::size_t m = 0; m < plan.members.size(); ++m) {
+      std::vector<Expr> args;
+      for (const Slot& v : plan.args[m]) args.push_back(argument(v));
+      const NodeId member = plan.members[m];
+      const NodeId call = g.intern({Call{rule, std::move(args)}, g.node(member).loc});
+      call_of[member] = call;
+      if (const auto it = body_of.find(member); it != body_of.end())
+        for (RuleId r : it->second) call_for[r] = call;
+    }
   }
+  std::vector<NodeId> replace(g.node_count(), kNoReplacement);
+  for (const auto& [member, call] : call_of) replace[member] = call;
   for (NodeId id = 0; id < replace.size(); ++id)
     if (const auto* c = std::get_if<Call>(&g.op(id)); c && c->args.empty())
       if (const auto it = call_for.find(c->rule); it != call_for.end()) replace[id] = it->second;
-  for (RuleId r = 0; r < g.rules.size(); ++r)
-    g.rules[r].body = substitute(g, r == rule ? body : g.rules[r].body, replace);
+  for (RuleId r = 0; r < g.rules.size(); ++r) {
+    const auto own = new_body.find(r);
+    g.rules[r].body = substitute(g, own != new_body.end() ? own->second : g.rules[r].body, replace);
+  }
   drop_unused_rules(g);
 }
 
@@ -207,16 +245,18 @@ TwinRules parameterise_twins(Grammar& g, const TwinOptions& options) {
     std::map<NodeId, std::vector<NodeId>> groups;  // by shape, members in id order
     for (NodeId id = 0; id < g.node_count(); ++id)
       if (s.shape[id] != kNone && s.ops[id] >= 2) groups[s.shape[id]].push_back(id);
-    std::optional<Plan> best;
+    std::vector<Plan> plans;
     for (auto& [shape, members] : groups) {
       if (members.size() < 2) continue;
-      auto plan = plan_for(g, s, std::move(members), options.max_params);
-      if (plan && (!best || plan->saving > best->saving)) best = std::move(plan);
+      if (auto plan = plan_for(g, s, std::move(members), options.max_params)) plans.push_back(std::move(*plan));
     }
-    if (!best) break;
-    join(g, *best);
-    ++out.rules;
-    out.copies += best->members.size();
+    plans = apart_from_each_other(g, std::move(plans));
+    if (plans.empty()) break;
+    join(g, plans);
+    for (const Plan& plan : plans) {
+      ++out.rules;
+      out.copies += plan.members.size();
+    }
   }
   return out;
 }

@@ -23,8 +23,9 @@
 // numbers (as description_length counts them) against the rule's, plus
 // one for the rule, one per parameter and one per argument written; at
 // most max_params parameters (a call with more values than that reads worse
-// than the copies). The largest saving is taken first, again until none
-// is left, so twins inside twins are joined too. A rule whose body was a
+// than the copies). Groups are joined largest saving first, in one rewrite
+// all those whose twins neither hold nor lie inside another's; rounds
+// repeat until none is left, so twins inside twins are joined too. A rule whose body was a
 // twin takes the parameters (its callers pass its own values), the first
 // such rule in grammar order; the others' callers call it instead.
 //
