@@ -177,5 +177,32 @@ TEST(Infer, WallsKeepTheirThicknessAndWindowsFollowTheWidth) {
   }
 }
 
+// @scope is fitted as every varying size is: heights seen again and again
+// (storeys of one height) are a choice of them, widths spread over a
+// range reach a little beyond the widest and narrowest seen.
+TEST(Infer, PlotSizesGetTheDistributionTheyFit) {
+  std::vector<Example> examples;
+  for (int i = 0; i < 10; ++i) {
+    const double width = 8 + 1.37 * i, height = i % 2 ? 6 : 9;
+    examples.push_back(test::example_of({test::part("block", {0, 0, 0}, {width, 5, height})}));
+  }
+  const Inference inferred = infer(examples, {});
+  const std::string text = write_grammar(inferred.grammar);
+  auto write_expr = [&](const Expr& e) { return write_expression(inferred.grammar, e, {}); };
+  EXPECT_EQ(write_expr(inferred.grammar.scope[1]), "5") << text;
+  EXPECT_EQ(write_expr(inferred.grammar.scope[2]), "choice(6, 9)") << text;
+  const std::string width = write_expr(inferred.grammar.scope[0]);
+  EXPECT_EQ(width.rfind("rand(", 0), 0u) << text;
+  double lo = 0, hi = 0;
+  ASSERT_EQ(std::sscanf(width.c_str(), "rand(%lf, %lf)", &lo, &hi), 2) << width;
+  EXPECT_LT(lo, 8);
+  EXPECT_GT(hi, 8 + 1.37 * 9);
+  // --distributions uniform keeps the plain range of what was seen.
+  InferOptions uniform;
+  uniform.uniform_distributions = true;
+  const Grammar plain = infer(examples, uniform).grammar;
+  EXPECT_EQ(write_expression(plain, plain.scope[2], {}), "rand(6, 9)");
+}
+
 }  // namespace
 }  // namespace vern

@@ -292,9 +292,7 @@ class Deriver {
       fail_here(ErrorKind::Input, op.amount.source->loc(),
                 "the tile size of repeat is " + format_number(tile) + "; it must be > 0",
                 "give a tile length in metres, or use repeatN(axis, count) for a number of tiles");
-    const double q = s.extent(a) / tile;
-    // ceil, forgiving float noise: 0.7 / 0.1 is 7.000000000000001 and means 7.
-    const double count = std::max(1.0, std::ceil(q - 1e-9 * std::max(1.0, q)));
+    const double count = repeat_tile_count(s.extent(a), tile);
     if (count > double(opt_.limits.max_operations))
       fail_here(ErrorKind::Limit, loc(id), "repeat would make " + format_number(count) + " tiles",
                 "raise the limit with --max-operations, or use a larger tile size");

@@ -7,7 +7,9 @@
 // in the source it came from (which takes no part in equality or hashing).
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string_view>
 #include <utility>
@@ -51,6 +53,14 @@ struct Repeat {
   NodeId child = 0;
   friend bool operator==(const Repeat&, const Repeat&) = default;
 };
+
+// How many tiles repeat makes on a length: ceil, forgiving float noise
+// (0.7 / 0.1 is 7.000000000000001 and means 7). derive(), check and
+// inference must agree on it to the last bit.
+inline double repeat_tile_count(double length, double tile) {
+  const double q = length / tile;
+  return std::max(1.0, std::ceil(q - 1e-9 * std::max(1.0, q)));
+}
 
 // repeatN(axis, n){ op }: round(n) equal tiles, none if n <= 0.
 struct RepeatN {

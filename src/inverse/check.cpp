@@ -1079,11 +1079,7 @@ class Matcher {
       auto size = evaluate(r->size, id, s, "the tile size");
       if (!size) return std::nullopt;
       random = !size->exact;
-      // derive()'s tile count for a tile size: ceil, forgiving float noise.
-      auto count_for = [&](double tile) {
-        const double q = length / tile;
-        return std::max(1.0, std::ceil(q - 1e-9 * std::max(1.0, q)));
-      };
+      auto count_for = [&](double tile) { return repeat_tile_count(length, tile); };
       const Support sizes = size->support.clamp(std::numeric_limits<double>::min(), kInf);
       if (sizes.empty()) {
         if (recording()) fail(id, s, "the tile size " + expr_text(r->size) + " is never > 0, so derive() fails here");

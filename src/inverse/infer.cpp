@@ -5,6 +5,7 @@
 #include "graph/alongside.hpp"
 #include "graph/parallel_for.hpp"
 #include "inverse/box_split.hpp"
+#include "inverse/fit_distribution.hpp"
 #include "inverse/joint_sizes.hpp"
 #include "inverse/merge.hpp"
 #include "inverse/orientation.hpp"
@@ -19,6 +20,18 @@ namespace {
 // whole grammar once per rule it makes; beyond this many parts in all
 // neither is tried (a million-part example is one example anyway).
 constexpr std::size_t kJoinedPartsLimit = 200'000;
+
+// One axis of @scope. A plot is never empty: the fitted support stops at
+// half the smallest size seen, as a part's does (merge.cpp).
+Expr scope_size(const std::vector<Observation>& sizes, double tolerance, double rounding, bool uniform_only) {
+  double smallest = sizes[0].value;
+  for (const Observation& o : sizes) smallest = std::min(smallest, o.value);
+  FitOptions fit;
+  fit.resolution = tolerance;
+  fit.floor = smallest / 2;
+  fit.uniform_only = uniform_only;
+  return distribution_expr(short_decimals(fit_distribution(sizes, fit), rounding));
+}
 }  // namespace
 
 Inference infer(const std::vector<Example>& examples, const InferOptions& options) {
@@ -91,15 +104,14 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   // rounds each read the whole grammar.
   if (options.twin_rules && parts <= kJoinedPartsLimit) out.twins = parameterise_twins(out.grammar);
 
-  // @scope: each axis's size, or the range the examples span.
+  // @scope: per axis, the examples' sizes as the distribution they fit
+  // best, as every varying size is (a plot width seen ten times between
+  // 8 and 20 m reaches a little beyond; four heights seen again and again
+  // are a choice of those four), or the one size they share.
   for (int axis = 0; axis < 3; ++axis) {
-    Range r{example_size(examples[0])[axis], example_size(examples[0])[axis]};
-    for (const auto& e : examples) {
-      r.lo = std::min(r.lo, example_size(e)[axis]);
-      r.hi = std::max(r.hi, example_size(e)[axis]);
-    }
-    r = {shortest_decimal(r.lo, smallest / 4, -1), shortest_decimal(r.hi, smallest / 4, +1)};
-    out.grammar.scope[axis] = range_expr(r, out.tolerance);
+    std::vector<Observation> sizes;
+    for (const auto& e : examples) sizes.push_back({example_size(e)[axis], 1});
+    out.grammar.scope[axis] = scope_size(sizes, out.tolerance, smallest / 4, options.uniform_distributions);
   }
 
   // The first mesh seen for each label stands for all its parts.

@@ -1,6 +1,7 @@
 #include "inverse/merge.hpp"
 
 #include "inverse/generalise.hpp"
+#include "inverse/alternative_lengths.hpp"
 #include "inverse/fit_distribution.hpp"
 #include "inverse/repeat_folding.hpp"
 #include "inverse/sample_book.hpp"
@@ -697,6 +698,9 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   everywhere([&](NodeId n) { return fitter.run(n); });
   Simplifier simplifier(g, options);
   everywhere([&](NodeId n) { return simplifier.run(n); });
+  // Last, on the splits as they are written (flattened): alternatives
+  // seen at different lengths keep the lengths they all share.
+  everywhere([&](NodeId n) { return absolute_across_alternatives(g, n, options.tolerance); });
   return merged;
 }
 

@@ -42,13 +42,7 @@ NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, Sa
     replace[id] = out;
     any = true;
   }
-  // A replacement is not looked into: a repeat inside a replaced one is
-  // replaced by the next pass.
-  for (NodeId previous = kNoReplacement; any && root != previous;) {
-    previous = root;
-    root = substitute(g, root, replace);
-  }
-  return root;
+  return any ? substitute_until_settled(g, root, replace) : root;
 }
 
 }  // namespace vern

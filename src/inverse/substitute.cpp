@@ -41,4 +41,12 @@ NodeId substitute(Grammar& g, NodeId root, const std::vector<NodeId>& replace,
   return Substitution(g, replace, rebuilt).run(root);
 }
 
+NodeId substitute_until_settled(Grammar& g, NodeId root, const std::vector<NodeId>& replace) {
+  for (NodeId previous = kNoReplacement; root != previous;) {
+    previous = root;
+    root = substitute(g, root, replace);
+  }
+  return root;
+}
+
 }  // namespace vern

@@ -22,4 +22,10 @@ inline constexpr NodeId kNoReplacement = static_cast<NodeId>(-1);
 NodeId substitute(Grammar& g, NodeId root, const std::vector<NodeId>& replace,
                   std::vector<std::pair<NodeId, NodeId>>* rebuilt = nullptr);
 
+// substitute, pass after pass until the graph stops changing: a pass does
+// not look into a replacement, so where replacements hold nodes that are
+// replaced in turn (a rebuilt choice holding another), the next pass
+// reaches them.
+NodeId substitute_until_settled(Grammar& g, NodeId root, const std::vector<NodeId>& replace);
+
 }  // namespace vern

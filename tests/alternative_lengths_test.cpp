@@ -1,0 +1,175 @@
+// Alternatives seen at different lengths keep the lengths they share in
+// metres; each still derives its example exactly.
+#include "inverse/alternative_lengths.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "forward/derive.hpp"
+#include "graph/parser.hpp"
+#include "graph/writer.hpp"
+#include "inverse/check.hpp"
+#include "inverse/infer.hpp"
+#include "support/example_helpers.hpp"
+
+namespace vern {
+namespace {
+
+// The grammar as written, each rule on one line: runs of white space as
+// one space.
+std::string flat(const Grammar& g) {
+  std::string out;
+  for (const char c : write_grammar(g)) {
+    const bool space = c == ' ' || c == '\n';
+    if (!space || (!out.empty() && out.back() != ' ')) out.push_back(space ? ' ' : c);
+  }
+  return out;
+}
+
+Grammar rebuilt(const Grammar& source) {
+  Grammar g = source;
+  g.rules[g.start_rule].body = absolute_across_alternatives(g, g.rules[g.start_rule].body, 1e-6);
+  return g;
+}
+
+// The start rule's option k alone, derived on a scope of that height.
+std::vector<LabelledBox> option_at(Grammar g, std::size_t k, double height) {
+  const auto& choose = std::get<Choose>(g.op(g.rules[g.start_rule].body));
+  g.rules[g.start_rule].body = choose.options[k].child;
+  DeriveOptions o;
+  o.size = glm::dvec3(10, 8, height);
+  return test::derived_parts(derive(g, o));
+}
+
+// Three houses as inference writes them before this step: each seen once,
+// at its own height, its sizes the lengths it had in metres. All three
+// stand on a 0.5 m slab under a 4.5 m ground floor, built three ways.
+constexpr const char* kHouses = R"(
+@scope 10, 8, 20
+house --> split(z){ ~0.5 : I(slab) | ~4.5 : I(shop) | ~3 : I(storey) }
+house --> split(z){ ~0.5 : I(slab) | ~4.5 : split(x){ ~1.2 : I(door) | ~8.8 : I(wall) } | ~3 : I(storey) | ~3 : I(balcony) }
+house --> split(z){ ~0.5 : I(slab) | ~4.5 : I(shop) | ~9 : I(storey) }
+)";
+
+TEST(AlternativeLengths, SlabAndGroundFloorKeepTheirHeightsUnderAnyNumberOfStoreys) {
+  const Grammar source = parse_grammar(kHouses, "houses.grm");
+  const Grammar g = rebuilt(source);
+  const std::string text = flat(g);
+  // A lone share takes what is left whatever its weight: written ~1.
+  EXPECT_NE(text.find("split(z){ 0.5 : I(slab) | 4.5 : I(shop) | ~1 : I(storey) } house"), std::string::npos) << text;
+  EXPECT_NE(text.find("4.5 : split(x){ ~1.2 : I(door) | ~8.8 : I(wall) } | ~3 : I(storey) | ~3 : I(balcony)"),
+            std::string::npos)
+      << text;
+  // Each house at the height it was seen at is as it was.
+  const double heights[] = {8, 11, 14};
+  for (std::size_t k = 0; k < 3; ++k)
+    EXPECT_TRUE(test::same_boxes(option_at(source, k, heights[k]), option_at(g, k, heights[k]), 1e-9)) << k;
+  // On a plot 20 m high the one-storey house has one tall storey, but its
+  // ground floor is still 4.5 m (before: 4.5 / 8 of the height, 11.25 m).
+  for (const LabelledBox& b : option_at(g, 0, 20)) {
+    if (b.label == "shop") {
+      EXPECT_NEAR(b.max.z - b.min.z, 4.5, 1e-9);
+    } else if (b.label == "storey") {
+      EXPECT_NEAR(b.max.z - b.min.z, 15, 1e-9);
+    }
+  }
+}
+
+TEST(AlternativeLengths, OptionsOfOneLengthSayNothing) {
+  const Grammar source = parse_grammar(R"(
+house --> split(z){ ~0.5 : I(slab) | ~4.5 : I(shop) | ~3 : I(storey) }
+house --> split(z){ ~0.5 : I(slab) | ~4.5 : I(wall) | ~1 : I(storey) | ~2 : I(roof) }
+)");
+  EXPECT_EQ(write_grammar(rebuilt(source)), write_grammar(source));
+}
+
+TEST(AlternativeLengths, TrailingPartsCountAndTheFirstDisagreementStopsARun) {
+  // A 1 m parapet on top of every house; the bottoms differ (0.5 m slab or
+  // 0.8 m), so nothing at the bottom is kept.
+  const Grammar g = rebuilt(parse_grammar(R"(
+house --> split(z){ ~0.5 : I(slab) | ~4 : I(storey) | ~1 : I(parapet) }
+house --> split(z){ ~0.8 : I(slab) | ~3 : I(storey) | ~3 : I(storey) | ~1 : I(parapet) }
+)"));
+  const std::string text = flat(g);
+  EXPECT_NE(text.find("split(z){ ~0.5 : I(slab) | ~4 : I(storey) | 1 : I(parapet) }"), std::string::npos) << text;
+  EXPECT_NE(text.find("split(z){ ~0.8 : I(slab) | ~3 : I(storey) | ~3 : I(storey) | 1 : I(parapet) }"),
+            std::string::npos)
+      << text;
+}
+
+TEST(AlternativeLengths, EachAxisIsReadOnItsOwnAndRangedOptionsAreLeftAlone) {
+  const Grammar g = rebuilt(parse_grammar(R"(
+house --> split(z){ ~0.5 : I(slab) | ~4 : I(storey) }
+house --> split(x){ ~0.5 : I(wall) | ~3 : I(bay) }
+house --> split(z){ ~0.5 : I(slab) | ~7 : I(storey) }
+house --> split(x){ ~0.5 : I(wall) | ~6 : I(bay) | ~1 : I(bay) }
+house --> split(z){ ~rand(0.4, 0.6) : I(slab) | ~9 : I(storey) }
+)"));
+  const std::string text = flat(g);
+  EXPECT_NE(text.find("split(z){ 0.5 : I(slab) | ~1 : I(storey) } house --> split(x)"), std::string::npos) << text;
+  EXPECT_NE(text.find("split(x){ 0.5 : I(wall) | ~1 : I(bay) }"), std::string::npos) << text;
+  EXPECT_NE(text.find("split(x){ 0.5 : I(wall) | ~6 : I(bay) | ~1 : I(bay) }"), std::string::npos) << text;
+  EXPECT_NE(text.find("split(z){ ~rand(0.4, 0.6) : I(slab) | ~9 : I(storey) }"), std::string::npos) << text;
+}
+
+// Houses of one to four storeys of 3 m, plain or with a balcony, on a
+// 0.4 m slab, the ground floor 4.5 m high and built one of three ways: the
+// examples' alternatives are all different, and each is seen at one
+// height only.
+constexpr const char* kStreet = R"(
+@start plot
+@scope 10, 8, 20
+plot --> house(randint(1, 4))
+house(n) --> split(z){ 0.4 : I(slab) | 4.5 : ground | 3 * n : repeatN(z, n){ level } | ~1 : nil }
+level --> split(x){ ~1 : I(wall) | ~3 : I(glass) } : 1
+level --> split(x){ ~1 : I(balcony) | ~3 : I(glass) } : 1
+ground --> I(shop) : 1
+ground --> split(x){ 1.2 : I(door) | ~1 : I(wall) } : 1
+ground --> split(x){ ~1 : I(wall) | 2 : I(window) | ~1 : I(wall) } : 1
+)";
+
+TEST(AlternativeLengths, InferredHousesOfAnyHeightKeepSlabGroundFloorAndStoreyHeights) {
+  const Grammar source = parse_grammar(kStreet, "street.grm");
+  std::vector<Example> examples;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    DeriveOptions o;
+    o.seed = seed;
+    examples.push_back(test::example_of(test::derived_parts(derive(source, o))));
+  }
+  const Inference inferred = infer(examples, {});
+  const std::string text = write_grammar(inferred.grammar);
+  // Houses alike but for how many storeys they were seen with are one
+  // alternative, seen as often as all of them.
+  const Rule& start = inferred.grammar.rules[inferred.grammar.start_rule];
+  const auto& options = std::get<Choose>(inferred.grammar.op(start.body)).options;
+  for (std::size_t i = 0; i < options.size(); ++i)
+    for (std::size_t j = i + 1; j < options.size(); ++j)
+      EXPECT_NE(options[i].child, options[j].child) << i << " " << j << "\n" << text;
+  EXPECT_LT(options.size(), 8u) << text;
+  for (const Example& e : examples) {
+    const CheckResult r = check_example(inferred.grammar, e.boxes, example_size(e));
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << text;
+  }
+  // Variants draw their height from the heights seen, whatever their
+  // alternative: the ground floor is 4.5 m and the slab 0.4 m in all, and
+  // a house seen with one or two storeys (too few to be a repeat on its
+  // own) stacks as many 3 m storeys as its height holds, as the houses
+  // seen with more do.
+  for (std::uint64_t seed = 1001; seed <= 1040; ++seed) {
+    DeriveOptions o;
+    o.seed = seed;
+    for (const LabelledBox& b : test::derived_parts(derive(inferred.grammar, o))) {
+      if (b.label == "slab") {
+        EXPECT_NEAR(b.max.z - b.min.z, 0.4, 1e-3) << seed << "\n" << text;
+      } else if (b.label == "shop" || b.label == "door" || b.label == "window") {
+        EXPECT_NEAR(b.max.z - b.min.z, 4.5, 1e-3) << b.label << " " << seed << "\n" << text;
+      } else if (b.label == "glass" || b.label == "balcony") {
+        EXPECT_NEAR(b.max.z - b.min.z, 3, 1e-3) << b.label << " " << seed << "\n" << text;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace vern
