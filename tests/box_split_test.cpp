@@ -159,6 +159,29 @@ TEST(BoxSplit, ABlockBetweenStreetsStaysABlockWhetherOrNotItsRowsLineUp) {
   EXPECT_EQ(leaves(t.children[0].children[0]), (std::vector<std::uint32_t>{0, 1}));
 }
 
+TEST(BoxSplit, AYardAcrossComesBeforeCutsThatOnlyHappenToLineUp) {
+  // A house's range (y 0 to 7) and a barn's (y 10 to 16) across a yard,
+  // each a wall, two bays and a wall along x, their cuts lined up at 0.5,
+  // 3 and 5.5 (another example's bays would not line up). The yard is cut
+  // first, so each range is one piece in every example, cut on its own.
+  std::vector<LabelledBox> boxes;
+  for (const double y0 : {0.0, 10.0}) {
+    const double y1 = y0 == 0 ? 7 : 16;
+    boxes.push_back(part("wall", {0, y0, 0}, {0.5, y1, 6}));
+    boxes.push_back(part("bay", {0.5, y0, 0}, {3, y1, 6}));
+    boxes.push_back(part("bay", {3, y0, 0}, {5.5, y1, 6}));
+    boxes.push_back(part("wall", {5.5, y0, 0}, {6, y1, 6}));
+  }
+  const SplitTree t = split(test::numbered(boxes));
+  ASSERT_TRUE(cut_along(t, 1, 3));
+  EXPECT_EQ(t.children[1].kind, Kind::Empty);
+  for (const std::size_t range : {0u, 2u}) {
+    SCOPED_TRACE(range);
+    ASSERT_TRUE(cut_along(t.children[range], 0, 4));
+  }
+  EXPECT_EQ(leaves(t.children[2]), (std::vector<std::uint32_t>{4, 5, 6, 7}));
+}
+
 TEST(BoxSplit, ASinglePartIsALeaf) {
   const SplitTree t = split({part("roof", {1, 2, 3}, {4, 6, 8})});
   EXPECT_EQ(t.kind, Kind::Leaf);

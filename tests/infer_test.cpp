@@ -204,5 +204,35 @@ TEST(Infer, PlotSizesGetTheDistributionTheyFit) {
   EXPECT_EQ(write_expression(plain, plain.scope[2], {}), "rand(6, 9)");
 }
 
+// A house's range and a barn's across a yard, with end walls of one
+// thickness and bays of two widths: in some examples the bays happen to
+// line up across the yard, in others not. The yard is cut first in all of
+// them, so they share one structure: one alternative, not one for the
+// examples whose cuts line up and another for the rest.
+TEST(Infer, RangesAcrossAYardAreOneStructureWhetherOrNotTheirBaysLineUp) {
+  const Grammar source = parse_grammar(R"(
+@start farmstead
+@scope rand(16, 28), 22, 6
+farmstead --> split(y){ 7 : range(0.5, 2.5, 1.4) | ~1 : nil | 6 : range(0.5, 3.2, 0.8) }
+range(wall, bw, wh) --> split(x){ wall : I(rect) | ~1 : repeat(x, bw){ bay(wh) } | wall : I(rect) }
+bay(wh) --> split(x){ ~1 : I(rect) | 1.2 : split(z){ 1 : I(rect) | wh : I(window) | ~1 : I(rect) } | ~2 : I(rect) }
+)",
+                                       "farmstead.grm");
+  std::vector<Example> examples;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed)
+    examples.push_back(test::example_of(test::derived_parts(derive_seed(source, seed))));
+  const Inference inferred = infer(examples, {});
+  const std::string text = write_grammar(inferred.grammar);
+  EXPECT_FALSE(std::holds_alternative<Choose>(inferred.grammar.op(inferred.grammar.rules[inferred.grammar.start_rule].body)))
+      << text;
+  const auto* yard = std::get_if<Split>(&inferred.grammar.op(inferred.grammar.rules[inferred.grammar.start_rule].body));
+  ASSERT_NE(yard, nullptr) << text;
+  EXPECT_EQ(yard->parts.size(), 3u) << text;
+  for (const Example& e : examples) {
+    const CheckResult r = check_example(inferred.grammar, e.boxes, example_size(e));
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << text;
+  }
+}
+
 }  // namespace
 }  // namespace vern

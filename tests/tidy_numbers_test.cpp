@@ -9,6 +9,7 @@
 #include "forward/derive.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
+#include "support/example_graphs.hpp"
 #include "support/example_helpers.hpp"
 
 namespace vern {
@@ -44,6 +45,23 @@ TEST(TidyNumbers, RelativeSizesWithoutWholeRatiosKeepTheirDecimals) {
   const Grammar g = tidied("b --> split(x){ ~0.4100000000000001 : I(a) | 1.2 : I(b) | ~0.8 : I(a) }");
   EXPECT_NE(write_grammar(g).find("split(x){ ~0.41 : I(a) | 1.2 : I(b) | ~0.8 : I(a) }"), std::string::npos)
       << write_grammar(g);
+}
+
+TEST(TidyNumbers, AlternativesWrittenAlikeAreOne) {
+  // Two houses on plots 19.4 and 25.1 m wide, kept apart by merging (their
+  // middles lie far apart), whose middle is the lone share: written ~1 in
+  // both, they are one alternative, seen twice.
+  Grammar g;
+  const auto roots = test::example_graphs(g, {"split(x){ 0.5 : I(a) | ~18.4 : I(b) | 0.5 : I(a) }",
+                                              "split(x){ 0.5 : I(a) | ~24.1 : I(b) | 0.5 : I(a) }", "I(c)"});
+  Choose c;
+  for (const NodeId r : roots) c.options.push_back({Expr{}, Expr::number(1), r});
+  const NodeId tidied = tidy_numbers(g, g.intern({std::move(c), {}}), 1e-6);
+  const auto& options = std::get<Choose>(g.op(tidied)).options;
+  ASSERT_EQ(options.size(), 2u);
+  EXPECT_EQ(write_operation(g, options[0].child, {}), "split(x){ 0.5 : I(a) | ~1 : I(b) | 0.5 : I(a) }");
+  EXPECT_EQ(options[0].priority.literal(), 2.0);
+  EXPECT_EQ(write_operation(g, options[1].child, {}), "I(c)");
 }
 
 }  // namespace

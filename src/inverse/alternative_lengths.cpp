@@ -232,12 +232,6 @@ NodeId absolute_across_alternatives(Grammar& g, NodeId root, double tolerance) {
           break;
         }
         if (!rebuilt) continue;
-        // A lone share takes all that is left, whatever its weight: written
-        // as 1, houses that differ only in how many storeys they were seen
-        // with are one node.
-        if (std::count_if(split.parts.begin(), split.parts.end(), [](const SplitPart& p) { return p.size.relative; }) == 1)
-          for (SplitPart& p : split.parts)
-            if (p.size.relative) p.size.value = Expr::number(1);
         ChooseOption& option = choose.options[options[k].option];
         // A split left with one part is that part's operation.
         option.child = split.parts.size() == 1 ? split.parts[0].child
@@ -246,18 +240,6 @@ NodeId absolute_across_alternatives(Grammar& g, NodeId root, double tolerance) {
       }
     }
     if (!changed) continue;
-    // Options that became one (two houses whose storeys now stretch alike)
-    // are one option, seen as often as both.
-    auto weight = [](const ChooseOption& o) { return o.priority.empty() ? std::optional<double>(1) : o.priority.literal(); };
-    std::vector<ChooseOption> kept;
-    for (ChooseOption& o : choose.options) {
-      auto same = std::find_if(kept.begin(), kept.end(), [&](const ChooseOption& k) {
-        return k.child == o.child && k.condition.empty() && o.condition.empty() && weight(k) && weight(o);
-      });
-      if (same == kept.end()) kept.push_back(std::move(o));
-      else same->priority = Expr::number(*weight(*same) + *weight(o));
-    }
-    choose.options = std::move(kept);
     replace[id] = g.intern({std::move(choose), g.node(id).loc});
     any = true;
   }

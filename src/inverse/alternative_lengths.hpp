@@ -23,8 +23,9 @@
 // tile, or one of the tile's choices), whose tile is within a quarter of
 // the parts' length and which makes exactly as many tiles on the run's
 // length, the run becomes that repeat: each example still gets its own
-// storeys, and a variant as many as its height holds. Options that thereby
-// become one are one option, their priorities added.
+// storeys, and a variant as many as its height holds. (Options that differ
+// then only in their lone share's weight become one when tidy_numbers
+// writes every lone share as ~1.)
 //
 // Considered: options that split along one literal axis with every size a
 // relative literal (an option seen at one length); they must number two

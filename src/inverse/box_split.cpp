@@ -46,6 +46,9 @@
 //     after everything else at their rank, so no cut passes through them,
 //     and a piece that would have zero length joins its neighbour: the
 //     derivation skips zero-length parts, so they could not carry a box.
+//   - Gaps first, across axes: a container whose first axis only cuts
+//     between touching pieces is cut along the other horizontal axis when
+//     that one has empty space right across it (cut_at_gaps_across).
 //   - Termination: a container that no sweep along any of the three axes
 //     divides is final (Kind::Unsplittable), so a pinwheel neither loops nor
 //     crashes.
@@ -330,6 +333,7 @@ class Splitter {
       if (w.lo[static_cast<std::size_t>(a)] == w.hi[static_cast<std::size_t>(a)]) continue;  // flat along a
       if (!find_pieces(w, a)) continue;
       if (pieces_.size() > 1) {
+        if (a != 2 && !interior_gap() && cut_at_gaps_across(w, i)) return;
         if (a == 2 && narrowing_stack(w)) {
           cut_along(w, a, Peel::Upper);
           return;
@@ -345,6 +349,34 @@ class Splitter {
       return;
     }
     unsplittable(w);
+  }
+
+  // Is there empty space between two of the pieces find_pieces found?
+  bool interior_gap() const {
+    for (std::size_t i = 0; i + 1 < pieces_.size(); ++i)
+      if (pieces_[i].hi < pieces_[i + 1].lo) return true;
+    return false;
+  }
+
+  // Empty space separates buildings across axes too. The pieces of the
+  // axis tried first (axes[i]) all touch; when the other horizontal axis,
+  // still to be tried, has empty space right across the container (a
+  // yard between a house's range and a barn's), the container is cut
+  // there first, and each building is cut on its own. Else the first
+  // axis's cut through all of them would depend on whether their bays
+  // happen to line up, which differs from example to example. Leaves
+  // pieces_ as find_pieces(w, axes[i]) found them when it does not cut.
+  bool cut_at_gaps_across(const Work& w, int i) {
+    for (int j = i + 1; j < w.tries; ++j) {
+      const int b = w.axes[static_cast<std::size_t>(j)];
+      if (b == 2 || w.lo[static_cast<std::size_t>(b)] == w.hi[static_cast<std::size_t>(b)]) continue;
+      if (find_pieces(w, b) && pieces_.size() > 1 && interior_gap()) {
+        cut_along(w, b);
+        return true;
+      }
+    }
+    find_pieces(w, w.axes[static_cast<std::size_t>(i)]);
+    return false;
   }
 
   // A stack that narrows upwards twice over (a tiered tower: each tier

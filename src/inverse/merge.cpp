@@ -2,6 +2,7 @@
 
 #include "inverse/generalise.hpp"
 #include "inverse/alternative_lengths.hpp"
+#include "inverse/equal_options.hpp"
 #include "inverse/fit_distribution.hpp"
 #include "inverse/repeat_folding.hpp"
 #include "inverse/sample_book.hpp"
@@ -532,7 +533,6 @@ class Simplifier {
   // unconditional chooses are flattened (an option's share of the inner
   // choose times its own priority); a choose of one option is its child.
   NodeId simplify_choose(const Choose& c) {
-    std::vector<std::pair<NodeId, double>> options;  // child, priority
     bool plain = true;                               // literal priorities, no conditions
     for (const auto& o : c.options) plain = plain && o.condition.empty() && o.priority.literal();
     if (!plain) {
@@ -540,12 +540,7 @@ class Simplifier {
       for (auto& o : m.options) o.child = run(o.child);
       return g_.intern({std::move(m), {}});
     }
-    std::unordered_map<NodeId, std::size_t> where;  // child -> its option: a choose may have thousands
-    auto add = [&](NodeId child, double priority) {
-      auto [it, fresh] = where.try_emplace(child, options.size());
-      if (fresh) options.emplace_back(child, priority);
-      else options[it->second].second += priority;
-    };
+    Choose m;
     for (const auto& o : c.options) {
       const NodeId child = run(o.child);
       const double priority = *o.priority.literal();
@@ -558,14 +553,14 @@ class Simplifier {
           if (inner_plain) total += *io.priority.literal();
         }
       if (inner_plain && total > 0) {
-        for (const auto& io : inner->options) add(io.child, priority * *io.priority.literal() / total);
+        for (const auto& io : inner->options)
+          m.options.push_back({Expr{}, Expr::number(priority * *io.priority.literal() / total), io.child});
       } else {
-        add(child, priority);
+        m.options.push_back({Expr{}, Expr::number(priority), child});
       }
     }
-    if (options.size() == 1) return options[0].first;
-    Choose m;
-    for (const auto& [child, priority] : options) m.options.push_back({Expr{}, Expr::number(priority), child});
+    join_equal_options(m);
+    if (m.options.size() == 1) return m.options[0].child;
     return g_.intern({std::move(m), {}});
   }
 

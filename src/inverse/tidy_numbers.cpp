@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "inverse/equal_options.hpp"
 #include "inverse/merge.hpp"
 
 namespace vern {
@@ -132,6 +133,10 @@ class Tidier {
         o.child = run(o.child);
         if (auto p = o.priority.literal()) o.priority = Expr::number(shortest_decimal(*p, 1e-9 * *p));
       }
+      // Alternatives that differed only in numbers now written alike (a
+      // lone share's weight, which every weight writes as ~1) are one.
+      if (join_equal_options(*c) && c->options.size() == 1 && c->options[0].condition.empty())
+        return c->options[0].child;
     } else if (auto* tiles = std::get_if<RepeatN>(&op)) {
       tiles->child = run(tiles->child);
     } else if (auto* repeat = std::get_if<Repeat>(&op)) {
