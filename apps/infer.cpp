@@ -10,6 +10,7 @@
 #include "forward/variants.hpp"
 #include "graph/alongside.hpp"
 #include "graph/atomic_file.hpp"
+#include "graph/description_length.hpp"
 #include "graph/parallel_for.hpp"
 #include "graph/reserved_words.hpp"
 #include "graph/writer.hpp"
@@ -211,12 +212,18 @@ int run(int argc, char** argv) {
   write_file_atomically(output, text);
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  if (!quiet)
-    std::fprintf(stderr, "infer: %zu example%s -> %s: %zu rules, %zu lines; meshes -> %s (%.2f s)\n", example_count,
-                 example_count == 1 ? "" : "s", output.string().c_str(), result.grammar.rules.size(),
+  if (!quiet) {
+    // How much the grammar says (graph/description_length.hpp): what
+    // `evaluate` reports too, so styles can be compared by it.
+    const DescriptionLength dl = description_length(result.grammar);
+    std::fprintf(stderr,
+                 "infer: %zu example%s -> %s: %zu rules, %zu lines, description length %zu (%zu operations, %zu "
+                 "numbers); meshes -> %s (%.2f s)\n",
+                 example_count, example_count == 1 ? "" : "s", output.string().c_str(), result.grammar.rules.size(),
                  static_cast<std::size_t>(std::count(header.begin(), header.end(), '\n') +
                                           std::count(grammar_text.begin(), grammar_text.end(), '\n')),
-                 prims.string().c_str(), seconds);
+                 dl.total(), dl.operations, dl.numbers, prims.string().c_str(), seconds);
+  }
   return 0;
 }
 

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 
+#include "graph/description_length.hpp"
+#include "graph/parser.hpp"
 #include "support/run_command.hpp"
 
 namespace vern {
@@ -22,6 +25,19 @@ TEST(InferCli, GarageExamplesToGrammarToCheckToNewBuildings) {
   auto r = run_program("infer", {kExamples + "garage", "-o", "garage.grm"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("infer: 10 examples -> garage.grm"), std::string::npos) << r.err;
+  // The summary says how much the grammar says: the same description
+  // length as evaluate's (graph/description_length.hpp), read back here.
+  const std::size_t at = r.err.find("description length ");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  std::size_t total = 0, operations = 0, numbers = 0;
+  ASSERT_EQ(std::sscanf(r.err.c_str() + at, "description length %zu (%zu operations, %zu numbers)", &total,
+                        &operations, &numbers),
+            3)
+      << r.err;
+  EXPECT_EQ(total, operations + numbers);
+  const DescriptionLength dl = description_length(read_grammar_file((dir / "garage.grm").string()));
+  EXPECT_EQ(operations, dl.operations) << r.err;
+  EXPECT_EQ(numbers, dl.numbers) << r.err;
   EXPECT_EQ(list_folder(dir.path()), (std::vector<std::string>{"garage.grm", "garage.prims.mtl", "garage.prims.obj"}));
   const std::string grammar = read_file(dir / "garage.grm");
   EXPECT_NE(grammar.find("@primitives \"garage.prims.obj\""), std::string::npos);
