@@ -40,6 +40,19 @@ TEST(WholeRatios, FindsSmallWholeMultiples) {
   EXPECT_EQ(whole_ratios({1.0, -1.0}), std::nullopt);
 }
 
+TEST(WholeRatios, WithinATolerancePerCutAsAModellingToolWritesThem) {
+  // Six decimals, as Blender writes OBJ: 2 : 1 within 1e-5 m of every cut.
+  EXPECT_EQ(whole_ratios({6.666667, 3.333333}, 1e-5), (std::vector<double>{2, 1}));
+  EXPECT_EQ(whole_ratios({6.666667, 3.333333}), std::nullopt);  // to 1e-9 relative they are not
+  EXPECT_EQ(whole_ratios({4.666667, 2.333333, 7.000001}, 1e-5), (std::vector<double>{2, 1, 3}));
+  // The fewest units that fit: 1 : 1, not 60 : 60.
+  EXPECT_EQ(whole_ratios({3.0000004, 2.9999996}, 1e-5), (std::vector<double>{1, 1}));
+  // 2 : 1 of 3.00004 m puts the cut at 2.0000267, 1.3e-5 from 2.00004:
+  // beyond a tolerance of 1e-5 (and 2.00002 : 1, 6.7e-6 off, is within).
+  EXPECT_EQ(whole_ratios({2.00004, 1.0}, 1e-5), std::nullopt);
+  EXPECT_EQ(whole_ratios({2.00002, 1.0}, 1e-5), (std::vector<double>{2, 1}));
+}
+
 TEST(WholeRatios, AgreesWithTryingEveryK) {
   std::mt19937_64 rng(3);
   for (int i = 0; i < 20000; ++i) {

@@ -30,13 +30,27 @@ double shortest_decimal(double v, double tolerance, int direction) {
   return v;
 }
 
-std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes, int max_whole) {
-  double smallest = 0, largest = 0;
+std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes, double tolerance, int max_whole) {
+  double smallest = 0, largest = 0, total = 0;
   for (double s : sizes) {
     if (!(s > 0)) return std::nullopt;
     smallest = smallest == 0 ? s : std::min(smallest, s);
     largest = std::max(largest, s);
+    total += s;
   }
+  // Do whole numbers n, as shares of the sizes' total, put every cut within
+  // the tolerance of where the sizes put it?
+  auto cuts_hold = [&](const std::vector<double>& n) {
+    double units = 0;
+    for (double k : n) units += k;
+    double at = 0, whole = 0;
+    for (std::size_t i = 0; i + 1 < n.size(); ++i) {
+      at += sizes[i];
+      whole += n[i];
+      if (std::abs(whole * total / units - at) > tolerance) return false;
+    }
+    return true;
+  };
   // The smallest part is some whole k of the unit; try k = 1, 2, ...
   std::vector<double> out;
   out.reserve(sizes.size());
@@ -47,18 +61,19 @@ std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes
     // every larger k too (the unit only shrinks): no k beyond can work.
     const double most = std::round(largest / unit);
     if (most > max_whole) break;
-    if (std::abs(largest / unit - most) > 1e-9 * most) continue;
+    if (tolerance <= 0 && std::abs(largest / unit - most) > 1e-9 * most) continue;
     out.clear();
-    bool ok = true;
+    bool in_range = true, exact = true;
     for (double s : sizes) {
       const double n = std::round(s / unit);
-      if (n < 1 || n > max_whole || std::abs(s / unit - n) > 1e-9 * n) {
-        ok = false;
+      if (n < 1 || n > max_whole) {
+        in_range = false;
         break;
       }
+      exact = exact && std::abs(s / unit - n) <= 1e-9 * n;
       out.push_back(n);
     }
-    if (ok) return out;
+    if (in_range && (exact || (tolerance > 0 && cuts_hold(out)))) return out;
   }
   return std::nullopt;
 }
@@ -193,7 +208,7 @@ class Tidier {
       else relative_literals = false;
     }
     std::optional<std::vector<double>> ratios;
-    if (relative_literals && !relative_.empty()) ratios = whole_ratios(relative_);
+    if (relative_literals && !relative_.empty()) ratios = whole_ratios(relative_, tol_);
     // Other literal sizes: round the cut positions, not the sizes, so
     // errors do not add up along a split of many parts; each size is then
     // the difference of two short decimals (cleaned of binary noise).

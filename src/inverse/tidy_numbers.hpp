@@ -4,7 +4,8 @@
 //   - A split whose relative parts are all literals writes them as small
 //     whole ratios when the lengths allow it: ~6.666666666666667 :
 //     ~3.3333333333333335 is ~2 : ~1, and ~0.40383 : 1.2 : ~0.80767 is
-//     ~1 : 1.2 : ~2 (checked to 1e-9 relative, far below any tolerance;
+//     ~1 : 1.2 : ~2 (the weights are metres, as inference writes them: no
+//     cut between the relative parts may move by more than the tolerance;
 //     the absolute parts are rounded as below).
 //   - Any other literal becomes the shortest decimal within the tolerance:
 //     0.30000000000000004 is 0.3.
@@ -20,9 +21,14 @@ namespace vern {
 // > 0: not below v; 0: either side).
 double shortest_decimal(double v, double tolerance, int direction = 0);
 
-// Small whole ratios for a split's relative sizes, if they exist: values
-// r_i = k * n_i with whole n_i <= max_whole, to 1e-9 relative.
-std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes, int max_whole = 60);
+// Small whole ratios for a split's relative sizes, if they exist: whole
+// n_i <= max_whole with r_i = k * n_i to 1e-9 relative, or, given a
+// tolerance (in the sizes' unit, metres for inference's weights), with
+// every cut between them, at the n_i's shares of the sizes' total, within
+// it: a modelling tool's 6.666667 : 3.333333 is 2 : 1. The fewest units
+// that fit win.
+std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes, double tolerance = 0,
+                                                int max_whole = 60);
 
 // Rewrites the sizes below root; returns the new root (nodes interned in g).
 NodeId tidy_numbers(Grammar& g, NodeId root, double tolerance);
