@@ -187,6 +187,44 @@ building --> split(x){
   EXPECT_LT(description_length(g).total(), before) << text;
 }
 
+TEST(TwinRules, RulesReadingTheirParametersAlikeBecomeOneRule) {
+  // Two wings inset by a drawn share s1 of two widths (as joint_sizes
+  // writes a tier centred on the one below): the same rule but for 8 and 6.
+  Grammar g = parse_grammar(R"(
+@scope 20, 10, 10
+building --> split(x){ ~1 : wingY(rand(0.5, 1)) | ~1 : wingY2(rand(1, 2)) }
+wingY(s1) --> split(y){ ~s1 : nil | ~(8 - 2 * s1) : split(z){ ~2 : I(wall) | ~1 : I(roof) } | ~s1 : nil }
+wingY2(s1) --> split(y){ ~s1 : nil | ~(6 - 2 * s1) : split(z){ ~2 : I(wall) | ~1 : I(roof) } | ~s1 : nil }
+)",
+                            "wings.grm");
+  const TwinRules twins = joined_keeping_derivations(g);
+  EXPECT_EQ(twins.rules, 1u);
+  const std::string text = write_grammar(g);
+  EXPECT_EQ(g.rules.size(), 2u) << text;
+  EXPECT_NE(text.find("wingY(s1, v1) --> split(y){"), std::string::npos) << text;
+  EXPECT_NE(text.find("~(v1 - 2 * s1) : "), std::string::npos) << text;
+  EXPECT_NE(text.find("wingY(rand(0.5, 1), 8)"), std::string::npos) << text;
+  EXPECT_NE(text.find("wingY(rand(1, 2), 6)"), std::string::npos) << text;
+  EXPECT_EQ(count(text, "I(roof)"), 1u) << text;
+}
+
+TEST(TwinRules, TwinRulesThatCallOneOfThemStayApart) {
+  // Two towers whose tiers recurse into t: joined, u's tiers would call t
+  // with t's 3 m, not u's 5 m.
+  Grammar g = parse_grammar(R"(
+@scope 20, 10, 10
+building --> split(x){ ~1 : t(0.8) | ~1 : u(0.8) }
+t(s1) : s1 < 0.1 --> I(rect)
+t(s1) : s1 >= 0.1 --> split(z){ ~s1 : I(rect) | ~(3 - s1) : t(s1 / 2) }
+u(s1) : s1 < 0.1 --> I(rect)
+u(s1) : s1 >= 0.1 --> split(z){ ~s1 : I(rect) | ~(5 - s1) : t(s1 / 2) }
+)",
+                            "towers.grm");
+  const std::string before = write_grammar(g);
+  EXPECT_EQ(joined_keeping_derivations(g).rules, 0u) << write_grammar(g);
+  EXPECT_EQ(write_grammar(g), before);
+}
+
 // A farmstead: a house range and a barn range built alike, the barn with
 // thicker walls, wider bays and lower windows; plots of different widths.
 constexpr const char* kFarmstead = R"(

@@ -32,7 +32,11 @@
 // The grammar derives exactly what it did: the arguments are literals and
 // a call draws with its caller's random key (random_stream.hpp), so every
 // seed gives the same building, byte for byte. Subgraphs that read a
-// parameter of their rule are left alone.
+// parameter of their rule are left alone, but for whole rule bodies: rules
+// with parameters whose bodies are twins reading them alike become the
+// first of them, taking the values they differ in after its own
+// parameters, and every call of any of them passes its own values after
+// its arguments (rules that call one of their twins stay apart).
 #pragma once
 
 #include <cstddef>
