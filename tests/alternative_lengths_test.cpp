@@ -131,12 +131,7 @@ ground --> split(x){ ~1 : I(wall) | 2 : I(window) | ~1 : I(wall) } : 1
 
 TEST(AlternativeLengths, InferredHousesOfAnyHeightKeepSlabGroundFloorAndStoreyHeights) {
   const Grammar source = parse_grammar(kStreet, "street.grm");
-  std::vector<Example> examples;
-  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    DeriveOptions o;
-    o.seed = seed;
-    examples.push_back(test::example_of(test::derived_parts(derive(source, o))));
-  }
+  const std::vector<Example> examples = test::derived_examples(source, 10);
   const Inference inferred = infer(examples, {});
   const std::string text = write_grammar(inferred.grammar);
   // Houses alike but for how many storeys they were seen with are one

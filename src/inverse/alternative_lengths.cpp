@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 
+#include "graph/nodes_below.hpp"
 #include "inverse/substitute.hpp"
 
 namespace vern {
@@ -176,17 +177,8 @@ std::vector<std::map<std::size_t, double>> plan(const std::vector<Seen>& options
 
 NodeId absolute_across_alternatives(Grammar& g, NodeId root, double tolerance) {
   std::vector<NodeId> replace(g.node_count(), kNoReplacement);
-  std::vector<bool> visited(g.node_count(), false);
-  std::vector<NodeId> stack{root}, chooses;
-  while (!stack.empty()) {
-    const NodeId id = stack.back();
-    stack.pop_back();
-    if (visited[id]) continue;
-    visited[id] = true;
-    if (std::holds_alternative<Choose>(g.op(id))) chooses.push_back(id);
-    for_each_child(g.op(id), [&](NodeId c) { stack.push_back(c); });
-  }
-  std::sort(chooses.begin(), chooses.end());  // the same rebuilt graph whatever the walk's order
+  std::vector<NodeId> chooses = nodes_below(g, root);
+  std::erase_if(chooses, [&](NodeId id) { return !std::holds_alternative<Choose>(g.op(id)); });
   bool any = false;
   for (const NodeId id : chooses) {
     Choose choose = std::get<Choose>(g.op(id));

@@ -10,6 +10,7 @@
 #include "inverse/merge.hpp"
 #include "inverse/orientation.hpp"
 #include "inverse/rule_naming.hpp"
+#include "inverse/shared_frames.hpp"
 #include "inverse/split_graph.hpp"
 #include "inverse/tidy_numbers.hpp"
 
@@ -88,6 +89,10 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   for (const auto& e : examples) smallest = std::min(smallest, options.tolerance > 0 ? options.tolerance : default_tolerance(e));
   root = tidy_numbers(graph, root, smallest / 4);
   for (Rule& rule : graph.rules) rule.body = tidy_numbers(graph, rule.body, smallest / 4);
+  // Written alike now, alternatives that differ at one place share their
+  // frame (the same buildings, in fewer lines).
+  root = share_frames(graph, root);
+  for (Rule& rule : graph.rules) rule.body = share_frames(graph, rule.body);
   out.grammar = rules_for(graph, root, NamingOptions{options.start});
   // Sizes that vary together, drawn once: from the lengths of the
   // derivations that reproduce the examples, so only where they are few

@@ -59,6 +59,18 @@ inline std::vector<vern::LabelledBox> derived_parts(const Derivation& d) {
   return out;
 }
 
+// The examples a grammar derives with seeds 1 to k, as inference's
+// round trips take them.
+inline std::vector<Example> derived_examples(const Grammar& g, std::uint64_t k) {
+  std::vector<Example> out;
+  for (std::uint64_t seed = 1; seed <= k; ++seed) {
+    DeriveOptions o;
+    o.seed = seed;
+    out.push_back(example_of(derived_parts(derive(g, o))));
+  }
+  return out;
+}
+
 inline std::vector<vern::LabelledBox> translated(std::vector<vern::LabelledBox> boxes, glm::dvec3 by) {
   for (vern::LabelledBox& b : boxes) {
     b.min += by;
