@@ -25,7 +25,7 @@ CommandLine make_command_line() {
                  "(or --scope, with the example's lowest corner at the plot's),\n"
                  "and prints the choices and values that reproduce it, or where the first\n"
                  "mismatch is. EXAMPLES are .obj, .gltf or .glb files, or folders of them.");
-  cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the example)"});
+  cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the example's size or distance from the origin)"});
   cl.add({"--scope", "", 3, "X Y Z", "plot size to derive on (default: each example's own extent)"});
   cl.add({"--brief", "-b", 0, "", "one line per example, without the choices"});
   cl.add({"--max-steps", "", 1, "N", "give up after N matching steps per example (default 10000000)"});
@@ -92,8 +92,12 @@ int run(int argc, char** argv) {
       b.max -= example.min;
     }
     CheckResult r;
+    // The example's own tolerance, as infer takes it: from where the file
+    // put it, before it was moved to the origin.
+    CheckOptions own = options;
+    if (!(own.tolerance > 0)) own.tolerance = default_tolerance(example);
     try {
-      r = check_example(grammar, boxes, scope.value_or(example_size(example)), options);
+      r = check_example(grammar, boxes, scope.value_or(example_size(example)), own);
     } catch (const Error& e) {
       // A limit reached while matching: say on which example.
       if (e.kind() != ErrorKind::Limit) throw;

@@ -37,7 +37,7 @@ CommandLine make_command_line() {
           "mesh is its label's turned by quarter turns is written R(axis, angle){ I(label) }\n"
           "(default: the built-in meshes, else each label's first part)"});
   cl.add({"--primitives-out", "", 1, "FILE.obj", "where to write the parts' meshes (default: STYLE.prims.obj)"});
-  cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the largest example)"});
+  cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the largest example's size or distance from the origin)"});
   cl.add({"--threads", "-j", 1, "N", "read and split examples with N threads (default: all cores; same result)"});
   cl.add({"--start", "", 1, "LABEL", "name of the start rule (default: building)"});
   cl.add({"--distributions", "", 1, "KIND",

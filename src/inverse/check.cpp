@@ -2609,8 +2609,7 @@ CheckResult check_example(const Grammar& grammar, const std::vector<LabelledBox>
       lo = glm::min(lo, b.min);
       hi = glm::max(hi, b.max);
     }
-    const glm::dvec3 extent = boxes.empty() ? scope_size : hi - lo;
-    tol = 1e-6 * std::max({extent.x, extent.y, extent.z});
+    tol = boxes.empty() ? default_tolerance(glm::dvec3(0), scope_size) : default_tolerance(lo, hi);
     if (!(tol > 0)) tol = 1e-9;
   }
   Scope start;

@@ -63,7 +63,7 @@ namespace vern {
 
 struct CheckOptions {
   // Absolute, in metres: two coordinates this close are the same. 0 means
-  // 1e-6 times the example's largest extent (default_tolerance).
+  // 1e-6 times the example's largest extent or coordinate (default_tolerance).
   double tolerance = 0;
   // Matching steps (operations tried, placements considered) before giving
   // up with a vern::Error (Limit).

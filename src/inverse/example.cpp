@@ -527,9 +527,12 @@ void update_bounds(Example& example) {
 
 glm::dvec3 example_size(const Example& example) { return example.max - example.min; }
 
-double default_tolerance(const Example& example) {
-  const glm::dvec3 size = example_size(example);
-  return 1e-6 * std::max({size.x, size.y, size.z});
+double default_tolerance(const Example& example) { return default_tolerance(example.min, example.max); }
+
+double default_tolerance(glm::dvec3 min, glm::dvec3 max) {
+  const glm::dvec3 size = max - min;
+  const glm::dvec3 far = glm::max(glm::abs(min), glm::abs(max));
+  return 1e-6 * std::max({size.x, size.y, size.z, far.x, far.y, far.z});
 }
 
 std::string describe_object(const LabelledBox& box) {

@@ -84,11 +84,15 @@ void update_bounds(Example& example);
 // The example's extent: max - min.
 glm::dvec3 example_size(const Example& example);
 
-// 1e-6 times the example's largest extent: the distance below which two
-// box bounds count as the same. Exporters write coordinates as 32-bit
-// floats, about 1e-7 relative noise; real gaps are far larger (1e-6 keeps a
-// 1 mm gap on a 100 m building).
+// 1e-6 times the example's largest extent, or its largest coordinate if
+// that is larger: the distance below which two box bounds count as the
+// same. Exporters write coordinates as 32-bit floats, about 1e-7 noise
+// relative to the coordinate (a house modelled 2 km from the origin is
+// noisy to 0.1 mm, however small it is); real gaps are far larger (1e-6
+// keeps a 1 mm gap on a 100 m building).
 double default_tolerance(const Example& example);
+// The same for bounds [min, max].
+double default_tolerance(glm::dvec3 min, glm::dvec3 max);
 
 // "'window.001' (line 12)", or "'window.001'" when the line is unknown: how
 // messages name a part.

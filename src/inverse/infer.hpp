@@ -21,7 +21,7 @@ namespace vern {
 
 struct InferOptions {
   // Coordinates closer than this (metres) are the same coordinate; 0 means
-  // 1e-6 of the largest example's extent (see default_tolerance).
+  // 1e-6 of the largest example's extent or coordinate (see default_tolerance).
   double tolerance = 0;
   std::string start = "building";
   // `--distributions uniform`: varying sizes as rand(min, max), the
