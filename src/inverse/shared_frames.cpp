@@ -1,48 +1,63 @@
 #include "inverse/shared_frames.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <unordered_map>
 
 #include "graph/nodes_below.hpp"
-#include "graph/structural.hpp"
 #include "inverse/substitute.hpp"
 
 namespace vern {
 
 namespace {
 
-// Stands for the place where a group's splits differ.
-constexpr NodeId kHole = std::numeric_limits<NodeId>::max();
-
 // Options of one choice that are the same split but at one place.
 struct Group {
-  Split frame;                      // the split with kHole at `place`
   std::size_t place = 0;
-  std::vector<std::size_t> options;  // indices into the choice, ascending
+  std::vector<std::size_t> options;  // indices into the choice, ascending; the first stands for all
 };
+
+// Are splits a and b the same but for the child at `place`?
+bool alike_but_at(const Split& a, const Split& b, std::size_t place) {
+  if (a.axis != b.axis || a.parts.size() != b.parts.size() || a.parts[place].size != b.parts[place].size) return false;
+  for (std::size_t i = 0; i < a.parts.size(); ++i)
+    if (i != place && a.parts[i] != b.parts[i]) return false;
+  return true;
+}
+
+std::size_t part_hash(const SplitPart& p) {
+  return hash_combine(hash_combine(p.size.value.hash(), p.size.relative ? 1 : 0), p.child);
+}
 
 // The groups of a choice's options, largest first (ties: the first
 // option's index, then the place), each option in one group at most;
-// only groups of two or more.
+// only groups of two or more. Each (option, place) is keyed by a hash of
+// the split without that place's child, from prefix and suffix hashes of
+// its parts, so a choice of many wide splits is not copied place by place.
 std::vector<Group> groups_of(const Grammar& g, const Choose& c) {
   std::vector<Group> all;
-  std::unordered_map<std::size_t, std::vector<std::size_t>> by_hash;  // frame hash -> indices into all
+  std::unordered_map<std::size_t, std::vector<std::size_t>> by_hash;  // key -> indices into all
   for (std::size_t k = 0; k < c.options.size(); ++k) {
     const ChooseOption& o = c.options[k];
     const auto* s = std::get_if<Split>(&g.op(o.child));
     if (!s || !o.condition.empty() || !(o.priority.empty() || o.priority.literal())) continue;
-    for (std::size_t place = 0; place < s->parts.size(); ++place) {
-      Split frame = *s;
-      frame.parts[place].child = kHole;
-      auto& bucket = by_hash[shallow_hash(Operation{frame}) ^ place];
-      const auto same = std::ranges::find_if(
-          bucket, [&](std::size_t i) { return all[i].place == place && all[i].frame == frame; });
+    const std::size_t n = s->parts.size();
+    std::vector<std::size_t> suffix(n + 1, 0);
+    for (std::size_t i = n; i-- > 0;) suffix[i] = hash_combine(suffix[i + 1], part_hash(s->parts[i]));
+    std::size_t prefix = hash_combine(s->axis.hash(), n);
+    for (std::size_t place = 0; place < n; ++place) {
+      const std::size_t key = hash_combine(
+          hash_combine(hash_combine(prefix, place), s->parts[place].size.value.hash()), suffix[place + 1]);
+      prefix = hash_combine(prefix, part_hash(s->parts[place]));
+      auto& bucket = by_hash[key];
+      const auto same = std::ranges::find_if(bucket, [&](std::size_t i) {
+        return all[i].place == place &&
+               alike_but_at(std::get<Split>(g.op(c.options[all[i].options.front()].child)), *s, place);
+      });
       if (same != bucket.end()) {
         all[*same].options.push_back(k);
       } else {
         bucket.push_back(all.size());
-        all.push_back({std::move(frame), place, {k}});
+        all.push_back({place, {k}});
       }
     }
   }
@@ -53,6 +68,7 @@ std::vector<Group> groups_of(const Grammar& g, const Choose& c) {
   std::vector<bool> used(c.options.size(), false);
   std::vector<Group> out;
   for (Group& group : all) {
+    if (group.options.size() < 2) break;  // sorted: the rest are single
     std::erase_if(group.options, [&](std::size_t k) { return used[k]; });
     if (group.options.size() < 2) continue;
     for (std::size_t k : group.options) used[k] = true;
@@ -86,9 +102,11 @@ NodeId share_frames(Grammar& g, NodeId root) {
         total += weight(o);
         gone[k] = true;
       }
-      group.frame.parts[group.place].child = g.intern({std::move(place), {}});
-      const SourceLoc loc = g.node(c.options[group.options.front()].child).loc;
-      at[group.options.front()] = ChooseOption{Expr{}, Expr::number(total), g.intern({std::move(group.frame), loc})};
+      const NodeId representative = c.options[group.options.front()].child;
+      Split frame = std::get<Split>(g.op(representative));
+      frame.parts[group.place].child = g.intern({std::move(place), {}});
+      const SourceLoc loc = g.node(representative).loc;
+      at[group.options.front()] = ChooseOption{Expr{}, Expr::number(total), g.intern({std::move(frame), loc})};
     }
     Choose rebuilt;
     for (std::size_t k = 0; k < c.options.size(); ++k) {

@@ -61,12 +61,19 @@ std::optional<std::vector<double>> whole_ratios(const std::vector<double>& sizes
     // every larger k too (the unit only shrinks): no k beyond can work.
     const double most = std::round(largest / unit);
     if (most > max_whole) break;
-    if (tolerance <= 0 && std::abs(largest / unit - most) > 1e-9 * most) continue;
+    // Quick rejections, the largest part first (most splits have no whole
+    // ratios at all). Within a tolerance every part is within 2 tolerance
+    // of its n units of the fitted unit, and that unit within 2 tolerance /
+    // k of this one: a part further from n of these units fails.
+    auto near = [&](double s, double n) {
+      return std::abs(s / unit - n) <= 1e-9 * n || std::abs(s - n * unit) <= 2 * tolerance * (1 + n / k);
+    };
+    if (!near(largest, most)) continue;
     out.clear();
     bool in_range = true, exact = true;
     for (double s : sizes) {
       const double n = std::round(s / unit);
-      if (n < 1 || n > max_whole) {
+      if (n < 1 || n > max_whole || !near(s, n)) {
         in_range = false;
         break;
       }
