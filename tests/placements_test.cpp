@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "forward/derive.hpp"
+#include "forward/layout_faults.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
 #include "inverse/check.hpp"
@@ -51,9 +52,9 @@ TEST(Placements, OnePinwheelComesBackExactlyAndChecks) {
             "@scope 3, 3, 1\n"
             "\n"
             "building --> split(x){\n"
-            "    ~1 : split(y){ ~1 : S(2, 1, 1){ I(a) } | ~2 : I(d) } |\n"
-            "    ~1 : split(y){ ~1 : nil | ~1 : I(e) | ~1 : S(2, 1, 1){ I(c) } } |\n"
-            "    ~1 : S(1, 2, 1){ I(b) } }\n");
+            "    ~1 : split(y){ ~1 : S(~2, ~1, ~1){ I(a) } | ~2 : I(d) } |\n"
+            "    ~1 : split(y){ ~1 : nil | ~1 : I(e) | ~1 : S(~2, ~1, ~1){ I(c) } } |\n"
+            "    ~1 : split(y){ ~2 : I(b) | ~1 : nil } }\n");
   EXPECT_TRUE(derives(g, ex, 2 * inferred.tolerance));
   const CheckResult r = check_one(g, ex);
   EXPECT_TRUE(r.derivable) << r.mismatch;
@@ -77,8 +78,8 @@ TEST(Placements, NoisyCornersAreSnappedAndTheNumbersStayShort) {
   const Example ex = test::example_of(test::numbered(boxes));
   const Inference inferred = infer({ex}, {});
   const std::string text = write_grammar(inferred.grammar);
-  EXPECT_NE(text.find("~1 : split(y){ ~1 : S(2, 1, 1){ I(a) } | ~2 : I(d) } |"), std::string::npos) << text;
-  EXPECT_NE(text.find("~1 : S(1, 2, 1){ I(b) } }"), std::string::npos) << text;
+  EXPECT_NE(text.find("~1 : split(y){ ~1 : S(~2, ~1, ~1){ I(a) } | ~2 : I(d) } |"), std::string::npos) << text;
+  EXPECT_NE(text.find("~1 : split(y){ ~2 : I(b) | ~1 : nil } }"), std::string::npos) << text;
   EXPECT_TRUE(derives(reread(inferred), ex, 2 * inferred.tolerance));
   EXPECT_TRUE(check_one(reread(inferred), ex).derivable);
 }
@@ -100,11 +101,12 @@ TEST(Placements, OnlyThePinwheelOfABuildingIsPlaced) {
   const Example ex = test::example_of(test::numbered(boxes), "terrace.obj");
   const Inference inferred = infer({ex}, {});
   const std::string text = write_grammar(inferred.grammar);
-  // Three S placements, all in the middle house's ground floor; the rest
-  // is cuts.
+  // Two S placements, both in the middle house's ground floor (the two
+  // rooms that reach past their pieces; the third placed room falls short
+  // of its piece, the rest empty); the rest is cuts.
   std::size_t placements = 0;
   for (std::size_t at = text.find("S("); at != std::string::npos; at = text.find("S(", at + 1)) ++placements;
-  EXPECT_EQ(placements, 3u) << text;
+  EXPECT_EQ(placements, 2u) << text;
   EXPECT_NE(text.find("rectRoofZ --> split(z){ ~2 : repeatN(z, 2){ I(rect) } | ~1 : I(roof) }"), std::string::npos)
       << text;
   const Grammar g = reread(inferred);
@@ -117,9 +119,9 @@ TEST(Placements, OnlyThePinwheelOfABuildingIsPlaced) {
       << inferred.warnings[0];
 }
 
-TEST(Placements, PinwheelsOfDifferentSizesMergeAndBothCheck) {
+TEST(Placements, PinwheelsOfDifferentSizesAreOneStructureThatScalesWithoutOverlaps) {
   // Two buildings: a pinwheel of unit rooms under a slab, and one of rooms
-  // one and a half times as large. Each placement keeps its own sizes.
+  // one and a half times as large.
   std::vector<Example> examples;
   for (const double scale : {1.0, 1.5}) {
     std::vector<vern::LabelledBox> boxes = pinwheel(scale);
@@ -134,19 +136,19 @@ TEST(Placements, PinwheelsOfDifferentSizesMergeAndBothCheck) {
     const CheckResult r = check_one(g, e);
     EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(inferred.grammar);
   }
-  // Two alternatives of the start, as the placements differ. They are
-  // twins (twin_rules.hpp): one rule places the rooms, each alternative
-  // passes its own sizes.
+  // The placements are shares of their piece, so the two pinwheels are
+  // one structure (one alternative, the slab 1 m in both), and on a plot of
+  // any size the rooms scale together: no two overlap.
   const std::string text = write_grammar(inferred.grammar);
-  EXPECT_NE(text.find("S(v1, v2, v2){ I(a) }"), std::string::npos) << text;
-  EXPECT_NE(text.find("(2, 1)"), std::string::npos) << text;
-  EXPECT_NE(text.find("(3, 1.5)"), std::string::npos) << text;
-  // Written out apart, each alternative has its own numbers.
-  InferOptions apart;
-  apart.twin_rules = false;
-  const std::string apart_text = write_grammar(infer(examples, apart).grammar);
-  EXPECT_NE(apart_text.find("S(2, 1, 1){ I(a) }"), std::string::npos) << apart_text;
-  EXPECT_NE(apart_text.find("S(3, 1.5, 1.5){ I(a) }"), std::string::npos) << apart_text;
+  EXPECT_FALSE(std::holds_alternative<Choose>(g.op(g.rules[g.start_rule].body))) << text;
+  EXPECT_EQ(text.find("S(~2, ~1, ~1){ I(a) }"), text.rfind("S(~2, ~1, ~1){ I(a) }")) << text;
+  EXPECT_NE(text.find("1 : I(rect) }"), std::string::npos) << text;
+  for (const glm::dvec3 plot : {glm::dvec3(2, 2, 2), glm::dvec3(6, 4, 3), glm::dvec3(9, 9, 2.5)}) {
+    DeriveOptions o;
+    o.size = plot;
+    const LayoutFaults faults = find_faults(derive(g, o));
+    EXPECT_TRUE(faults.valid()) << faults.first << "\n" << text;
+  }
   // New buildings derive, each with all five parts of one pinwheel.
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
     DeriveOptions o;

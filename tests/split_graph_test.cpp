@@ -128,11 +128,12 @@ TEST(SplitGraph, APinwheelIsPlacedWithSAtItsCornersAndWarned) {
   std::vector<std::string> warnings;
   const NodeId root = example_graph(g, ex, {default_tolerance(ex)}, {}, &warnings);
   // Cut along x at the min corners 0, 1, 2: a and d, then e and c, then b.
-  // Three parts reach past their piece (S); d and e fill theirs.
+  // Two parts reach past their piece, twice its length (S(~2, ...)); b
+  // falls short of its piece, the rest empty; d and e fill theirs.
   const std::string text = one_line(g, root);
   EXPECT_EQ(text,
-            "split(x){ ~1 : split(y){ ~1 : S(2, 1, 1){ I(a) } | ~2 : I(d) } | "
-            "~1 : split(y){ ~1 : nil | ~1 : I(e) | ~1 : S(2, 1, 1){ I(c) } } | ~1 : S(1, 2, 1){ I(b) } }")
+            "split(x){ ~1 : split(y){ ~1 : S(~2, ~1, ~1){ I(a) } | ~2 : I(d) } | "
+            "~1 : split(y){ ~1 : nil | ~1 : I(e) | ~1 : S(~2, ~1, ~1){ I(c) } } | ~1 : split(y){ ~2 : I(b) | ~1 : nil } }")
       << text;
   EXPECT_TRUE(round_trips(ex));
   ASSERT_EQ(warnings.size(), 1u);
@@ -170,9 +171,10 @@ TEST(SplitGraph, OnlyThePinwheelInsideABuildingIsPlaced) {
   EXPECT_EQ(storeys.axis, Expr::axis(Axis::Z));
   ASSERT_EQ(storeys.parts.size(), 4u);  // the pinwheel, rect, roof, and the air beside the tower's top
   EXPECT_TRUE(std::holds_alternative<Nil>(g.op(storeys.parts[3].child)));
-  // Only the ground floor holds placements: a, b and c.
-  EXPECT_EQ(operations_below(g, storeys.parts[0].child)["S"], 3);
-  EXPECT_EQ(operations_below(g, root)["S"], 3);
+  // Only the ground floor holds placements: a and c (b falls short of its
+  // piece and is cut out of it).
+  EXPECT_EQ(operations_below(g, storeys.parts[0].child)["S"], 2);
+  EXPECT_EQ(operations_below(g, root)["S"], 2);
   EXPECT_TRUE(round_trips(ex));
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("block.obj:1:1: warning: no straight cut separates these 5 parts"), std::string::npos)
@@ -181,13 +183,13 @@ TEST(SplitGraph, OnlyThePinwheelInsideABuildingIsPlaced) {
 
 TEST(SplitGraph, APanelInsideAThickerSpaceIsPlacedToo) {
   // A panel at y = 0 beside a box 1 deep: no cut makes it a part of zero
-  // thickness, so it is resized instead.
+  // thickness, so it is resized instead, to none of its piece's.
   const Example flat = test::example_of(
       test::numbered({part("panel", {0, 0, 0}, {2, 0, 2}), part("box", {3, 0, 0}, {5, 1, 2})}), "flat.obj");
   Grammar g;
   std::vector<std::string> warnings;
   const NodeId root = example_graph(g, flat, {default_tolerance(flat)}, {}, &warnings);
-  EXPECT_EQ(one_line(g, root), "split(x){ ~2 : S(2, 0, 2){ I(panel) } | ~1 : nil | ~2 : I(box) }");
+  EXPECT_EQ(one_line(g, root), "split(x){ ~2 : S(~1, ~0, ~1){ I(panel) } | ~1 : nil | ~2 : I(box) }");
   EXPECT_TRUE(round_trips(flat));
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("flat.obj:1:1: warning: part 'panel.0' (line 1) is flat and lies inside a thicker "
@@ -203,7 +205,7 @@ TEST(SplitGraph, TurnedPartsKeepTheirTurnInsideTheirPlacement) {
   Grammar g;
   const SplitTree tree = split_boxes(ex.boxes, {default_tolerance(ex)});
   const NodeId root = split_graph(g, tree, ex.boxes, ex.source, turns, {default_tolerance(ex)});
-  EXPECT_NE(one_line(g, root).find("S(2, 1, 1){ R(z, pi / 2){ I(a) } }"), std::string::npos)
+  EXPECT_NE(one_line(g, root).find("S(~2, ~1, ~1){ R(z, pi / 2){ I(a) } }"), std::string::npos)
       << one_line(g, root);
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "inverse/tidy_numbers.hpp"
+
 namespace vern {
 
 namespace {
@@ -61,16 +63,42 @@ class Placer {
     return std::abs(a.x - b.x) <= tol_ && std::abs(a.y - b.y) <= tol_ && std::abs(a.z - b.z) <= tol_;
   }
 
-  // One part at the piece's origin: itself where it fills the piece, else
-  // resized to its own size (absolute, so it may reach past the piece).
+  // One part at the piece's origin: itself where it fills the piece. Where
+  // it falls short on an axis, the rest of the piece is empty space
+  // (split(axis){ ~part : ... | ~rest : nil }); where it reaches past the
+  // piece, it is resized to so many times the piece's length (S(~2, ~1, ~1):
+  // twice as long), and a flat part to none (S(~1, ~0, ~1)). All relative, because every cut of the group is a share
+  // of the container: on a larger plot the group scales as one, each part
+  // still ending on the corners its neighbours start at, so no two overlap.
+  // A ratio is written to seven digits, whatever the group's size, so
+  // groups of one shape in examples of other sizes are one structure.
   NodeId alone(const Item& item, glm::dvec3 hi) {
-    const NodeId part = part_(item.box);
-    if (near(item.max, hi)) return part;
+    NodeId node = part_(item.box);
+    if (near(item.max, hi)) return node;
     Scale s;
-    for (int a = 0; a < 3; ++a)
-      s.size[static_cast<std::size_t>(a)] = Size{Expr::number(item.max[a] - item.min[a]), false};
-    s.child = part;
-    return g_.intern(Node{std::move(s), {}});
+    bool overruns = false;
+    for (int a = 0; a < 3; ++a) {
+      const double piece = hi[a] - item.min[a], length = item.max[a] - item.min[a];
+      // A flat part (a panel) is resized to no thickness: a split would
+      // give it a part of zero length, which is not derived.
+      const bool past = length > piece + tol_, flat = length <= tol_ && piece > tol_;
+      const double ratio = past ? length / piece : flat ? 0.0 : 1.0;
+      s.size[static_cast<std::size_t>(a)] = Size{Expr::number(shortest_decimal(ratio, 2.5e-7 * ratio)), true};
+      overruns = overruns || past || flat;
+    }
+    if (overruns) {
+      s.child = node;
+      node = g_.intern(Node{std::move(s), {}});
+    }
+    for (int a = 2; a >= 0; --a) {
+      const double piece = hi[a] - item.min[a], length = item.max[a] - item.min[a];
+      if (length >= piece - tol_ || length <= tol_) continue;
+      Split short_of;
+      short_of.axis = Expr::axis(static_cast<Axis>(a));
+      short_of.parts = {{Size{Expr::number(length), true}, node}, {Size{Expr::number(piece - length), true}, nil_}};
+      node = g_.intern(Node{std::move(short_of), {}});
+    }
+    return node;
   }
 
   Grammar& g_;

@@ -8,9 +8,12 @@
 // coordinates, each part going to the piece its min corner lies in, and each
 // piece the same way along y, then z. A piece holding one part whose min
 // corner is the piece's origin is that part: I(label) where the part fills
-// the piece, else S(sx, sy, sz){ I(label) } with the part's own size in
-// metres, reaching beyond the piece as the part does; pieces without parts
-// are nil. Only split, S, I (and R for turned parts) are used, so deriving
+// the piece; where it falls short on an axis, a split of the piece into
+// the part and nil; where it reaches beyond the piece, S(~r, ...){ I(label) }
+// with r the part's length over the piece's (a flat part: ~0); pieces
+// without parts are nil. Every size is a share, so the group scales with
+// its container as one and its parts never overlap on a plot of another
+// size. Only split, S, I (and R for turned parts) are used, so deriving
 // the result gives every part's box, within the tolerance.
 //
 // The construction needs distinct min corners, and no part whose min corner

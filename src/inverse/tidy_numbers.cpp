@@ -174,8 +174,11 @@ class Tidier {
       turn->child = run(turn->child);
     } else if (auto* resize = std::get_if<Scale>(&op)) {
       // A placed part's size (placements.hpp): off by at most the tolerance.
+      // A relative one is a ratio to its piece, rounded where it was made
+      // (the tolerance in metres is not one in ratios).
       resize->child = run(resize->child);
-      for (Size& size : resize->size) size.value = tidy(size.value);
+      for (Size& size : resize->size)
+        if (!size.relative) size.value = tidy(size.value);
     }
     return g_.intern({std::move(op), g_.node(id).loc});
   }
