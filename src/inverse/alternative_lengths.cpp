@@ -20,9 +20,11 @@ struct Seen {
   double total = 0;
 };
 
-std::optional<std::uint8_t> literal_axis(const Split& s) {
-  if (s.axis.nodes().size() != 1) return std::nullopt;
-  const ExprNode& n = s.axis.node(s.axis.root());
+// The axis an operation's axis expression names, when it is a literal x,
+// y or z (not a parameter).
+std::optional<std::uint8_t> literal_axis(const Expr& axis) {
+  if (axis.nodes().size() != 1) return std::nullopt;
+  const ExprNode& n = axis.node(axis.root());
   if (n.kind != ExprKind::Axis) return std::nullopt;
   return n.op;
 }
@@ -58,10 +60,9 @@ struct Stretch {
 
 std::optional<Stretch> stretch_of(const Grammar& g, NodeId id, std::uint8_t axis) {
   const auto* r = std::get_if<Repeat>(&g.op(id));
-  if (!r || r->axis.nodes().size() != 1) return std::nullopt;
-  const ExprNode& a = r->axis.node(r->axis.root());
+  if (!r || literal_axis(r->axis) != axis) return std::nullopt;
   const auto tile = r->size.literal();
-  if (a.kind != ExprKind::Axis || a.op != axis || !tile || *tile <= 0) return std::nullopt;
+  if (!tile || *tile <= 0) return std::nullopt;
   Stretch out{id, *tile, {}};
   if (const auto* c = std::get_if<Choose>(&g.op(r->child))) {
     for (const ChooseOption& o : c->options) {
@@ -85,8 +86,7 @@ std::vector<SplitPart> tiles_of(const Grammar& g, const Split& s, std::size_t fi
     const auto* r = std::get_if<RepeatN>(&g.op(p.child));
     const auto n = r ? r->count.literal() : std::nullopt;
     const auto length = p.size.value.literal();
-    const bool along = r && r->axis.nodes().size() == 1 && r->axis.node(r->axis.root()).kind == ExprKind::Axis &&
-                       r->axis.node(r->axis.root()).op == axis;
+    const bool along = r && literal_axis(r->axis) == axis;
     if (!along || !n || *n < 1 || *n != std::round(*n) || !length || !p.size.relative) {
       out.push_back(p);
       continue;
@@ -185,7 +185,7 @@ NodeId absolute_across_alternatives(Grammar& g, NodeId root, double tolerance) {
     std::map<std::uint8_t, std::vector<Seen>> by_axis;
     for (std::size_t k = 0; k < choose.options.size(); ++k) {
       const auto* s = std::get_if<Split>(&g.op(choose.options[k].child));
-      const auto axis = s ? literal_axis(*s) : std::nullopt;
+      const auto axis = s ? literal_axis(s->axis) : std::nullopt;
       if (!axis) continue;
       if (auto seen = seen_at_one_length(*s, k)) by_axis[*axis].push_back(std::move(*seen));
     }
