@@ -209,8 +209,8 @@ wingY2(s1) --> split(y){ ~s1 : nil | ~(6 - 2 * s1) : split(z){ ~2 : I(wall) | ~1
 }
 
 TEST(TwinRules, TwinRulesThatCallOneOfThemStayApart) {
-  // Two towers whose tiers recurse into t: joined, u's tiers would call t
-  // with t's 3 m, not u's 5 m.
+  // Two towers whose tiers recurse into t: joined, the rebuilt body's call
+  // of t would keep its one argument where t takes two.
   Grammar g = parse_grammar(R"(
 @scope 20, 10, 10
 building --> split(x){ ~1 : t(0.8) | ~1 : u(0.8) }

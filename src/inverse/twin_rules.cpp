@@ -101,9 +101,10 @@ struct Plan {
 // Twin rules (Plan::rules): rules with parameters whose bodies are twins
 // reading those parameters alike (tiers inset by a share s1 of two sizes,
 // 4.35 - 2 * s1 and 2.6 - 2 * s1), each body written only as its rule's.
-// Keyed by shape and parameter count; a body that calls one of its group's
-// rules (recursion) is left out, since the call inside would need the
-// values of whichever twin it stands for.
+// Keyed by shape and parameter count. A body that calls one of its group's
+// rules (recursion) is left out: the joined rule's body is rebuilt from the
+// first twin's, calls and all, and calls are given their new arguments by
+// node, so a call rebuilt inside it would keep the old, too few.
 struct RuleTwin {
   NodeId body;
   RuleId rule;

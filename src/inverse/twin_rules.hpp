@@ -36,7 +36,8 @@
 // with parameters whose bodies are twins reading them alike become the
 // first of them, taking the values they differ in after its own
 // parameters, and every call of any of them passes its own values after
-// its arguments (rules that call one of their twins stay apart).
+// its arguments (rules that call one of their twins, recursion, stay
+// apart).
 #pragma once
 
 #include <cstddef>
