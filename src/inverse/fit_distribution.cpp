@@ -154,6 +154,16 @@ Distribution fit_distribution(const std::vector<Observation>& observations, cons
   return best;
 }
 
+Distribution fit_size(const std::vector<Observation>& sizes, double resolution, bool uniform_only) {
+  double smallest = sizes[0].value;
+  for (const Observation& o : sizes) smallest = std::min(smallest, o.value);
+  FitOptions fit;
+  fit.resolution = resolution;
+  fit.floor = smallest / 2;
+  fit.uniform_only = uniform_only;
+  return fit_distribution(sizes, fit);
+}
+
 Expr distribution_expr(const Distribution& d) {
   switch (d.kind) {
     case DistributionKind::Constant: return Expr::number(d.values.at(0));

@@ -52,6 +52,12 @@ struct FitOptions {
 // observations must not be empty.
 Distribution fit_distribution(const std::vector<Observation>& observations, const FitOptions& options);
 
+// A size's distribution (a part's length, a plot's): sizes stay positive,
+// and one seen in every example never vanishes (a zero length would drop
+// the part from the structure), so the support stops at half the smallest
+// size seen. observations must not be empty.
+Distribution fit_size(const std::vector<Observation>& sizes, double resolution, bool uniform_only);
+
 // The distribution as the grammar writes it: a literal, choice(...),
 // rand(lo, hi) or tnormal(mu, sigma, lo, hi).
 Expr distribution_expr(const Distribution& d);

@@ -21,18 +21,6 @@ namespace {
 // whole grammar once per rule it makes; beyond this many parts in all
 // neither is tried (a million-part example is one example anyway).
 constexpr std::size_t kJoinedPartsLimit = 200'000;
-
-// One axis of @scope. A plot is never empty: the fitted support stops at
-// half the smallest size seen, as a part's does (merge.cpp).
-Expr scope_size(const std::vector<Observation>& sizes, double tolerance, double rounding, bool uniform_only) {
-  double smallest = sizes[0].value;
-  for (const Observation& o : sizes) smallest = std::min(smallest, o.value);
-  FitOptions fit;
-  fit.resolution = tolerance;
-  fit.floor = smallest / 2;
-  fit.uniform_only = uniform_only;
-  return distribution_expr(short_decimals(fit_distribution(sizes, fit), rounding));
-}
 }  // namespace
 
 Inference infer(const std::vector<Example>& examples, const InferOptions& options) {
@@ -116,7 +104,8 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   for (int axis = 0; axis < 3; ++axis) {
     std::vector<Observation> sizes;
     for (const auto& e : examples) sizes.push_back({example_size(e)[axis], 1});
-    out.grammar.scope[axis] = scope_size(sizes, out.tolerance, smallest / 4, options.uniform_distributions);
+    out.grammar.scope[axis] =
+        distribution_expr(short_decimals(fit_size(sizes, out.tolerance, options.uniform_distributions), smallest / 4));
   }
 
   // The first mesh seen for each label stands for all its parts.

@@ -1,9 +1,9 @@
 #include "inverse/merge.hpp"
 
-#include "inverse/generalise.hpp"
 #include "inverse/alternative_lengths.hpp"
 #include "inverse/equal_options.hpp"
 #include "inverse/fit_distribution.hpp"
+#include "inverse/generalise.hpp"
 #include "inverse/repeat_folding.hpp"
 #include "inverse/sample_book.hpp"
 #include "inverse/size_clusters.hpp"
@@ -601,13 +601,7 @@ class Fitter {
           hi = std::max(hi, o.value);
         }
         if (std::abs(lo - r->lo) > opt_.tolerance || std::abs(hi - r->hi) > opt_.tolerance) return;
-        FitOptions f;
-        f.resolution = opt_.tolerance;
-        // Sizes stay positive, and a part seen in every example never
-        // vanishes: a zero length would drop it from the structure.
-        f.floor = r->lo / 2;
-        f.uniform_only = opt_.uniform_distributions;
-        e = distribution_expr(fit_distribution(samples[i], f));
+        e = distribution_expr(fit_size(samples[i], opt_.tolerance, opt_.uniform_distributions));
         changed = true;
       };
       if (auto* s = std::get_if<Split>(&op)) {

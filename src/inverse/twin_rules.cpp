@@ -341,17 +341,20 @@ TwinRules parameterise_twins(Grammar& g, const TwinOptions& options) {
       if (members.size() < 2) continue;
       if (auto plan = plan_for(g, s, std::move(members), options.max_params)) plans.push_back(std::move(*plan));
     }
-    for (auto& [key, twins] : rule_twins(g, s)) {
+    const auto twin_groups = rule_twins(g, s);
+    std::vector<std::size_t> calls_of(twin_groups.empty() ? 0 : g.rules.size(), 0);  // calls written, by rule
+    if (!twin_groups.empty())
+      for (NodeId id = 0; id < g.node_count(); ++id)
+        if (const auto* c = std::get_if<Call>(&g.op(id))) calls_of[c->rule] += s.writes[id];
+    for (const auto& [key, twins] : twin_groups) {
       std::vector<NodeId> members;
       std::vector<RuleId> rules;
       std::size_t calls = 0;
       for (const RuleTwin& t : twins) {
         members.push_back(t.body);
         rules.push_back(t.rule);
+        calls += calls_of[t.rule];
       }
-      for (NodeId id = 0; id < g.node_count(); ++id)
-        if (const auto* c = std::get_if<Call>(&g.op(id)); c && std::ranges::find(rules, c->rule) != rules.end())
-          calls += s.writes[id];
       if (auto plan = plan_for(g, s, std::move(members), options.max_params, std::move(rules), calls))
         plans.push_back(std::move(*plan));
     }
