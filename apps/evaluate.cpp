@@ -12,6 +12,7 @@
 #include "graph/error.hpp"
 #include "graph/parser.hpp"
 #include "inverse/evaluation.hpp"
+#include "inverse/precision_recall.hpp"
 #include "support/command_line.hpp"
 #include "support/guarded_main.hpp"
 
@@ -29,7 +30,10 @@ CommandLine make_command_line() {
   cl.add({"--variants", "-n", 1, "N", "variants judged per grammar (default 100)"});
   cl.add({"--threads", "-j", 1, "N", "derive with N threads (default: all cores; results are the same)"});
   cl.add({"--distributions", "", 1, "KIND", "fitted (default) or uniform: how inference writes varying sizes"});
-  cl.add({"--keep", "", 1, "FOLDER", "also write each inferred grammar to FOLDER/NAME.grm"});
+  cl.add({"--keep", "", 1, "FOLDER", "also write each inferred grammar to FOLDER/NAME.grm (NAME.N.grm with --precision-recall)"});
+  cl.add({"--precision-recall", "", 0, "", "instead: precision and recall against the source, per example count"});
+  cl.add({"--counts", "", 1, "N,N,...", "with --precision-recall: example counts (default 3,10,30)"});
+  cl.add({"--samples", "", 1, "S", "with --precision-recall: variants and fresh samples judged (default 40)"});
   cl.add_standard_options();
   cl.set_epilog(
       "columns:\n"
@@ -42,8 +46,17 @@ CommandLine make_command_line() {
       "  structure, sizes  distance of the variants' part counts and part sizes from the source\n"
       "                 grammar's (relative earth mover's distance; the source against itself in brackets)\n"
       "\n"
-      "example:\n"
-      "  evaluate data/grammars/*.grm -k 10 -n 100\n");
+      "columns with --precision-recall (one row per grammar and example count N):\n"
+      "  self           fresh source samples the source derives on their extents (1.00: a fair judge)\n"
+      "  reproduced     examples the inferred grammar derives exactly\n"
+      "  precision      inferred variants, on the examples' plots, that the source derives\n"
+      "  wider          the same on plots 1.5 times as wide\n"
+      "  recall         fresh source samples (seeds 5001..) that the inferred grammar derives\n"
+      "  invalid        inferred variants with overlapping parts or parts outside the plot\n"
+      "\n"
+      "examples:\n"
+      "  evaluate data/grammars/*.grm -k 10 -n 100\n"
+      "  evaluate data/styles/*.grm --precision-recall --counts 3,10,30\n");
   return cl;
 }
 
@@ -55,6 +68,100 @@ std::string fixed(double v) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3f", v);
   return buffer;
+}
+
+std::string two_places(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f", v);
+  return buffer;
+}
+
+std::vector<std::uint32_t> example_counts(const ParsedCommandLine& args) {
+  if (!args.has("--counts")) return {3, 10, 30};
+  std::vector<std::uint32_t> counts;
+  std::istringstream in(args.value("--counts"));
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    char* end = nullptr;
+    const long n = std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || n < 1 || n > 1000)
+      throw Error(ErrorKind::Usage, "evaluate: error: --counts takes example counts 1..1000 separated by commas, not '" +
+                                        args.value("--counts") + "'\n  hint: --counts 3,10,30");
+    counts.push_back(static_cast<std::uint32_t>(n));
+  }
+  return counts;
+}
+
+// Per N, the mean of each score over the grammars, and the lowest.
+struct Means {
+  double precision = 0, wider = 0, recall = 0, lowest = 1;
+  int grammars = 0;
+};
+
+int run_precision_recall(const ParsedCommandLine& args, unsigned threads, bool quiet) {
+  PrecisionRecallOptions options;
+  options.threads = threads;
+  if (args.has("--samples"))
+    options.samples = static_cast<std::uint32_t>(CommandLine::integer(args, "--samples", 1, 100000));
+  const std::vector<std::uint32_t> counts = example_counts(args);
+  std::vector<Means> means(counts.size());
+
+  std::cout << "| grammar | N | rules | lines | self | reproduced | precision | wider | recall | invalid |\n"
+               "|---|---|---|---|---|---|---|---|---|---|\n";
+  std::ostringstream notes;
+  int failures = 0;
+  for (const std::string& file : args.positional) {
+    const std::string name = fs::path(file).stem().string();
+    const Grammar source = read_grammar_file(file);
+    const auto started = std::chrono::steady_clock::now();
+    const Share self = self_recall(source, options);
+    if (self.hits != self.total) notes << "- " << name << ": the source does not derive its own " << self.first_miss << "\n";
+    for (std::size_t c = 0; c < counts.size(); ++c) {
+      options.examples = counts[c];
+      PrecisionRecall r;
+      try {
+        r = precision_recall(source, options);
+      } catch (const Error& error) {
+        std::cout << "| " << name << " | " << counts[c] << " | - | - | - | inference failed | - | - | - | - |\n";
+        notes << "- " << name << ", N = " << counts[c] << ": " << error.what() << "\n";
+        ++failures;
+        continue;
+      }
+      std::cout << "| " << name << " | " << counts[c] << " | " << r.inferred.rules << " | " << r.inferred_lines << " | "
+                << two_places(self.value()) << " | " << r.reproduced << "/" << r.examples << " | "
+                << two_places(r.precision.value()) << " | " << two_places(r.precision_wider.value()) << " | "
+                << two_places(r.recall.value()) << " | " << r.invalid << " |" << std::endl;
+      if (args.has("--keep"))
+        write_file_atomically(fs::path(args.value("--keep")) / (name + "." + std::to_string(counts[c]) + ".grm"),
+                              r.inferred_text);
+      const std::string at = "- " + name + ", N = " + std::to_string(counts[c]) + ": ";
+      if (!r.first_unreproduced.empty()) notes << at << "not reproduced: " << r.first_unreproduced << "\n";
+      if (!r.precision.first_miss.empty()) notes << at << "imprecise: " << r.precision.first_miss << "\n";
+      if (!r.recall.first_miss.empty()) notes << at << "not recalled: " << r.recall.first_miss << "\n";
+      if (!r.first_invalid.empty()) notes << at << "invalid: " << r.first_invalid << "\n";
+      if (r.reproduced != r.examples || r.invalid != 0) ++failures;
+      Means& m = means[c];
+      m.precision += r.precision.value();
+      m.wider += r.precision_wider.value();
+      m.recall += r.recall.value();
+      m.lowest = std::min({m.lowest, r.precision.value(), r.recall.value()});
+      ++m.grammars;
+    }
+    if (!quiet) {
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      std::fprintf(stderr, "evaluate: %s (%.1f s)\n", name.c_str(), seconds);
+    }
+  }
+  std::cout << "\n| N | grammars | mean precision | mean wider | mean recall | lowest |\n|---|---|---|---|---|---|\n";
+  for (std::size_t c = 0; c < counts.size(); ++c) {
+    const Means& m = means[c];
+    if (m.grammars == 0) continue;
+    std::cout << "| " << counts[c] << " | " << m.grammars << " | " << two_places(m.precision / m.grammars) << " | "
+              << two_places(m.wider / m.grammars) << " | " << two_places(m.recall / m.grammars) << " | "
+              << two_places(m.lowest) << " |\n";
+  }
+  if (!notes.str().empty()) std::cout << "\n" << notes.str();
+  return failures == 0 ? 0 : 1;
 }
 
 int run(int argc, char** argv) {
@@ -78,6 +185,7 @@ int run(int argc, char** argv) {
   std::error_code ec;
   if (args.has("--keep") && !fs::is_directory(args.value("--keep"), ec))
     throw Error(ErrorKind::Io, args.value("--keep") + ": error: not an existing folder\n  hint: create it first");
+  if (args.has("--precision-recall")) return run_precision_recall(args, options.threads, quiet);
 
   std::cout << "| grammar | rules | DL | lines | reproduced | valid | novel | structure | sizes |\n"
                "|---|---|---|---|---|---|---|---|---|\n";
