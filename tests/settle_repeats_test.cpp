@@ -20,33 +20,62 @@ std::string windows(int n, double w) {
   return t + " }";
 }
 
-TEST(SettleRepeats, TheSameCountOnDifferentLengthsIsThatManyTiles) {
-  // Three windows on 9 m and three on 7.5 m: repeatN(x, 3), whatever the width.
+TEST(SettleRepeats, TheSameCountWhereNoTileGivesItIsThatManyTiles) {
+  // Six windows on 15 m and six on 18.3 m: no tile makes six on both
+  // ([2.5, 3) and [3.05, 3.66)), so the row is six tiles whatever the
+  // width: repeatN(x, 6).
   Grammar g;
-  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3), windows(3, 2.5)}), {1e-9, true});
+  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(6, 2.5), windows(6, 3.05)}), {1e-9, true});
   const auto* row = std::get_if<RepeatN>(&g.op(merged));
   ASSERT_NE(row, nullptr);
-  EXPECT_EQ(row->count.literal(), 3.0);
+  EXPECT_EQ(row->count.literal(), 6.0);
 }
 
-TEST(SettleRepeats, VaryingCountsTakeTileSizesFromTheMiddleOfEachCountsRange) {
-  // Three windows on 9 m (any tile in [3, 4.5) makes three) and four on
-  // 10 m ([2.5, 3.33)): the middles 9 / 2.5 = 3.6 and 10 / 3.5 = 2.86,
-  // written as the shortest decimals a quarter of the way to their ranges'
-  // nearer ends (3.6 and 3), instead of the lower ends 3 and 2.5.
+TEST(SettleRepeats, CountsThatOneTileGivesAreThatTile) {
+  // Three windows on 9 m and three on 7.5 m: any tile in [3, 3.75) makes
+  // three on both, and a wider plot more: the row follows the plot, its
+  // tile the shortest decimal near the middle, 3.4 (not repeatN(x, 3)).
+  // Three on 9 m and four on 10 m: [3, 3.33), written 3.2 (not a range
+  // that draws counts neither example had).
+  for (const auto& [second, tile] : {std::pair{windows(3, 2.5), 3.4}, std::pair{windows(4, 2.5), 3.2}}) {
+    Grammar g;
+    const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3), second}), {1e-9, true});
+    const auto* row = std::get_if<Repeat>(&g.op(merged));
+    ASSERT_NE(row, nullptr) << second;
+    EXPECT_EQ(row->size.literal(), tile) << second;
+  }
+}
+
+TEST(SettleRepeats, VaryingCountsNoTileGivesTakeTileSizesFromTheMiddleOfEachCountsRange) {
+  // Six windows on 12 m (any tile in [2, 2.4) makes six) and five on
+  // 12.25 m ([2.45, 3.06)): no one tile gives both. The middles
+  // 12 / 5.5 = 2.18 and 12.25 / 4.5 = 2.72, written as the shortest
+  // decimals a quarter of the way to their ranges' nearer ends (2.2 and
+  // 2.7), instead of the lower ends 2 and 2.45.
   Grammar g;
-  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3), windows(4, 2.5)}), {1e-9, true});
+  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(6, 2), windows(5, 2.45)}), {1e-9, true});
   const auto* row = std::get_if<Repeat>(&g.op(merged));
   ASSERT_NE(row, nullptr);
   const auto tile = literal_range(row->size);
   ASSERT_TRUE(tile);
-  EXPECT_EQ(tile->lo, 3.0);
-  EXPECT_EQ(tile->hi, 3.6);
+  EXPECT_EQ(tile->lo, 2.2);
+  EXPECT_EQ(tile->hi, 2.7);
   // Each example's own count is still there to be drawn.
-  for (const auto& [length, count] : {std::pair{9.0, 3.0}, std::pair{10.0, 4.0}}) {
+  for (const auto& [length, count] : {std::pair{12.0, 6.0}, std::pair{12.25, 5.0}}) {
     EXPECT_GE(std::ceil(length / tile->lo), count) << length;
     EXPECT_LE(std::ceil(length / tile->hi), count) << length;
   }
+}
+
+TEST(SettleRepeats, CommonTileKeepsEveryCountAndClearsTheToleranceAtBothEnds) {
+  const std::vector<TileSeen> seen{{3, 9.0}, {4, 10.0}, {5, 15.9}};
+  // [3, 4.5) and [2.5, 3.33) and [3.18, 3.975): [3.18, 3.33).
+  const auto t = common_tile(seen, 1e-6);
+  ASSERT_TRUE(t);
+  EXPECT_EQ(*t, 3.3);
+  for (const TileSeen& s : seen) EXPECT_EQ(repeat_tile_count(s.length, *t), s.count);
+  // A length known to 0.2 m leaves no room: 3.18 + 0.04 .. 3.33 - 0.067.
+  EXPECT_FALSE(common_tile({{3, 9.0}, {4, 10.0}, {5, 15.9}, {5, 16.6}}, 0.2));
 }
 
 TEST(SettleRepeats, AConstantTileStaysAsItIs) {

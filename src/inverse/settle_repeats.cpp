@@ -1,12 +1,36 @@
 #include "inverse/settle_repeats.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "inverse/merge.hpp"
 #include "inverse/substitute.hpp"
 #include "inverse/tidy_numbers.hpp"
 
 namespace vern {
+
+std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tolerance) {
+  if (seen.empty()) return std::nullopt;
+  double lo = 0, hi = std::numeric_limits<double>::infinity();
+  for (const TileSeen& t : seen) {
+    if (t.count == 0 || !(t.length > 0)) return std::nullopt;
+    const double n = t.count;
+    // Lengths are known to the tolerance; the tile must give n on all of them.
+    lo = std::max(lo, (t.length + tolerance) / n);
+    if (t.count >= 2) hi = std::min(hi, (t.length - tolerance) / (n - 1));
+  }
+  if (!std::isfinite(hi)) hi = 2 * lo;  // one tile everywhere: any size from the longest up
+  if (!(hi > lo)) return std::nullopt;
+  // Strictly inside: a tile exactly at L/(n-1) makes n-1 tiles.
+  const double middle = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+  const double t = shortest_decimal(middle, 0.999 * half);
+  if (!(t >= lo && t < hi)) return std::nullopt;
+  for (const TileSeen& s : seen) {
+    if (repeat_tile_count(s.length, t) != s.count) return std::nullopt;
+  }
+  return t;
+}
 
 NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, SampleBook& book, double tolerance) {
   std::vector<NodeId> replace(g.node_count(), kNoReplacement);
@@ -16,6 +40,17 @@ NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, Sa
     const auto* r = std::get_if<Repeat>(&g.op(id));
     const auto tile = r ? literal_range(r->size) : std::nullopt;
     if (!tile || tile->hi - tile->lo <= tolerance) continue;
+    // One tile size that makes every count seen on its length explains the
+    // examples in one number, where a range needs two and draws counts the
+    // examples never had: the tile of the source, or as near as the
+    // examples tell (issue 15: a 4 m tile came back as rand(3.44, 4.56)).
+    if (const auto one = common_tile(seen, tolerance)) {
+      Repeat fixed = *r;
+      fixed.size = Expr::number(*one);
+      replace[id] = g.intern({std::move(fixed), g.node(id).loc});
+      any = true;
+      continue;
+    }
     const std::uint32_t n = seen[0].count;
     if (n >= 2 && std::all_of(seen.begin(), seen.end(), [&](const TileSeen& t) { return t.count == n; })) {
       RepeatN counted{r->axis, Expr::number(n), r->child};

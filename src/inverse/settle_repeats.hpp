@@ -1,13 +1,26 @@
 #pragma once
 
+#include <optional>
+#include <vector>
+
 #include "graph/grammar.hpp"
 #include "inverse/repeat_folding.hpp"
 #include "inverse/sample_book.hpp"
 
 namespace vern {
 
+// The shortest decimal tile size that makes, on every length seen, the
+// count seen there (n tiles on L: any size in [L/n, L/(n-1)), lengths
+// known to the tolerance), nearest the middle of what they allow; none
+// when no one size does.
+std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tolerance);
+
 // Repeats whose tile sizes vary, once merging has settled (rows that
 // differ in their counts have been united first):
+//   - one whose counts, on every length seen, one tile size explains is
+//     that size (common_tile): the same counts on the examples, and on
+//     other lengths the counts the source's own tile gives, as near as
+//     the examples tell;
 //   - one that made the same number of tiles wherever the examples show
 //     it is that many tiles whatever the length: repeatN. A cluster of
 //     three by three towers stays three by three on a wider plot instead
