@@ -68,3 +68,41 @@ TEST(PrecisionRecall, ScoresDoNotDependOnThreads) {
 
 }  // namespace
 }  // namespace vern
+
+namespace vern {
+namespace {
+
+// Each failure class of issue 15, on the style that stresses it: before
+// the fix, precision was 0 (or near it) at the example count given.
+double precision_of(const std::string& name, std::uint32_t examples) {
+  PrecisionRecallOptions o;
+  o.examples = examples;
+  o.samples = 20;
+  const PrecisionRecall r = precision_recall(style(name), o);
+  EXPECT_EQ(r.reproduced, r.examples) << name << ": " << r.first_unreproduced;
+  EXPECT_EQ(r.invalid, 0u) << name << ": " << r.first_invalid;
+  return r.precision.value();
+}
+
+TEST(PrecisionRecall, TilesOfOneSizeComeBackAsThatSize) {
+  // Storeys of 3.5 m and panels of 1.5 m, not rand(3, 4) and rand(1.42, 1.58).
+  EXPECT_GE(precision_of("office_grid", 10), 0.9);
+}
+
+TEST(PrecisionRecall, ALengthOfItsOwnStaysInMetres) {
+  // The courtyard's ranges keep their depth on every plot, and all four one depth.
+  EXPECT_GE(precision_of("courtyard", 30), 0.9);
+}
+
+TEST(PrecisionRecall, IndependentChoicesKeepTheirFramesProportions) {
+  // Fronts and roofs chosen apart, the front a fifth of the depth in every variant.
+  EXPECT_GE(precision_of("cottage_kinds", 30), 0.9);
+}
+
+TEST(PrecisionRecall, SizesEqualInAFewExamplesAreOneSize) {
+  // Three houses: the wing's wall and roof have one width.
+  EXPECT_GE(precision_of("wing_depth", 3), 0.5);
+}
+
+}  // namespace
+}  // namespace vern

@@ -48,3 +48,49 @@ TEST(SizePlan, ProportionalSplitsStayRelative) {
 
 }  // namespace
 }  // namespace vern
+
+namespace vern {
+namespace {
+
+TEST(SizePlan, ALengthKeptInMetresOnPlotsOfAnySizeIsDrawnInMetres) {
+  // A courtyard's ranges 5 to 8 m deep on plots of 24 to 44 m: the ranges
+  // are lengths of their own, the court takes the rest.
+  const std::vector<std::vector<double>> lengths = {
+      {5, 30, 5}, {8, 10, 8}, {6, 26, 6}, {7.5, 14, 7.5}, {5.5, 20, 5.5}};
+  const auto plan = plan_drawn_sizes(lengths, 1e-6);
+  ASSERT_TRUE(plan.has_value());
+  for (std::size_t side : {0u, 2u}) {
+    EXPECT_TRUE((*plan)[side].absolute) << side;
+    EXPECT_FALSE((*plan)[side].fixed) << side;
+    EXPECT_EQ((*plan)[side].values, (std::vector<double>{5, 8, 6, 7.5, 5.5})) << side;
+  }
+  EXPECT_FALSE((*plan)[1].absolute);  // one part stays relative: it fills any plot
+}
+
+TEST(SizePlan, SharesThatGrowWithThePlotStayShares) {
+  // A wing a third of every plot: in metres it spreads as the plots do.
+  const auto plan = plan_drawn_sizes({{4, 8}, {6, 12.5}, {5, 9.5}, {7, 14.2}}, 1e-6);
+  if (plan) {
+    EXPECT_FALSE((*plan)[0].absolute);
+    EXPECT_FALSE((*plan)[1].absolute);
+  }
+}
+
+TEST(SizePlan, PartsInOneRatioBesideADrawnLengthKeepTheirRatio) {
+  // A lower half: wall and roof in 1 : 0.6, under air of any height.
+  const std::vector<std::vector<double>> lengths = {{2.5, 1.5, 3.1}, {3.75, 2.25, 1.2}, {3, 1.8, 2.4}};
+  const auto plan = plan_drawn_sizes(lengths, 1e-6);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_TRUE((*plan)[2].absolute);
+  EXPECT_FALSE((*plan)[2].fixed);
+  ASSERT_TRUE((*plan)[0].fixed && (*plan)[1].fixed);
+  EXPECT_NEAR((*plan)[1].value / (*plan)[0].value, 0.6, 1e-9);
+}
+
+TEST(SizePlan, NothingVaryingIsNoDrawnPlan) {
+  EXPECT_FALSE(plan_drawn_sizes({{0.6, 5.867, 2.933, 0.6}, {0.6, 8.533, 4.267, 0.6}}, 1e-3).has_value());
+  EXPECT_FALSE(plan_drawn_sizes({{1, 3, 6}}, 1e-6).has_value());
+}
+
+}  // namespace
+}  // namespace vern

@@ -27,7 +27,8 @@ class Generaliser {
   Generaliser(Grammar& g, const MergeOptions& o)
       : g_(g), opt_(o), references_(g.node_count(), 0) {}
 
-  NodeId run(NodeId root, bool& changed, std::vector<std::pair<NodeId, NodeId>>* rebuilt) {
+  NodeId run(NodeId root, bool& changed, std::vector<std::pair<NodeId, NodeId>>* rebuilt,
+             std::vector<std::pair<NodeId, NodeId>>* joined) {
     changed = false;
     collect(root);
     std::vector<NodeId> replace(g_.node_count(), kNoReplacement);  // by node id
@@ -35,7 +36,10 @@ class Generaliser {
       if (frame.members.size() < 2) continue;
       if (auto merged = generalise(frame)) {
         changed = true;
-        for (NodeId m : frame.members) replace[m] = *merged;
+        for (NodeId m : frame.members) {
+          replace[m] = *merged;
+          if (joined) joined->emplace_back(m, *merged);
+        }
       }
     }
     return changed ? substitute(g_, root, replace, rebuilt) : root;
@@ -89,13 +93,30 @@ class Generaliser {
     // Few fillings for the variety at each place: the places are coupled.
     if (busiest < 2 || frame.members.size() < 2 * busiest) return std::nullopt;
 
+    // The members share their proportions (the frame's key), not their
+    // lengths: relative sizes range over each member's own scaled to the
+    // first member's relative total, or a front a fifth of every plot's
+    // depth would become two independent draws.
+    auto relative_total = [&](const Split& s) {
+      double t = 0;
+      for (const auto& p : s.parts)
+        if (p.size.relative) t += middle(p.size.value).value_or(0.0);
+      return t;
+    };
+    const double reference = relative_total(first);
     Split merged;
     merged.axis = first.axis;
     for (std::size_t i = 0; i < n; ++i) {
       Range range{0, 0};
       bool has_range = false;
       for (NodeId m : frame.members) {
-        if (auto r = literal_range(std::get<Split>(g_.op(m)).parts[i].size.value)) {
+        const Split& s = std::get<Split>(g_.op(m));
+        if (auto r = literal_range(s.parts[i].size.value)) {
+          const double total = relative_total(s);
+          if (s.parts[i].size.relative && total > 0 && reference > 0) {
+            r->lo *= reference / total;
+            r->hi *= reference / total;
+          }
           range = has_range ? Range{std::min(range.lo, r->lo), std::max(range.hi, r->hi)} : *r;
           has_range = true;
         }
@@ -123,8 +144,9 @@ class Generaliser {
 }  // namespace
 
 NodeId generalise_free_parts(Grammar& g, NodeId root, const MergeOptions& options, bool& changed,
-                             std::vector<std::pair<NodeId, NodeId>>* rebuilt) {
-  return Generaliser(g, options).run(root, changed, rebuilt);
+                             std::vector<std::pair<NodeId, NodeId>>* rebuilt,
+                             std::vector<std::pair<NodeId, NodeId>>* joined) {
+  return Generaliser(g, options).run(root, changed, rebuilt, joined);
 }
 
 }  // namespace vern

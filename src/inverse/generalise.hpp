@@ -25,8 +25,12 @@
 namespace vern {
 
 // Returns the new root, and whether anything was generalised; rebuilt
-// gets the nodes above a generalised frame that were rebuilt (substitute).
+// gets the nodes above a generalised frame that were rebuilt (substitute),
+// joined each frame member with the split that replaced it. The joined
+// split's relative sizes range over its members' scaled to one relative
+// total: members share their proportions, not their lengths.
 NodeId generalise_free_parts(Grammar& g, NodeId root, const MergeOptions& options, bool& changed,
-                             std::vector<std::pair<NodeId, NodeId>>* rebuilt = nullptr);
+                             std::vector<std::pair<NodeId, NodeId>>* rebuilt = nullptr,
+                             std::vector<std::pair<NodeId, NodeId>>* joined = nullptr);
 
 }  // namespace vern

@@ -27,6 +27,12 @@ namespace {
 constexpr double kCorrelated = 0.9;      // |r| at which one size follows another
 constexpr std::size_t kMinNoisy = 5;     // examples needed to call a loose fit a dependence
 
+// Do the values differ by more than the tolerance?
+bool varies(const std::vector<double>& x, double tolerance) {
+  const auto [lo, hi] = std::ranges::minmax(x);
+  return hi - lo > tolerance;
+}
+
 // A split of a region whose sizes draw, where it runs.
 struct Occurrence {
   std::uint64_t path = 0;
@@ -267,7 +273,7 @@ class Joiner {
       }
       if (ran) rows.push_back(std::move(row));
     }
-    if (rows.size() < opt_.min_examples) return std::nullopt;
+    if (rows.size() < std::min(opt_.min_examples, opt_.min_equal)) return std::nullopt;
     const std::size_t n = rows.size();
 
     // Per occurrence: per part, its length in each example.
@@ -348,7 +354,9 @@ class Joiner {
       const std::vector<double> seen_values = present_values(Q.values);
       if (seen_values.empty()) continue;
       const auto [lo, hi] = std::ranges::minmax(seen_values);
-      if (hi - lo <= opt_.tolerance && seen_values.size() >= opt_.min_examples) {
+      // The same in every example that shows it: a constant, as merging
+      // writes it, however few show it.
+      if (hi - lo <= opt_.tolerance) {
         f.c0 = shortest_decimal((lo + hi) / 2, opt_.tolerance / 4);
         formula[Q.occurrence][Q.part] = f;
         ++gained;
@@ -360,8 +368,18 @@ class Joiner {
       std::vector<double> best_x, best_y;
       for (std::size_t l = 0; l < leaders.size(); ++l) {
         auto [x, y] = paired(quantities[leaders[l]].values, Q.values);
-        if (x.size() < opt_.min_examples || !shows_a_line(x, opt_.tolerance)) continue;
-        Fit t = line_fit(x, y);
+        Fit t;
+        if (x.size() >= opt_.min_examples && shows_a_line(x, opt_.tolerance)) {
+          t = line_fit(x, y);
+        } else if (n < opt_.min_examples && x.size() >= opt_.min_equal && varies(x, opt_.tolerance)) {
+          // Only equality is evidence from so few, and only where there
+          // are no more to see: in a region seen more often, a pair that
+          // so few show stays apart, as a line through them would.
+          t.b = 1;
+          t.r = 1;
+        } else {
+          continue;
+        }
         t.worst = worst_miss(x, y, t.a, t.b);
         if (!best || t.worst < best_fit.worst) {
           best = l;
@@ -501,7 +519,7 @@ class Joiner {
 
 JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const JointSizesOptions& options) {
   JointSizes out;
-  if (examples.size() < options.min_examples) return out;
+  if (examples.size() < std::min(options.min_examples, options.min_equal)) return out;
   std::vector<Example> placed;
   for (const Example& e : examples) placed.push_back(at_origin(e));
   CheckOptions check;

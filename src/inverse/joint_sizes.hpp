@@ -21,8 +21,8 @@
 //     free: the last one is the rest, `~(10 - s1)`;
 //   - each other varying size, in derivation order, is compared with the
 //     ones before it: one that is a straight-line function of an earlier
-//     one (within the tolerance) is written as that function, `~(0.5 *
-//     s1)`; one that follows an earlier one closely (|correlation| >= 0.9,
+//     one (within the tolerance; four examples or more, or, in a region
+//     that fewer show, two or more for equal sizes) is written as that function, `~(0.5 * s1)`; one that follows an earlier one closely (|correlation| >= 0.9,
 //     five examples or more) is that function plus a drawn deviation
 //     `s2 = rand(-e, e)` as wide as the examples' largest; one the region's
 //     examples all show the same is that constant; any other is drawn,
@@ -46,7 +46,13 @@ namespace vern {
 struct JointSizesOptions {
   double tolerance = 1e-6;             // metres
   bool uniform_distributions = false;  // drawn sizes as rand(min, max) (--distributions uniform)
-  std::size_t min_examples = 4;        // a region seen in fewer examples is left alone
+  std::size_t min_examples = 4;        // fewer examples show no line and no constant
+  // Two sizes equal in every example that shows both, while they vary,
+  // are one size from this many examples on, in a region seen in fewer
+  // than min_examples: equality needs no fitted line, and varying sizes
+  // equal to the last millimetre by chance are not seen (the wall and the
+  // roof of one wing, three houses).
+  std::size_t min_equal = 2;
   unsigned threads = 0;                // for checking the examples (0: one per core)
 };
 

@@ -1,6 +1,7 @@
 #include "inverse/merge.hpp"
 
 #include "inverse/alternative_lengths.hpp"
+#include "inverse/drawn_sizes.hpp"
 #include "inverse/equal_options.hpp"
 #include "inverse/fit_distribution.hpp"
 #include "inverse/generalise.hpp"
@@ -44,7 +45,6 @@ Expr range_expr(Range r, double tolerance) {
 
 namespace {
 
-
 // In how many examples each node occurs: a value seen in three examples
 // is three observations of the style, while one example's six equal
 // windows are one decision, observed once.
@@ -75,9 +75,15 @@ class Unifier {
  public:
   // counts: in how many examples each node occurs (example_counts); a
   // node beyond it counts once.
-  Unifier(Grammar& g, const MergeOptions& o, SampleBook& book, TileCounts& tile_counts,
+  Unifier(Grammar& g, const MergeOptions& o, SampleBook& book, RowBook& rows, TileCounts& tile_counts,
           const std::vector<double>& counts)
-      : g_(g), opt_(o), book_(book), tile_counts_(tile_counts), counts_(counts), group_of_(g.node_count(), kNoGroup) {}
+      : g_(g),
+        opt_(o),
+        book_(book),
+        rows_(rows),
+        tile_counts_(tile_counts),
+        counts_(counts),
+        group_of_(g.node_count(), kNoGroup) {}
 
   NodeId run(NodeId root) {
     tile_lengths_ = TileLengths(g_, root);
@@ -116,8 +122,13 @@ class Unifier {
     // The values behind each range, and whether every member's are known.
     std::vector<std::vector<Observation>> samples;
     std::vector<bool> sampled;
-    // Members whose sizes are all literals: their lengths, one row each.
+    // The members' lengths, one row per split of the examples they stand
+    // for (a member with literal sizes is one; one built in an earlier
+    // round brings its rows), with the times the examples use each, and
+    // whether every member's are known.
     std::vector<std::vector<double>> lengths;
+    std::vector<double> row_weights;
+    bool rows_complete = true;
     std::size_t members = 0;
     // Repeats: the tile counts the members made where folded, and whether
     // every member's are known.
@@ -273,7 +284,17 @@ class Unifier {
       }
       if (r->lo == r->hi) row.push_back(r->lo);
     }
-    if (row.size() == sizes.size()) group.lengths.push_back(std::move(row));
+    if (row.size() == sizes.size()) {
+      group.lengths.push_back(std::move(row));
+      group.row_weights.push_back(id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0);
+    } else if (const auto rows = rows_.find(id); rows != rows_.end()) {
+      for (const LengthRow& r : rows->second) {
+        group.lengths.push_back(r.lengths);
+        group.row_weights.push_back(r.weight);
+      }
+    } else {
+      group.rows_complete = false;
+    }
   }
 
   // Everything that must agree for two nodes to be one, sizes and children
@@ -331,10 +352,12 @@ class Unifier {
       if (group.sampled[i]) kept[i] = group.samples[i];
       return range_expr(group.ranges[i], opt_.tolerance);
     };
+    bool planned = false;
     if (auto* s = std::get_if<Split>(&op)) {
       // Splits of different lengths: parts of one length are absolute.
       std::optional<std::vector<PartPlan>> plan;
-      if (group.lengths.size() == group.members) plan = plan_sizes(group.lengths, opt_.tolerance);
+      planned = group.rows_complete && group.lengths.size() >= 2;
+      if (planned) plan = plan_sizes(group.lengths, opt_.tolerance);
       for (std::size_t i = 0; i < s->parts.size() && i < group.ranges.size(); ++i) {
         if (!literal_range(s->parts[i].size.value)) continue;
         if (plan && (*plan)[i].fixed) {
@@ -347,6 +370,11 @@ class Unifier {
       r->size = ranged(0);
     }
     const NodeId out = g_.intern({std::move(op), {}});
+    if (planned) {
+      std::vector<LengthRow>& rows = rows_[out];
+      rows.clear();
+      for (std::size_t m = 0; m < group.lengths.size(); ++m) rows.push_back({group.lengths[m], group.row_weights[m]});
+    }
     if (std::holds_alternative<Repeat>(g_.op(out)) && group.counted && !group.tile_counts.empty())
       tile_counts_[out] = group.tile_counts;
     // The group's samples already hold its members' (a member built in an
@@ -361,6 +389,7 @@ class Unifier {
   const MergeOptions& opt_;
   TileLengths tile_lengths_;
   SampleBook& book_;
+  RowBook& rows_;
   TileCounts& tile_counts_;            // by repeat node: the tile counts it made where folded
   const std::vector<double>& counts_;  // by node id: examples it occurs in
   std::vector<Group> groups_;
@@ -636,6 +665,39 @@ void carry_notes(const std::vector<std::pair<NodeId, NodeId>>& rebuilt, SampleBo
   }
 }
 
+namespace {
+
+// A frame's members joined into one split: its rows are all of theirs, if
+// every member's are known.
+void join_rows(const std::vector<std::pair<NodeId, NodeId>>& joined, RowBook& rows) {
+  std::unordered_map<NodeId, bool> complete;
+  for (const auto& [member, split] : joined) {
+    auto [it, fresh] = complete.try_emplace(split, true);
+    if (fresh) rows.erase(split);
+    const auto known = rows.find(member);
+    if (!it->second || known == rows.end()) {
+      it->second = false;
+      continue;
+    }
+    std::vector<LengthRow> copy = known->second;  // a copy: inserting below may move it
+    std::vector<LengthRow>& into = rows[split];
+    into.insert(into.end(), copy.begin(), copy.end());
+  }
+  for (const auto& [split, whole] : complete)
+    if (!whole) rows.erase(split);
+}
+
+void carry_rows(const std::vector<std::pair<NodeId, NodeId>>& rebuilt, RowBook& rows) {
+  for (const auto& [old, now] : rebuilt) {
+    if (const auto it = rows.find(old); it != rows.end() && !rows.count(now)) {
+      std::vector<LengthRow> copy = it->second;  // a copy: inserting below may move it
+      rows.emplace(now, std::move(copy));
+    }
+  }
+}
+
+}  // namespace
+
 NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeOptions& options) {
   std::vector<NodeId> folded;
   const UnlikeTiles unlike = roots.size() > 1 ? UnlikeTiles::Fold : UnlikeTiles::Keep;
@@ -652,29 +714,33 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   // fillings different shapes (a | a | b is a repeat and a part, a | b | a
   // is three parts). Only runs that fill a whole split are folded first.
   SampleBook book;
+  RowBook rows;
   const std::vector<double> counts = example_counts(g, folded);
-  NodeId merged = Unifier(g, options, book, tile_counts, counts).run(examples);
+  NodeId merged = Unifier(g, options, book, rows, tile_counts, counts).run(examples);
   // Free combinations make parents alike, which unify, which may show more
   // free combinations above: repeat until nothing changes (a few rounds:
   // each round generalises at least one frame, and frames only merge).
   // Rows of one kind sharing their tiles' choices works the same way.
   for (int round = 0; round < 16; ++round) {
     bool changed = false;
-    std::vector<std::pair<NodeId, NodeId>> rebuilt;
-    merged = generalise_free_parts(g, merged, options, changed, &rebuilt);
+    std::vector<std::pair<NodeId, NodeId>> rebuilt, joined;
+    merged = generalise_free_parts(g, merged, options, changed, &rebuilt, &joined);
+    join_rows(joined, rows);
     carry_notes(rebuilt, book, tile_counts);
     const TileChoiceUnion united = unite_tile_choices(g, merged);
     carry_notes(united.replaced, book, tile_counts);
     merged = united.root;
     if (!changed && united.replaced.empty()) break;
-    merged = Unifier(g, options, book, tile_counts, counts).run(merged);
+    carry_rows(rebuilt, rows);
+    carry_rows(united.replaced, rows);
+    merged = Unifier(g, options, book, rows, tile_counts, counts).run(merged);
   }
   // Towers of every tier count become one recursive rule, so their
   // frames unify again.
   const SelfNesting nesting = fold_self_nesting(g, merged, book, options.tolerance);
   if (nesting.rules > 0) {
     carry_notes(nesting.rebuilt, book, tile_counts);
-    merged = Unifier(g, options, book, tile_counts, counts).run(nesting.root);
+    merged = Unifier(g, options, book, rows, tile_counts, counts).run(nesting.root);
   }
   // The recursive rules' bodies are reached through calls, not children:
   // each step below runs on them as on the root.
@@ -682,6 +748,11 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
     merged = step(merged);
     for (Rule& rule : g.rules) rule.body = step(rule.body);
   };
+  // Sizes that vary, in metres where they keep their length better than
+  // their share, and relative parts in fixed ratios where they keep them:
+  // decided once the structure is settled, so that no unification above
+  // is kept apart by it.
+  everywhere([&](NodeId n) { return draw_sizes(g, n, rows, book, options.tolerance); });
   everywhere([&](NodeId n) { return settle_repeats(g, n, tile_counts, book, options.tolerance); });
   Fitter fitter(g, options, book);
   everywhere([&](NodeId n) { return fitter.run(n); });

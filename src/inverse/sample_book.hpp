@@ -16,4 +16,15 @@ namespace vern {
 // An empty list means unknown: the range joined values that were not kept.
 using SampleBook = std::unordered_map<NodeId, std::vector<std::vector<Observation>>>;
 
+// The lengths behind a split built from several: one row per split of the
+// examples it stands for (its parts' lengths in metres, with the times the
+// examples use it), kept across rounds of unification so that sizes can
+// be planned from the examples' own lengths however often the split was
+// unified again (size_plan.hpp, drawn_sizes.hpp).
+struct LengthRow {
+  std::vector<double> lengths;
+  double weight = 1;
+};
+using RowBook = std::unordered_map<NodeId, std::vector<LengthRow>>;
+
 }  // namespace vern

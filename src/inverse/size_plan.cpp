@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vern {
 
@@ -77,6 +78,133 @@ std::optional<std::vector<PartPlan>> plan_sizes(const std::vector<std::vector<do
       if (std::abs(at - expected) > tolerance) return std::nullopt;
     }
   }
+  return plan;
+}
+
+namespace {
+
+// Do the sizes give every row its own cuts, within the tolerance? Absolute
+// drawn parts take the row's own length; relative parts share the rest by
+// their weights (fixed, or the row's own drawn weight).
+bool cuts_hold(const std::vector<std::vector<double>>& lengths, const std::vector<PartSizes>& plan, double tolerance) {
+  for (std::size_t m = 0; m < lengths.size(); ++m) {
+    const auto& row = lengths[m];
+    auto size_of = [&](std::size_t i) { return plan[i].fixed ? plan[i].value : plan[i].values[m]; };
+    double total = 0, absolute = 0, weights = 0;
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      total += row[i];
+      if (plan[i].absolute) absolute += size_of(i);
+      else weights += size_of(i);
+    }
+    if (!(weights > 0)) return false;
+    double at = 0, expected = 0;
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      expected += row[i];
+      at += plan[i].absolute ? size_of(i) : size_of(i) / weights * (total - absolute);
+      if (std::abs(at - expected) > tolerance) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::vector<double>>& lengths,
+                                                       double tolerance) {
+  if (lengths.size() < 2) return std::nullopt;
+  const std::size_t parts = lengths[0].size(), rows = lengths.size();
+  for (const auto& row : lengths)
+    if (row.size() != parts) return std::nullopt;
+  std::vector<PartSizes> plan(parts);
+  const auto base = plan_sizes(lengths, tolerance);
+  std::vector<double> totals(rows, 0.0);
+  for (std::size_t m = 0; m < rows; ++m)
+    for (double l : lengths[m]) totals[m] += l;
+  const std::size_t widest = static_cast<std::size_t>(std::max_element(totals.begin(), totals.end()) - totals.begin());
+  auto column = [&](std::size_t i) {
+    std::vector<double> c(rows);
+    for (std::size_t m = 0; m < rows; ++m) c[m] = lengths[m][i];
+    return c;
+  };
+  if (base) {
+    bool all_fixed = true;
+    for (std::size_t i = 0; i < parts; ++i) {
+      plan[i].absolute = (*base)[i].absolute && (*base)[i].fixed;
+      plan[i].fixed = plan[i].absolute;
+      plan[i].value = plan[i].absolute ? (*base)[i].value : 0.0;
+      all_fixed = all_fixed && (*base)[i].fixed;
+    }
+    if (all_fixed) return std::nullopt;  // plan_sizes says all there is
+    // Parts drawn in metres: what it costs to say each row's length, to
+    // the tolerance, when it is drawn from the range of lengths seen,
+    // against drawn from the range of shares seen and scaled by the row's
+    // split (the two hypotheses write the same two numbers, so only this
+    // differs: a minimum description length choice).
+    std::vector<std::size_t> drawn;
+    std::vector<double> margin(parts, 0.0);
+    for (std::size_t i = 0; i < parts; ++i) {
+      if (plan[i].absolute) continue;
+      const std::vector<double> metres = column(i);
+      std::vector<double> shares(rows);
+      for (std::size_t m = 0; m < rows; ++m) shares[m] = metres[m] / totals[m];
+      const auto [mlo, mhi] = std::minmax_element(metres.begin(), metres.end());
+      const auto [slo, shi] = std::minmax_element(shares.begin(), shares.end());
+      double in_metres = 0, as_shares = 0;
+      for (std::size_t m = 0; m < rows; ++m) {
+        in_metres += std::log(std::max(*mhi - *mlo, tolerance));
+        as_shares += std::log(std::max((*shi - *slo) * totals[m], tolerance));
+      }
+      if (in_metres < as_shares) {
+        drawn.push_back(i);
+        margin[i] = in_metres - as_shares;
+      }
+    }
+    std::size_t relative = 0;
+    for (std::size_t i = 0; i < parts; ++i) relative += plan[i].absolute ? 0 : 1;
+    if (!drawn.empty() && drawn.size() == relative) {
+      // One part must stay relative: the one least like a length of its own.
+      const auto keep = std::max_element(drawn.begin(), drawn.end(),
+                                         [&](std::size_t a, std::size_t b) { return margin[a] < margin[b]; });
+      drawn.erase(keep);
+    }
+    for (std::size_t i : drawn) {
+      plan[i].absolute = true;
+      plan[i].values = column(i);
+    }
+  }
+  // The relative parts share what the absolute ones leave: in the same
+  // ratios in every row, they are those ratios (the widest member's
+  // lengths); else each row's own lengths, as weights (joint_sizes then
+  // draws shares that vary in one way once).
+  std::vector<std::size_t> relative;
+  for (std::size_t i = 0; i < parts; ++i)
+    if (!plan[i].absolute) relative.push_back(i);
+  if (relative.empty()) return std::nullopt;
+  auto relative_total = [&](std::size_t m) {
+    double t = 0;
+    for (std::size_t i : relative) t += lengths[m][i];
+    return t;
+  };
+  bool ratios_fixed = relative_total(widest) > tolerance;
+  for (std::size_t i : relative) {
+    const double share = lengths[widest][i] / relative_total(widest);
+    for (std::size_t m = 0; m < rows && ratios_fixed; ++m)
+      ratios_fixed = std::abs(share * relative_total(m) - lengths[m][i]) <= tolerance;
+  }
+  bool varies = false;
+  for (std::size_t i = 0; i < parts; ++i) {
+    if (plan[i].absolute) {
+      varies = varies || !plan[i].fixed;
+    } else if (ratios_fixed) {
+      plan[i].fixed = true;
+      plan[i].value = lengths[widest][i];
+    } else {
+      plan[i].values = column(i);
+    }
+  }
+
+  if (!varies) return std::nullopt;
+  if (!cuts_hold(lengths, plan, tolerance)) return std::nullopt;
   return plan;
 }
 

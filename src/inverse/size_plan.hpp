@@ -33,4 +33,32 @@ struct PartPlan {
 
 std::optional<std::vector<PartPlan>> plan_sizes(const std::vector<std::vector<double>>& lengths, double tolerance);
 
+// A part's size as the grammar writes it: fixed at value, or drawn, each
+// row needing its own value (metres for an absolute part, a weight beside
+// the other relative parts' for a relative one).
+struct PartSizes {
+  bool absolute = false;
+  bool fixed = false;
+  double value = 0;
+  std::vector<double> values;  // per row, when not fixed
+};
+
+// Splits whose sizes vary, with as few draws as the rows need (issue 15).
+// plan_sizes's absolute and fixed parts first; then, of the parts that
+// vary:
+//   - a part whose rows' lengths cost less to say drawn from the range of
+//     lengths seen than drawn from the range of shares seen (scaled by
+//     each row's split) is drawn in metres (a courtyard's range depth, 5
+//     to 8 m on plots of 24 to 44 m), as long as one part stays relative
+//     to fill any scope;
+//   - the relative parts only share out what is left: where their
+//     ratios are the same in every row they are fixed at those ratios
+//     (a half's wall and roof, 1 : 0.6, above which air of any height
+//     is drawn in metres); else each row's own lengths are its weights
+//     (joint_sizes draws shares that vary in one way once).
+// Fixed weights are the widest member's lengths. None when nothing varies, or fewer than two rows; a plan is kept
+// only if every row's cuts come out within the tolerance.
+std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::vector<double>>& lengths,
+                                                       double tolerance);
+
 }  // namespace vern

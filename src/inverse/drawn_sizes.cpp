@@ -1,0 +1,52 @@
+#include "inverse/drawn_sizes.hpp"
+
+#include <algorithm>
+#include <unordered_set>
+
+#include "inverse/merge.hpp"
+#include "inverse/size_plan.hpp"
+#include "inverse/substitute.hpp"
+
+namespace vern {
+
+NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book, double tolerance) {
+  std::vector<NodeId> replace;
+  std::unordered_set<NodeId> seen;
+  std::vector<NodeId> stack{root};
+  bool any = false;
+  while (!stack.empty()) {
+    const NodeId id = stack.back();
+    stack.pop_back();
+    if (!seen.insert(id).second) continue;
+    for_each_child(g.op(id), [&](NodeId c) { stack.push_back(c); });
+    const auto* split = std::get_if<Split>(&g.op(id));
+    const auto known = rows.find(id);
+    if (!split || known == rows.end() || known->second.size() < 2) continue;
+    std::vector<std::vector<double>> lengths;
+    for (const LengthRow& r : known->second) lengths.push_back(r.lengths);
+    if (lengths[0].size() != split->parts.size()) continue;
+    const auto plan = plan_drawn_sizes(lengths, tolerance);
+    if (!plan) continue;
+    Split drawn = *split;
+    std::vector<std::vector<Observation>> values(drawn.parts.size());
+    for (std::size_t i = 0; i < drawn.parts.size(); ++i) {
+      const PartSizes& p = (*plan)[i];
+      if (p.fixed) {
+        drawn.parts[i].size = {Expr::number(p.value), !p.absolute};
+        continue;
+      }
+      const auto [lo, hi] = std::minmax_element(p.values.begin(), p.values.end());
+      drawn.parts[i].size = {range_expr({*lo, *hi}, tolerance), !p.absolute};
+      for (std::size_t m = 0; m < p.values.size(); ++m) values[i].push_back({p.values[m], known->second[m].weight});
+    }
+    const NodeId out = g.intern({std::move(drawn), g.node(id).loc});
+    if (out == id) continue;
+    book[out] = std::move(values);
+    if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
+    replace[id] = out;
+    any = true;
+  }
+  return any ? substitute_until_settled(g, root, replace) : root;
+}
+
+}  // namespace vern

@@ -1,0 +1,25 @@
+// Sizes that vary, in the unit they keep (issue 15): once merging has
+// settled the structure, each split built from several of the examples'
+// splits plans its sizes from their lengths (plan_drawn_sizes,
+// size_plan.hpp): a part whose length spreads less than its share of the
+// split is drawn in metres (a courtyard's ranges 5 to 8 m deep on plots of
+// 24 to 44 m, not a share that grows with the plot), and relative parts
+// that keep one ratio beside such a part keep it as fixed weights (a
+// half's wall and roof under air of any height).
+//
+// Decided after unification, not while it runs: a part turned absolute
+// changes a split's form, and splits of other forms never unify (towers
+// of every tier count would no longer become one recursion).
+#pragma once
+
+#include "graph/grammar.hpp"
+#include "inverse/sample_book.hpp"
+
+namespace vern {
+
+// Rewrites the splits below root that `rows` knows and whose plan changes
+// a size; the drawn sizes' values go into book, for fitting. Returns the
+// new root.
+NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book, double tolerance);
+
+}  // namespace vern
