@@ -1,6 +1,8 @@
 #include "inverse/split_graph.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <optional>
 #include <unordered_map>
 
@@ -34,14 +36,54 @@ class GraphBuilder {
     Split split;
     split.axis = Expr::axis(static_cast<Axis>(t.axis));
     split.parts.reserve(t.children.size());
+    std::vector<double> lengths, canonical;
     for (const SplitTree& c : t.children) {
-      const double length = c.max[t.axis] - c.min[t.axis];
-      split.parts.push_back({Size{Expr::number(length), true}, node(c)});
+      lengths.push_back(c.max[t.axis] - c.min[t.axis]);
+      canonical.push_back(canonical_length(lengths.back()));
     }
+    if (!cuts_stay(lengths, canonical)) canonical = lengths;
+    for (std::size_t i = 0; i < t.children.size(); ++i)
+      split.parts.push_back({Size{Expr::number(canonical[i]), true}, node(t.children[i])});
     return g_.intern(Node{std::move(split), {}});
   }
 
  private:
+  // Lengths that differ by float noise (a coordinate summed in another
+  // order, a modelling tool's single precision) are one length, the first
+  // seen: equal parts must be one node, or a row of equal windows is
+  // neither one repeat nor one rule. Within a sixteenth of the tolerance,
+  // so a run of parts so joined moves no cut by more than the tolerance.
+  double canonical_length(double length) {
+    const double grain = options_.tolerance / 16;
+    if (!(grain > 0) || !std::isfinite(length)) return length;
+    const auto key = static_cast<std::int64_t>(std::llround(length / grain));
+    for (const std::int64_t k : {key, key - 1, key + 1}) {
+      const auto it = lengths_.find(k);
+      if (it != lengths_.end() && std::abs(it->second - length) <= grain) return it->second;
+    }
+    lengths_.emplace(key, length);
+    return length;
+  }
+
+  // Do the canonical lengths, sharing the split's length as relative sizes
+  // do, put every cut within a quarter of the tolerance of the example's?
+  // (Many parts each moved by a little could add up.)
+  bool cuts_stay(const std::vector<double>& lengths, const std::vector<double>& canonical) const {
+    double total = 0, shares = 0;
+    for (std::size_t i = 0; i < lengths.size(); ++i) {
+      total += lengths[i];
+      shares += canonical[i];
+    }
+    if (!(shares > 0)) return false;
+    double at = 0, now = 0;
+    for (std::size_t i = 0; i + 1 < lengths.size(); ++i) {
+      at += lengths[i];
+      now += canonical[i] * total / shares;
+      if (std::abs(now - at) > options_.tolerance / 4) return false;
+    }
+    return true;
+  }
+
   // Every leaf of one label is one node: looked up once per label, not
   // once per part (a city has a million parts and a dozen labels).
   NodeId leaf(std::uint32_t box) {
@@ -118,6 +160,7 @@ class GraphBuilder {
   const std::vector<Orientation>& turns_;  // per box; empty: none turned
   const SplitGraphOptions& options_;
   std::unordered_map<std::string, NodeId> leaves_;  // label -> its primitive node
+  std::unordered_map<std::int64_t, double> lengths_;  // canonical_length, by length / grain
   std::optional<NodeId> nil_;
 };
 
