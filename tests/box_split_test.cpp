@@ -268,6 +268,24 @@ TEST(BoxSplit, ABlockIsCutIntoPlotsBeforeSlicingItUnderATowersUpperStorey) {
   EXPECT_EQ(tower.children[0].box, 1u);
 }
 
+TEST(BoxSplit, APodiumRightAcrossIsCutOffBeforeAColumnOfItsBays) {
+  // A podium of shop bays (a pier, a window, ...) under a tower set back
+  // on every side: a cut along x after the first pier crosses nothing, but
+  // it would make a column of one pier under air. The podium, a slab
+  // right across, is cut off first, and the tower above on its own.
+  std::vector<LabelledBox> boxes;
+  for (int i = 0; i < 4; ++i) {
+    boxes.push_back(part("rect", {5.0 * i, 0, 0}, {5.0 * i + 0.5, 10, 4.5}));
+    boxes.push_back(part("window", {5.0 * i + 0.5, 0, 0}, {5.0 * i + 5, 10, 4.5}));
+  }
+  boxes.push_back(part("rect", {3, 3, 4.5}, {17, 7, 30}));
+  const SplitTree t = split(test::numbered(boxes));
+  ASSERT_TRUE(cut_along(t, 2, 2));
+  EXPECT_EQ(leaves(t.children[0]).size(), 8u);
+  // Where the bays below fill no slab, the plots come first, as before
+  // (ABlockIsCutIntoPlotsBeforeSlicingItUnderATowersUpperStorey).
+}
+
 TEST(BoxSplit, AnOnlyCutThatPeelsAirOffIsStillMade) {
   // A box under air along z, with nothing beside it: z is the only cut.
   const SplitTree t = split({part("rect", {0, 0, 0}, {2, 2, 1}, 0), part("rect", {0, 2, 0}, {2, 4, 3}, 1)});

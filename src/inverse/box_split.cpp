@@ -333,6 +333,10 @@ class Splitter {
       if (w.lo[static_cast<std::size_t>(a)] == w.hi[static_cast<std::size_t>(a)]) continue;  // flat along a
       if (!find_pieces(w, a)) continue;
       if (pieces_.size() > 1) {
+        if (a != 2 && slab_first(w, a)) {
+          cut_along(w, 2);
+          return;
+        }
         if (a != 2 && !interior_gap() && cut_at_gaps_across(w, i)) return;
         if (a == 2 && narrowing_stack(w)) {
           cut_along(w, a, Peel::Upper);
@@ -349,6 +353,50 @@ class Splitter {
       return;
     }
     unsplittable(w);
+  }
+
+  // How much of each piece of the last sweep along a its boxes fill, as a
+  // share of the piece's volume (of its area, in a container flat on an
+  // axis).
+  void piece_fill(const Work& w, int a, std::vector<double>& fill) const {
+    const auto ax = static_cast<std::size_t>(a);
+    fill.assign(pieces_.size(), 0.0);
+    const Event* events = events_[ax].data();
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const Event e = events[i];
+      if ((e & 1u) != 0) continue;
+      const LabelledBox& b = boxes_[e >> 1];
+      double v = 1;
+      for (std::size_t k = 0; k < 3; ++k)
+        if (w.hi_val[k] > w.lo_val[k]) v *= b.max[static_cast<glm::length_t>(k)] - b.min[static_cast<glm::length_t>(k)];
+      fill[target_[span_of_[e >> 1]]] += v;
+    }
+    for (std::size_t p = 0; p < pieces_.size(); ++p) {
+      double v = 1;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double lo = k == ax ? pieces_[p].lo_val : w.lo_val[k], hi = k == ax ? pieces_[p].hi_val : w.hi_val[k];
+        if (w.hi_val[k] > w.lo_val[k]) v *= hi - lo;
+      }
+      fill[p] = v > 0 ? fill[p] / v : 1.0;
+    }
+  }
+
+  // Storeys before plots where the lowest storey is a slab right across
+  // the container (a podium under a set-back tower, a base under a house
+  // and its garage) and the horizontal cut would not divide the container
+  // into whole things: a thin column of the podium with only air above it
+  // is no building. Leaves pieces_ as the sweep along z found them when it
+  // says so, else as the sweep along a found them.
+  bool slab_first(const Work& w, int a) {
+    constexpr double kFull = 1 - 1e-6;
+    piece_fill(w, a, fill_);
+    if (std::all_of(fill_.begin(), fill_.end(), [](double f) { return f >= kFull; })) return false;
+    if (w.hi[2] > w.lo[2] && find_pieces(w, 2) && pieces_.size() > 1) {
+      piece_fill(w, 2, fill_);
+      if (fill_.front() >= kFull) return true;
+    }
+    find_pieces(w, a);
+    return false;
   }
 
   // Is there empty space between two of the pieces find_pieces found?
@@ -744,6 +792,7 @@ class Splitter {
   std::array<std::vector<double>, 3> rank_value_;  // per axis, per rank: its one coordinate, or NaN
   std::vector<Event> scratch_, scratch2_;     // regrouping buffers, as long as an axis's events
   std::vector<std::uint32_t> span_of_;        // per box: its piece in the current sweep
+  std::vector<double> fill_;                  // slab_first's piece fills (reused)
   std::vector<Work> stack_;                   // containers still to cut
   std::vector<std::vector<std::uint32_t>> groups_;  // unsplittable containers' boxes
   // The current sweep's pieces (reused: nothing is allocated per container).
