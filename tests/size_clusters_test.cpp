@@ -34,6 +34,21 @@ TEST(SizeClusters, RailingsWallsAndSlabsSeenOftenAreThreeKinds) {
   EXPECT_EQ(size_clusters(parts), (std::vector<std::size_t>{0, 1, 2, 1, 2}));
 }
 
+TEST(SizeClusters, WingsOfOneShareOnPlotsOfManyWidthsAreOneKind) {
+  // A U plan's wings, a fifth of plots 16 to 36 m wide: 3.2 to 7.2 m, in
+  // two clumps far apart in metres, one share of every plot.
+  std::vector<SizedMember> wings;
+  for (double plot : {16.0, 16.5, 17.0, 17.2, 34.0, 35.0, 35.5, 36.0}) {
+    SizedMember m = member({0.2 * plot, 0.6 * plot, 0.2 * plot});
+    m.total = plot;
+    wings.push_back(m);
+  }
+  EXPECT_EQ(size_clusters(wings), std::vector<std::size_t>(8, 0));
+  // Read as lengths alone (no shares known) they are two kinds.
+  for (SizedMember& m : wings) m.total = 0;
+  EXPECT_EQ(size_clusters(wings), (std::vector<std::size_t>{0, 0, 0, 0, 1, 1, 1, 1}));
+}
+
 TEST(SizeClusters, EveryPartMustAgree) {
   // Alike in the first part, far apart in the second.
   const std::vector<SizedMember> parts = {member({3, 0.2}, 5), member({3.1, 0.21}, 5), member({3.05, 8}, 5)};

@@ -228,9 +228,22 @@ class Unifier {
         for (const Expr* e : sized(g_.op(id))) m.sizes.push_back(literal_range(*e));
         // Empty space is what the other parts leave: 0.2 m or 1 m of air
         // above a house are not two kinds of house.
-        if (const auto* s = std::get_if<Split>(&g_.op(id)))
-          for (std::size_t i = 0; i < s->parts.size(); ++i)
+        if (const auto* s = std::get_if<Split>(&g_.op(id))) {
+          // Shares of the split: of its relative parts' total, for relative
+          // parts (what the absolute ones leave is what they share).
+          bool literal = true;
+          for (std::size_t i = 0; i < s->parts.size(); ++i) {
+            literal = literal && m.sizes[i] && m.sizes[i]->lo == m.sizes[i]->hi;
+            if (literal && s->parts[i].size.relative) m.total += m.sizes[i]->lo;
+          }
+          if (!literal) m.total = 0;
+          for (std::size_t i = 0; i < s->parts.size(); ++i) {
             if (std::holds_alternative<Nil>(g_.op(s->parts[i].child))) m.sizes[i].reset();
+            // An absolute part is a length, not a share.
+            else if (!s->parts[i].size.relative && m.total > 0) m.total = -1;
+          }
+          if (m.total < 0) m.total = 0;
+        }
         m.weight = id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0;
         sizes.push_back(std::move(m));
       }

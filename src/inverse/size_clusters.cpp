@@ -12,13 +12,16 @@ namespace {
 constexpr double kMinGap = 1.25;  // lengths within a quarter are never apart
 constexpr double kChance = 0.1;   // a gap one kind of lengths shows this rarely parts two kinds
 
-// Each member's kind along one sized part.
-std::vector<std::size_t> clusters_of_part(const std::vector<SizedMember>& members, std::size_t part) {
+// Each member's kind along one sized part, its sizes read through `scale`.
+template <class Scale>
+std::vector<std::size_t> clusters_of_part(const std::vector<SizedMember>& members, std::size_t part, Scale scale) {
   std::vector<std::size_t> kind(members.size(), 0);
   std::vector<std::size_t> order;
   double lowest = 0, highest = 0, observations = 0;
+  std::vector<std::optional<Range>> scaled(members.size());
   for (std::size_t m = 0; m < members.size(); ++m) {
-    const auto& r = members[m].sizes[part];
+    if (members[m].sizes[part]) scaled[m] = scale(members[m], *members[m].sizes[part]);
+    const auto& r = scaled[m];
     if (!r || !(r->lo > 0)) continue;
     if (order.empty() || r->lo < lowest) lowest = r->lo;
     if (order.empty() || r->hi > highest) highest = r->hi;
@@ -36,11 +39,11 @@ std::vector<std::size_t> clusters_of_part(const std::vector<SizedMember>& member
   const double share = 1 - std::pow(kChance / (observations - 1), 1 / (observations - 2));
   const double gap = std::max(kMinGap, std::exp(share * std::log(highest / lowest)));
   std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return members[a].sizes[part]->lo < members[b].sizes[part]->lo; });
+                   [&](std::size_t a, std::size_t b) { return scaled[a]->lo < scaled[b]->lo; });
   std::size_t current = 0;
-  double longest = members[order[0]].sizes[part]->hi;
+  double longest = scaled[order[0]]->hi;
   for (std::size_t i = 1; i < order.size(); ++i) {
-    const Range& r = *members[order[i]].sizes[part];
+    const Range& r = *scaled[order[i]];
     if (r.lo > gap * longest) ++current;
     longest = std::max(longest, r.hi);
     kind[order[i]] = current;
@@ -53,8 +56,18 @@ std::vector<std::size_t> clusters_of_part(const std::vector<SizedMember>& member
 std::vector<std::size_t> size_clusters(const std::vector<SizedMember>& members) {
   std::vector<std::vector<std::size_t>> rows(members.size());
   const std::size_t parts = members.empty() ? 0 : members[0].sizes.size();
+  auto kinds_of = [](const std::vector<std::size_t>& k) { return k.empty() ? 0 : *std::max_element(k.begin(), k.end()); };
   for (std::size_t p = 0; p < parts; ++p) {
-    const std::vector<std::size_t> kinds = clusters_of_part(members, p);
+    std::vector<std::size_t> kinds =
+        clusters_of_part(members, p, [](const SizedMember&, const Range& r) -> std::optional<Range> { return r; });
+    const std::vector<std::size_t> by_share =
+        clusters_of_part(members, p, [](const SizedMember& m, const Range& r) -> std::optional<Range> {
+          if (!(m.total > 0)) return std::nullopt;
+          return Range{r.lo / m.total, r.hi / m.total};
+        });
+    if (kinds_of(by_share) < kinds_of(kinds) &&
+        std::all_of(members.begin(), members.end(), [&](const SizedMember& m) { return !m.sizes[p] || m.total > 0; }))
+      kinds = by_share;
     for (std::size_t m = 0; m < members.size(); ++m) rows[m].push_back(kinds[m]);
   }
   std::map<std::vector<std::size_t>, std::size_t> numbered;  // a row of part kinds -> its kind

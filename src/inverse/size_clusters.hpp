@@ -14,8 +14,12 @@
 // for twenty. Ten plots 8 to 20 m wide stay one kind however unevenly
 // they fall; railings, walls and slabs of 0.2, 0.6 and 10 m seen again and
 // again do not. Two lengths alone are one kind: they are their range's
-// ends. Members are one kind where every part agrees; parts holding empty
-// space have no say (merge.cpp): air is what the other parts leave.
+// ends. A split's part is also read as its share of the split: where the
+// shares show fewer kinds than the lengths, they are what the part keeps
+// (a U plan's wings, a fifth of plots 16 to 30 m wide, are one kind of
+// wing however their metres spread). Members are one kind where every part
+// agrees; parts holding empty space have no say (merge.cpp): air is what
+// the other parts leave.
 #pragma once
 
 #include <cstddef>
@@ -29,6 +33,7 @@ namespace vern {
 struct SizedMember {
   std::vector<std::optional<Range>> sizes;  // per sized part; nullopt: not a literal (no say)
   double weight = 1;                        // in how many examples it occurs
+  double total = 0;                         // a split's length (its sizes' sum); 0: no shares
 };
 
 // Each member's kind: 0, 1, ... in order of each kind's first member.
