@@ -56,6 +56,25 @@ TEST(RepeatFolding, AMixedRowIsLeftForMerging) {
   EXPECT_EQ(folded(text), flat(write_grammar(parse_grammar(text))));
 }
 
+TEST(RepeatFolding, ARowOfCompoundTilesAroundAnEntranceIsRunsAndTheEntrance) {
+  // Shop bays (pier, window, pier) 4 m wide, the entrance bay (wall,
+  // door, wall), then bays 3.4 m wide: each run of equal bays a repeat of
+  // the bay, the entrance one group between them.
+  const std::string bay4 = "~0.5 : I(rect) | ~3 : I(window) | ~0.5 : I(rect)";
+  const std::string bay34 = "~0.5 : I(rect) | ~2.4 : I(window) | ~0.5 : I(rect)";
+  const std::string out = folded("a --> split(x){ " + bay4 + " | ~1.2 : I(rect) | ~1.6 : I(door) | ~1.2 : I(rect) | " +
+                                 bay34 + " | " + bay34 + " | " + bay34 + " }\n");
+  EXPECT_NE(out.find("a --> split(x){ ~4 : repeat(x, 4.02){ split(x){ ~0.5 : I(rect) | ~3 : I(window) | ~0.5 : "
+                     "I(rect) } } | ~4 : split(x){ ~1.2 : I(rect) | ~1.6 : I(door) | ~1.2 : I(rect) } | ~10.2 : "
+                     "repeat(x, 3.42){ split(x){ ~0.5 : I(rect) | ~2.4 : I(window) | ~0.5 : I(rect) } } }"),
+            std::string::npos)
+      << out;
+  // A row the pattern covers less than half of stays as it is.
+  const std::string mixed = "a --> split(x){ ~1 : I(rect) | ~2 : I(window) | ~1 : I(rect) | ~2 : I(window) | "
+                            "~1 : I(door) | ~1 : I(wall) | ~1 : I(roof) | ~3 : I(rect) | ~1 : I(door) }\n";
+  EXPECT_EQ(folded(mixed).find("repeat"), std::string::npos) << folded(mixed);
+}
+
 TEST(RepeatFolding, NoiseWithinTheToleranceFoldsAndTheResultDerivesTheSameCuts) {
   const std::string text =
       "a --> split(x){ ~2.0000001 : I(w) | ~1.9999999 : I(w) | ~2.0000002 : I(w) | ~1.9999998 : I(w) }\n";

@@ -49,6 +49,20 @@ TEST(SizeClusters, WingsOfOneShareOnPlotsOfManyWidthsAreOneKind) {
   EXPECT_EQ(size_clusters(wings), (std::vector<std::size_t>{0, 0, 0, 0, 1, 1, 1, 1}));
 }
 
+TEST(SizeClusters, TwoLengthsSeenAgainAndAgainStayTwoKindsWhateverTheirShares) {
+  // Shop windows always 2.8 m in a 4.2 m ground floor, upper windows
+  // always 1.4 m in storeys of 2 to 3 m: their shares overlap (0.67 and
+  // 0.47 to 0.7), their lengths are two kinds.
+  std::vector<SizedMember> windows;
+  for (double storey : {2.0, 2.3, 2.6, 2.9, 4.2, 4.2, 4.2, 4.2}) {
+    const double window = storey == 4.2 ? 2.8 : 1.4;
+    SizedMember m = member({window});
+    m.total = storey;
+    windows.push_back(m);
+  }
+  EXPECT_EQ(size_clusters(windows), (std::vector<std::size_t>{0, 0, 0, 0, 1, 1, 1, 1}));
+}
+
 TEST(SizeClusters, EveryPartMustAgree) {
   // Alike in the first part, far apart in the second.
   const std::vector<SizedMember> parts = {member({3, 0.2}, 5), member({3.1, 0.21}, 5), member({3.05, 8}, 5)};

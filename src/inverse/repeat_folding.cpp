@@ -106,6 +106,89 @@ class Folder {
     return repeat_part(axis, total, r.copies, body, parts[r.start].size.relative);
   }
 
+  // A row of compound tiles (a pattern of two parts or more, seen twice
+  // in a row somewhere) among other parts: the pattern's occurrences (the
+  // same parts, of any sizes) cover at least half the row, and the rest
+  // lies in stretches between them. Each run of equal occurrences (one
+  // copy too: another example may show two) becomes a repeat of the
+  // pattern, and each stretch of two parts or more one group, a split of
+  // its own (the entrance bay between the shop bays; merging's simplifier
+  // may write it in place again). So rows with the entrance after one, two or no bays are one
+  // structure but for where the runs are, and each bay one node, not a
+  // long split per example (issue 15, "compound tiles"). False, leaving
+  // parts as they were, when there is no such row or a repeat would move
+  // a cut by more than the tolerance.
+  bool segment_row(const Expr& axis, std::vector<SplitPart>& parts) {
+    const auto r = best_run(parts);
+    if (!r || r->period < 2) return false;
+    // An occurrence has the pattern's children and kinds of size; its
+    // sizes may differ (a bay 4 m wide before the entrance, 3.4 m after).
+    // A run is a sequence of occurrences equal to each other.
+    auto occurs_at = [&](std::size_t i) {
+      if (i + r->period > parts.size()) return false;
+      for (std::size_t j = 0; j < r->period; ++j) {
+        const SplitPart& a = parts[r->start + j];
+        const SplitPart& b = parts[i + j];
+        if (a.size.relative != b.size.relative || !b.size.value.literal() ||
+            !(a.child == b.child || structurally_equal(g_, a.child, g_, b.child)))
+          return false;
+      }
+      return true;
+    };
+    auto equal_copies = [&](std::size_t i, std::size_t k) {
+      for (std::size_t j = 0; j < r->period; ++j)
+        if (!same(parts[i + j], parts[k + j])) return false;
+      return true;
+    };
+    struct Segment {
+      std::size_t from, to, copies;  // copies: 0 for a stretch of other parts
+    };
+    std::vector<Segment> segments;
+    std::size_t covered = 0;
+    for (std::size_t i = 0; i < parts.size();) {
+      if (occurs_at(i)) {
+        if (!segments.empty() && segments.back().copies > 0 && segments.back().to == i &&
+            equal_copies(segments.back().from, i)) {
+          segments.back().to += r->period;
+          ++segments.back().copies;
+        } else {
+          segments.push_back({i, i + r->period, 1});
+        }
+        covered += r->period;
+        i += r->period;
+      } else {
+        if (!segments.empty() && segments.back().copies == 0) ++segments.back().to;
+        else segments.push_back({i, i + 1, 0});
+        ++i;
+      }
+    }
+    if (2 * covered < parts.size() || segments.size() < 2) return false;
+    std::vector<SplitPart> out;
+    for (const Segment& seg : segments) {
+      if (seg.copies > 0) {
+        const auto folded = fold(axis, parts, Run{seg.from, r->period, seg.copies});
+        if (!folded) return false;
+        out.push_back(*folded);
+      } else if (seg.to - seg.from == 1) {
+        out.push_back(parts[seg.from]);
+      } else {
+        double length = 0;
+        bool relative = true;
+        for (std::size_t j = seg.from; j < seg.to; ++j) {
+          length += *parts[j].size.value.literal();
+          relative = relative && parts[j].size.relative;
+        }
+        if (!relative) return false;
+        SplitPart grouped;
+        grouped.child = group(axis, parts, seg.from, seg.to);
+        grouped.size = Size{Expr::number(length), true};
+        out.push_back(std::move(grouped));
+      }
+    }
+    parts = std::move(out);
+    return true;
+  }
+
   // The parts [from, to) as one split of relative sizes (their lengths).
   NodeId group(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from, std::size_t to) {
     Split s{axis, {}};
@@ -269,6 +352,13 @@ class Folder {
           replace(r->start, r->start + r->parts(), *part);
           folded = true;
         }
+      }
+      // Else a row of compound tiles with other parts among them (a shop
+      // front of bays with the entrance bay after some of them): each run
+      // of the tiles a repeat, each stretch between runs one group.
+      if (!folded && segment_row(s.axis, parts)) {
+        folded = true;
+        changed = true;
       }
       // Else equal tiles of unlike contents, over the whole split or all
       // but one or two end parts (the most parts first).

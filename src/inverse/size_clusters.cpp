@@ -51,23 +51,57 @@ std::vector<std::size_t> clusters_of_part(const std::vector<SizedMember>& member
   return kind;
 }
 
+// What it costs to say the members' sizes along one part, read through
+// `scale` and parted into `kinds`: each kind's range (two numbers), which
+// kind each member is, and each member's size within its kind's range, all
+// to a thousandth of the size. Two readings of one part (its metres, its
+// shares) are compared by it: a railing and a slab, each one length seen
+// again and again, are two kinds in metres however their shares spread;
+// wings of one share on plots of many widths are one kind of share however
+// their metres clump.
+template <class Scale>
+double reading_cost(const std::vector<SizedMember>& members, std::size_t part, const std::vector<std::size_t>& kinds,
+                    Scale scale) {
+  constexpr double kPrecision = 1e-3;
+  std::map<std::size_t, Range> range;
+  std::map<std::size_t, double> weight;
+  double total = 0;
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    if (!members[m].sizes[part]) continue;
+    const auto r = scale(members[m], *members[m].sizes[part]);
+    if (!r) continue;
+    auto [it, fresh] = range.try_emplace(kinds[m], *r);
+    if (!fresh) it->second = Range{std::min(it->second.lo, r->lo), std::max(it->second.hi, r->hi)};
+    weight[kinds[m]] += members[m].weight;
+    total += members[m].weight;
+  }
+  double cost = 2 * std::log(1 / kPrecision) * static_cast<double>(range.size());
+  for (const auto& [kind, r] : range) {
+    const double mid = (r.lo + r.hi) / 2;
+    const double width = mid > 0 ? (r.hi - r.lo) / mid : 0.0;
+    cost += weight[kind] * (std::log(std::max(width, kPrecision) / kPrecision) - std::log(weight[kind] / total));
+  }
+  return cost;
+}
+
 }  // namespace
 
 std::vector<std::size_t> size_clusters(const std::vector<SizedMember>& members) {
   std::vector<std::vector<std::size_t>> rows(members.size());
   const std::size_t parts = members.empty() ? 0 : members[0].sizes.size();
-  auto kinds_of = [](const std::vector<std::size_t>& k) { return k.empty() ? 0 : *std::max_element(k.begin(), k.end()); };
+  const auto metres = [](const SizedMember&, const Range& r) -> std::optional<Range> { return r; };
+  const auto shares = [](const SizedMember& m, const Range& r) -> std::optional<Range> {
+    if (!(m.total > 0)) return std::nullopt;
+    return Range{r.lo / m.total, r.hi / m.total};
+  };
   for (std::size_t p = 0; p < parts; ++p) {
-    std::vector<std::size_t> kinds =
-        clusters_of_part(members, p, [](const SizedMember&, const Range& r) -> std::optional<Range> { return r; });
-    const std::vector<std::size_t> by_share =
-        clusters_of_part(members, p, [](const SizedMember& m, const Range& r) -> std::optional<Range> {
-          if (!(m.total > 0)) return std::nullopt;
-          return Range{r.lo / m.total, r.hi / m.total};
-        });
-    if (kinds_of(by_share) < kinds_of(kinds) &&
-        std::all_of(members.begin(), members.end(), [&](const SizedMember& m) { return !m.sizes[p] || m.total > 0; }))
-      kinds = by_share;
+    std::vector<std::size_t> kinds = clusters_of_part(members, p, metres);
+    const bool all_shares =
+        std::all_of(members.begin(), members.end(), [&](const SizedMember& m) { return !m.sizes[p] || m.total > 0; });
+    if (all_shares) {
+      const std::vector<std::size_t> by_share = clusters_of_part(members, p, shares);
+      if (reading_cost(members, p, by_share, shares) < reading_cost(members, p, kinds, metres)) kinds = by_share;
+    }
     for (std::size_t m = 0; m < members.size(); ++m) rows[m].push_back(kinds[m]);
   }
   std::map<std::vector<std::size_t>, std::size_t> numbered;  // a row of part kinds -> its kind

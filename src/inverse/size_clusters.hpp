@@ -14,10 +14,13 @@
 // for twenty. Ten plots 8 to 20 m wide stay one kind however unevenly
 // they fall; railings, walls and slabs of 0.2, 0.6 and 10 m seen again and
 // again do not. Two lengths alone are one kind: they are their range's
-// ends. A split's part is also read as its share of the split: where the
-// shares show fewer kinds than the lengths, they are what the part keeps
-// (a U plan's wings, a fifth of plots 16 to 30 m wide, are one kind of
-// wing however their metres spread). Members are one kind where every part
+// ends. A split's part is also read as its share of the split, parted
+// into kinds the same way: where saying the shares costs less than saying
+// the metres (each kind's range, which kind each member is, and each size
+// within its kind's range, to a thousandth), the shares decide (a U
+// plan's wings, a fifth of plots 16 to 30 m wide, are one kind of wing
+// however their metres clump; a shop window always 2.8 m and an upper
+// window always 1.4 m stay two kinds however their shares overlap). Members are one kind where every part
 // agrees; parts holding empty space have no say (merge.cpp): air is what
 // the other parts leave.
 #pragma once
