@@ -10,6 +10,7 @@
 
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"
+#include "forward/random_grammar.hpp"
 #include "graph/parser.hpp"
 #include "inverse/evaluation.hpp"
 #include "inverse/precision_recall.hpp"
@@ -34,6 +35,8 @@ CommandLine make_command_line() {
   cl.add({"--precision-recall", "", 0, "", "instead: precision and recall against the source, per example count"});
   cl.add({"--counts", "", 1, "N,N,...", "with --precision-recall: example counts (default 3,10,30)"});
   cl.add({"--samples", "", 1, "S", "with --precision-recall: variants and fresh samples judged (default 40)"});
+  cl.add({"--random", "", 1, "N", "with --precision-recall: also N random grammars (seeds 1..N, plots within 30 %)"});
+  cl.add({"--random-rules", "", 1, "R", "rules per random grammar (default 8)"});
   cl.add_standard_options();
   cl.set_epilog(
       "columns:\n"
@@ -56,7 +59,8 @@ CommandLine make_command_line() {
       "\n"
       "examples:\n"
       "  evaluate data/grammars/*.grm -k 10 -n 100\n"
-      "  evaluate data/styles/*.grm --precision-recall --counts 3,10,30\n");
+      "  evaluate data/styles/*.grm --precision-recall --counts 3,10,30\n"
+      "  evaluate --precision-recall --random 20 --counts 10,30\n");
   return cl;
 }
 
@@ -108,11 +112,26 @@ int run_precision_recall(const ParsedCommandLine& args, unsigned threads, bool q
 
   std::cout << "| grammar | N | rules | lines | self | reproduced | precision | wider | recall | invalid |\n"
                "|---|---|---|---|---|---|---|---|---|---|\n";
+  // The grammars named, then the random ones (random_grammar.hpp).
+  std::vector<std::pair<std::string, Grammar>> sources;
+  for (const std::string& file : args.positional) sources.emplace_back(fs::path(file).stem().string(), read_grammar_file(file));
+  if (args.has("--random")) {
+    GrammarOptions random;
+    random.varied_plots = true;
+    if (args.has("--random-rules"))
+      random.rules = static_cast<std::size_t>(CommandLine::integer(args, "--random-rules", 1, 1000));
+    else
+      random.rules = 8;
+    const auto count = CommandLine::integer(args, "--random", 1, 100000);
+    for (long long seed = 1; seed <= count; ++seed) {
+      random.seed = static_cast<std::uint64_t>(seed);
+      const std::string name = "random_" + std::to_string(seed);
+      sources.emplace_back(name, parse_grammar(random_grammar(random), name));
+    }
+  }
   std::ostringstream notes;
   int failures = 0;
-  for (const std::string& file : args.positional) {
-    const std::string name = fs::path(file).stem().string();
-    const Grammar source = read_grammar_file(file);
+  for (const auto& [name, source] : sources) {
     const auto started = std::chrono::steady_clock::now();
     const Share self = self_recall(source, options);
     if (self.hits != self.total) notes << "- " << name << ": the source does not derive its own " << self.first_miss << "\n";
@@ -171,7 +190,7 @@ int run(int argc, char** argv) {
     std::cout << cl.help();
     return 0;
   }
-  if (args.positional.empty())
+  if (args.positional.empty() && !(args.has("--precision-recall") && args.has("--random")))
     throw Error(ErrorKind::Usage, "evaluate: error: no grammar given\n  hint: evaluate data/grammars/*.grm");
   EvaluationOptions options;
   if (args.has("--examples"))

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "forward/random_grammar.hpp"
 #include "forward/random_stream.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"
@@ -17,7 +18,6 @@ namespace vern {
 
 namespace {
 
-constexpr std::array<const char*, 8> kLabels = {"wall", "window", "door", "floor", "roof", "balcony", "pillar", "glass"};
 
 // A box in whole millimetres: integer cuts give neighbours identical faces.
 struct MmBox {
@@ -110,7 +110,7 @@ class LayoutMaker {
 
   void leaf(const MmBox& box) {
     LabelledBox b;
-    b.label = kLabels[static_cast<std::size_t>(rng_.uniform() * kLabels.size())];
+    b.label = kWorkloadLabels[static_cast<std::size_t>(rng_.uniform() * kWorkloadLabels.size())];
     b.object = b.label + "." + std::to_string(out_.size() + 1);
     for (glm::length_t a = 0; a < 3; ++a) {
       b.min[a] = static_cast<double>(box.lo[static_cast<std::size_t>(a)]) / 1000.0;
@@ -130,71 +130,6 @@ void append_int(std::string& out, std::uint64_t v) {
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
   out.append(buf, r.ptr);
 }
-
-// ---- grammars ----
-
-class GrammarMaker {
- public:
-  explicit GrammarMaker(const GrammarOptions& o) : o_(o), rng_(mix64(o.seed ^ 0x96a3u)) {}
-
-  std::string run() {
-    // Each rule but the first is called from one earlier rule: a random
-    // recursive tree of calls, about ln(rules) deep.
-    const std::size_t n = o_.rules;
-    std::vector<std::vector<std::size_t>> calls(n);
-    for (std::size_t r = 1; r < n; ++r) calls[static_cast<std::size_t>(rng_.uniform() * static_cast<double>(r))].push_back(r);
-
-    std::string out = "# A random grammar: " + std::to_string(n) + " rules, seed " + std::to_string(o_.seed) +
-                      " (vern_bench --make-grammar).\n@start r0\n@scope 40, 30, 60\n\n";
-    for (std::size_t r = 0; r < n; ++r) {
-      const bool alternatives = r > 0 && rng_.uniform() < 0.125;
-      out += rule(r, calls[r], alternatives ? " : 2" : "");
-      if (alternatives) out += rule(r, calls[r], " : 1");
-    }
-    return out;
-  }
-
- private:
-  std::string rule(std::size_t r, const std::vector<std::size_t>& calls, const char* priority) {
-    const int axis = static_cast<int>(rng_.uniform() * 3);
-    std::string body;
-    // A leaf rule sometimes tiles a primitive instead of splitting.
-    if (calls.empty() && rng_.uniform() < 0.3) {
-      body = rng_.uniform() < 0.5 ? "repeat(" + axis_name(axis) + ", " + number(rng_.uniform(1.0, 4.0)) + "){ " + primitive() + " }"
-                                  : "repeatN(" + axis_name(axis) + ", " + std::to_string(2 + static_cast<int>(rng_.uniform() * 5)) +
-                                        "){ " + primitive() + " }";
-    } else {
-      // The calls, and primitives or nil to fill up to a random part count.
-      std::vector<std::string> parts;
-      for (std::size_t c : calls) parts.push_back("r" + std::to_string(c));
-      const auto k = std::max<std::size_t>(parts.size(), 2 + static_cast<std::size_t>(rng_.uniform() * (o_.branching - 1)));
-      while (parts.size() < k) parts.push_back(rng_.uniform() < 0.1 ? "nil" : primitive());
-      // Shuffle so calls are not always first (Fisher-Yates on our stream).
-      for (std::size_t i = parts.size(); i > 1; --i) std::swap(parts[i - 1], parts[static_cast<std::size_t>(rng_.uniform() * static_cast<double>(i))]);
-      body = "split(" + axis_name(axis) + "){ ";
-      for (std::size_t i = 0; i < parts.size(); ++i) body += (i == 0 ? "" : " | ") + size() + " : " + parts[i];
-      body += " }";
-    }
-    return "r" + std::to_string(r) + " --> " + body + priority + "\n";
-  }
-
-  std::string size() {
-    const double u = rng_.uniform();
-    if (u < 0.6) return "~" + number(rng_.uniform(1.0, 3.0));
-    if (u < 0.8) return "~rand(" + number(rng_.uniform(0.5, 1.0)) + ", " + number(rng_.uniform(1.0, 2.0)) + ")";
-    return number(rng_.uniform(0.5, 2.0));  // absolute
-  }
-
-  std::string primitive() { return std::string("I(") + kLabels[static_cast<std::size_t>(rng_.uniform() * kLabels.size())] + ")"; }
-
-  static std::string axis_name(int axis) { return std::string(1, static_cast<char>('x' + axis)); }
-
-  // Two decimals, as a person writes sizes.
-  static std::string number(double v) { return format_number(std::round(v * 100) / 100); }
-
-  const GrammarOptions& o_;
-  RandomStream rng_;
-};
 
 }  // namespace
 
@@ -239,13 +174,6 @@ std::string layout_obj(const std::vector<LabelledBox>& boxes) {
     base += 8;
   }
   return out;
-}
-
-std::string random_grammar(const GrammarOptions& options) {
-  if (options.rules == 0 || options.branching < 2) {
-    fail(ErrorKind::Usage, "--make-grammar", {}, "grammar options out of range", "give at least 1 rule and --branching >= 2");
-  }
-  return GrammarMaker(options).run();
 }
 
 bool is_workload_command(const char* arg) {

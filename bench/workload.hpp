@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "forward/random_grammar.hpp"
 #include "inverse/example.hpp"
 
 namespace vern {
@@ -44,18 +45,6 @@ std::vector<LabelledBox> random_layout(const LayoutOptions& options);
 // facing outwards, as the OBJ writer writes a box primitive (without
 // normals and texture coordinates).
 std::string layout_obj(const std::vector<LabelledBox>& boxes);
-
-// A grammar of `rules` rules that derives without errors: rule i calls only
-// rules after it, and every rule but the start is called once, so a
-// derivation makes a number of terminals proportional to the rule count.
-// Bodies mix split (relative, absolute and random sizes), repeat, repeatN,
-// nil and primitives; about one label in eight has two alternatives.
-struct GrammarOptions {
-  std::size_t rules = 100;  // >= 1
-  int branching = 4;        // parts per split at most (>= 2)
-  std::uint64_t seed = 1;
-};
-std::string random_grammar(const GrammarOptions& options);
 
 // `vern_bench --make-layout ...` / `--make-grammar ...`: writes the file
 // (atomically) and returns the exit code; vern::Error is reported as by the

@@ -94,3 +94,26 @@ TEST(SizePlan, NothingVaryingIsNoDrawnPlan) {
 
 }  // namespace
 }  // namespace vern
+
+namespace vern {
+namespace {
+
+TEST(SizePlan, PartsInOneRatioAmongPartsThatVaryKeepTheirRatio) {
+  // A pillar and a wing of fixed proportions (1.43 : 1.14) beside two bays
+  // whose shares vary: the two keep their ratio, the bays are drawn as
+  // weights beside the pillar.
+  const std::vector<std::vector<double>> lengths = {
+      {1.43, 1.0, 1.14, 0.9}, {2.86, 2.4, 2.28, 2.6}, {1.43, 1.2, 1.14, 1.3}, {2.145, 1.4, 1.71, 1.5}};
+  const auto plan = plan_drawn_sizes(lengths, 1e-9);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_FALSE((*plan)[0].absolute);
+  ASSERT_TRUE((*plan)[0].fixed && (*plan)[2].fixed);
+  EXPECT_NEAR((*plan)[2].value / (*plan)[0].value, 1.14 / 1.43, 1e-12);
+  ASSERT_FALSE((*plan)[1].fixed);
+  // Each row's bay, as a weight beside the pillar's fixed one.
+  for (std::size_t m = 0; m < lengths.size(); ++m)
+    EXPECT_NEAR((*plan)[1].values[m] / (*plan)[0].value, lengths[m][1] / lengths[m][0], 1e-12) << m;
+}
+
+}  // namespace
+}  // namespace vern

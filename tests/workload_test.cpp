@@ -128,5 +128,28 @@ TEST(Workload, RandomGrammarsParseDeriveAndRepeat) {
   }
 }
 
+TEST(Workload, RandomGrammarsOnVariedPlotsDrawTheirPlots) {
+  // The same grammar but for @scope: plots within 30 % of 40 x 30 x 60 m.
+  GrammarOptions o;
+  o.rules = 8;
+  o.seed = 3;
+  const std::string fixed = random_grammar(o);
+  o.varied_plots = true;
+  const Grammar g = parse_grammar(random_grammar(o), "random.grm");
+  EXPECT_EQ(parse_grammar(fixed, "random.grm").rules.size(), g.rules.size());
+  std::set<double> widths;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    DeriveOptions d;
+    d.seed = seed;
+    const Derivation v = derive(g, d);
+    EXPECT_GE(v.start.size.x, 28.0);
+    EXPECT_LE(v.start.size.x, 52.0);
+    EXPECT_GE(v.start.size.z, 42.0);
+    EXPECT_LE(v.start.size.z, 78.0);
+    widths.insert(v.start.size.x);
+  }
+  EXPECT_EQ(widths.size(), 8u);
+}
+
 }  // namespace
 }  // namespace vern

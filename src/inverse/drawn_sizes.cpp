@@ -46,7 +46,12 @@ NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book
     replace[id] = out;
     any = true;
   }
-  return any ? substitute_until_settled(g, root, replace) : root;
+  if (!any) return root;
+  // Splits above a rewritten node are rebuilt: their values go with them.
+  std::vector<std::pair<NodeId, NodeId>> rebuilt;
+  root = substitute_until_settled(g, root, replace, &rebuilt);
+  carry_samples(rebuilt, book);
+  return root;
 }
 
 }  // namespace vern

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "graph/node.hpp"
@@ -15,6 +16,17 @@ namespace vern {
 // the built node, so that a range widened again still knows its values.
 // An empty list means unknown: the range joined values that were not kept.
 using SampleBook = std::unordered_map<NodeId, std::vector<std::vector<Observation>>>;
+
+// Nodes rebuilt with new children keep their sizes: the values behind
+// their ranges carry over from each old node to its new one.
+inline void carry_samples(const std::vector<std::pair<NodeId, NodeId>>& rebuilt, SampleBook& book) {
+  for (const auto& [old, now] : rebuilt) {
+    const auto it = book.find(old);
+    if (it == book.end() || book.count(now)) continue;
+    std::vector<std::vector<Observation>> copy = it->second;  // a copy: inserting below may move it
+    book.emplace(now, std::move(copy));
+  }
+}
 
 // The lengths behind a split built from several: one row per split of the
 // examples it stands for (its parts' lengths in metres, with the times the

@@ -77,7 +77,12 @@ NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, Sa
     replace[id] = out;
     any = true;
   }
-  return any ? substitute_until_settled(g, root, replace) : root;
+  if (!any) return root;
+  // Splits above a rewritten node are rebuilt: their values go with them.
+  std::vector<std::pair<NodeId, NodeId>> rebuilt;
+  root = substitute_until_settled(g, root, replace, &rebuilt);
+  carry_samples(rebuilt, book);
+  return root;
 }
 
 }  // namespace vern

@@ -202,6 +202,51 @@ std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::ve
       plan[i].values = column(i);
     }
   }
+  // Some relative parts in one ratio to each other, others varying (a
+  // pillar and a wing of fixed proportions beside two bays that vary):
+  // the parts in ratio to one of them keep that ratio and the others are
+  // drawn as weights beside it (the widest member's scale). Only where it
+  // fixes a part: two parts that both vary are left as each row's own
+  // lengths, whose shares joint_sizes links as straight lines.
+  if (!ratios_fixed && relative.size() >= 3) {
+    std::size_t best = parts, best_fixed = 0;
+    for (std::size_t ref : relative) {
+      bool usable = true;
+      for (std::size_t m = 0; m < rows && usable; ++m) usable = lengths[m][ref] > tolerance;
+      if (!usable) continue;
+      std::size_t fixed = 0;
+      for (std::size_t i : relative) {
+        if (i == ref) continue;
+        const double ratio = lengths[widest][i] / lengths[widest][ref];
+        bool same = true;
+        for (std::size_t m = 0; m < rows && same; ++m) same = std::abs(ratio * lengths[m][ref] - lengths[m][i]) <= tolerance;
+        fixed += same ? 1 : 0;
+      }
+      if (fixed > best_fixed) {
+        best_fixed = fixed;
+        best = ref;
+      }
+    }
+    if (best != parts && best_fixed + 1 < relative.size()) {
+      for (std::size_t i : relative) {
+        const double ratio = lengths[widest][i] / lengths[widest][best];
+        std::vector<double> w(rows);
+        bool same = true;
+        for (std::size_t m = 0; m < rows; ++m) {
+          w[m] = lengths[m][i] / lengths[m][best] * lengths[widest][best];
+          same = same && std::abs(ratio * lengths[m][best] - lengths[m][i]) <= tolerance;
+        }
+        if (same) {
+          plan[i].fixed = true;
+          plan[i].value = lengths[widest][i];
+          plan[i].values.clear();
+        } else {
+          plan[i].values = std::move(w);
+        }
+      }
+      varies = true;
+    }
+  }
 
   if (!varies) return std::nullopt;
   if (!cuts_hold(lengths, plan, tolerance)) return std::nullopt;

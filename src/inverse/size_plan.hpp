@@ -54,8 +54,10 @@ struct PartSizes {
 //   - the relative parts only share out what is left: where their
 //     ratios are the same in every row they are fixed at those ratios
 //     (a half's wall and roof, 1 : 0.6, above which air of any height
-//     is drawn in metres); else each row's own lengths are its weights
-//     (joint_sizes draws shares that vary in one way once).
+//     is drawn in metres); where some of three or more keep one ratio to
+//     one of them and others vary, those keep it and the others are
+//     drawn as weights beside it; else each row's own lengths are its
+//     weights (joint_sizes draws shares that vary in one way once).
 // Fixed weights are the widest member's lengths. None when nothing varies, or fewer than two rows; a plan is kept
 // only if every row's cuts come out within the tolerance.
 std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::vector<double>>& lengths,

@@ -41,10 +41,11 @@ NodeId substitute(Grammar& g, NodeId root, const std::vector<NodeId>& replace,
   return Substitution(g, replace, rebuilt).run(root);
 }
 
-NodeId substitute_until_settled(Grammar& g, NodeId root, const std::vector<NodeId>& replace) {
+NodeId substitute_until_settled(Grammar& g, NodeId root, const std::vector<NodeId>& replace,
+                                std::vector<std::pair<NodeId, NodeId>>* rebuilt) {
   for (NodeId previous = kNoReplacement; root != previous;) {
     previous = root;
-    root = substitute(g, root, replace);
+    root = substitute(g, root, replace, rebuilt);
   }
   return root;
 }

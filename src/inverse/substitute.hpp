@@ -25,7 +25,8 @@ NodeId substitute(Grammar& g, NodeId root, const std::vector<NodeId>& replace,
 // substitute, pass after pass until the graph stops changing: a pass does
 // not look into a replacement, so where replacements hold nodes that are
 // replaced in turn (a rebuilt choice holding another), the next pass
-// reaches them.
-NodeId substitute_until_settled(Grammar& g, NodeId root, const std::vector<NodeId>& replace);
+// reaches them. rebuilt as for substitute, over all passes.
+NodeId substitute_until_settled(Grammar& g, NodeId root, const std::vector<NodeId>& replace,
+                                std::vector<std::pair<NodeId, NodeId>>* rebuilt = nullptr);
 
 }  // namespace vern
