@@ -106,3 +106,23 @@ TEST(PrecisionRecall, SizesEqualInAFewExamplesAreOneSize) {
 
 }  // namespace
 }  // namespace vern
+
+namespace vern {
+namespace {
+
+TEST(PrecisionRecall, ASizeThatFollowsAnotherFollowsIt) {
+  // A tower 1.5 times its podium plus 6 m: `s1 : podium | 1.5 * s1 + 6 : tower`.
+  EXPECT_GE(precision_of("setback_tower", 10), 0.9);
+}
+
+TEST(PrecisionRecall, APodiumIsCutOffBeforeItsBays) {
+  EXPECT_GE(precision_of("mixed_use", 10), 0.9);
+}
+
+TEST(PrecisionRecall, CompoundBaysAroundADoorBayAreRepeatsOfTheBay) {
+  // Mirrored houses, each a door bay beside a row of window bays.
+  EXPECT_GE(precision_of("semi_detached", 10), 0.9);
+}
+
+}  // namespace
+}  // namespace vern

@@ -87,6 +87,57 @@ std::optional<std::vector<Linear>> share_lines(const std::vector<std::vector<dou
   return out;
 }
 
+// The lengths of one split as lines in one parameter s1, in metres: where
+// the split's own length varies and every part's length is a straight
+// line of the first varying one's (within `tol`), the split's length
+// follows that part (a tower 1.5 times its podium plus 6 m, on plots as
+// high as both): the parts are absolute, the first drawn, the others
+// lines of it. On a plot of another height they keep their lengths, as
+// the source's do, where shares would stretch both. None otherwise.
+std::optional<std::vector<Linear>> metric_lines(const std::vector<std::vector<double>>& lengths, double tol) {
+  const std::size_t k = lengths.front().size();
+  std::vector<double> totals;
+  for (const auto& run : lengths) {
+    double t = 0;
+    for (double l : run) t += l;
+    totals.push_back(t);
+  }
+  const auto [tlo, thi] = std::ranges::minmax(totals);
+  if (thi - tlo <= tol) return std::nullopt;  // one length: shares say as much
+  std::vector<std::vector<double>> column(k);
+  for (const auto& run : lengths)
+    for (std::size_t j = 0; j < k; ++j) column[j].push_back(run[j]);
+  std::vector<Linear> out(k);
+  std::optional<std::size_t> leader;
+  for (std::size_t j = 0; j < k; ++j) {
+    const auto [lo, hi] = std::ranges::minmax(column[j]);
+    if (hi - lo <= tol) {
+      out[j].c0 = shortest_decimal((lo + hi) / 2, tol / 4);
+      continue;
+    }
+    if (!leader) {
+      // Four lengths or more, not three clumps (plots of three sizes put
+      // any two parts on some line through three points only by chance).
+      std::vector<double> sorted = column[j];
+      std::ranges::sort(sorted);
+      std::size_t distinct = 1;
+      for (std::size_t i = 1; i < sorted.size(); ++i) distinct += sorted[i] - sorted[i - 1] > tol ? 1 : 0;
+      if (distinct < 4) return std::nullopt;
+      leader = j;
+      out[j].add(0, 1);
+      continue;
+    }
+    Fit f = line_fit(column[*leader], column[j]);
+    f.worst = worst_miss(column[*leader], column[j], f.a, f.b);
+    if (f.worst > tol / 4) return std::nullopt;
+    const Fit short_fit = short_line(column[*leader], column[j], f, tol / 4);
+    out[j].c0 = short_fit.a;
+    out[j].add(0, short_fit.b);
+  }
+  if (!leader) return std::nullopt;
+  return out;
+}
+
 // The lowest a line reaches for s1 in [lo, hi].
 double lowest(const Linear& f, double lo, double hi) {
   const double b = f.coefficient(0);
@@ -143,12 +194,15 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
       for (double l : run) sum += l;
       for (std::size_t j = 0; j < k; ++j) shares[j].push_back(total * run[j] / sum);
     }
-    const auto lines = share_lines(shares, total, opt.tolerance);
+    // In metres where the split's length follows its parts, else shares.
+    auto lines = metric_lines(s.lengths, opt.tolerance);
+    const bool metric = lines.has_value();
+    if (!metric) lines = share_lines(shares, total, opt.tolerance);
     if (!lines) continue;
     std::vector<Observation> drawn;
-    for (std::size_t j = 0; j + 1 < k; ++j)
+    for (std::size_t j = 0; j < k; ++j)
       if ((*lines)[j].coefficient(0) == 1 && (*lines)[j].c0 == 0 && drawn.empty())
-        for (double v : shares[j]) drawn.push_back({v, 1});
+        for (const auto& run : s.lengths) drawn.push_back({metric ? run[j] : shares[j][&run - s.lengths.data()], 1});
     FitOptions fit;
     fit.resolution = opt.tolerance;
     fit.floor = 0;
@@ -167,7 +221,7 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
     if (!room(lo, hi)) continue;
     Split split = std::get<Split>(g.op(id));
     const std::vector<std::size_t> relative = *drawn_shares(split);
-    for (std::size_t j = 0; j < k; ++j) split.parts[relative[j]].size = Size{linear_expr((*lines)[j]), true};
+    for (std::size_t j = 0; j < k; ++j) split.parts[relative[j]].size = Size{linear_expr((*lines)[j]), !metric};
     const SourceLoc loc = g.node(id).loc;
     const NodeId shared = g.intern({std::move(split), loc});
     RuleId rule;
