@@ -66,11 +66,6 @@ TEST(PrecisionRecall, ScoresDoNotDependOnThreads) {
   EXPECT_EQ(one.precision.first_miss, two.precision.first_miss);
 }
 
-}  // namespace
-}  // namespace vern
-
-namespace vern {
-namespace {
 
 // Each failure class of issue 15, on the style that stresses it: before
 // the fix, precision was 0 (or near it) at the example count given.
@@ -104,11 +99,6 @@ TEST(PrecisionRecall, SizesEqualInAFewExamplesAreOneSize) {
   EXPECT_GE(precision_of("wing_depth", 3), 0.5);
 }
 
-}  // namespace
-}  // namespace vern
-
-namespace vern {
-namespace {
 
 TEST(PrecisionRecall, ASizeThatFollowsAnotherFollowsIt) {
   // A tower 1.5 times its podium plus 6 m: `s1 : podium | 1.5 * s1 + 6 : tower`.

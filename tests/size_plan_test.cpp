@@ -46,11 +46,6 @@ TEST(SizePlan, ProportionalSplitsStayRelative) {
   EXPECT_NEAR((*plan)[1].value, 3.0, 1e-12);
 }
 
-}  // namespace
-}  // namespace vern
-
-namespace vern {
-namespace {
 
 TEST(SizePlan, ALengthKeptInMetresOnPlotsOfAnySizeIsDrawnInMetres) {
   // A courtyard's ranges 5 to 8 m deep on plots of 24 to 44 m: the ranges
@@ -92,11 +87,6 @@ TEST(SizePlan, NothingVaryingIsNoDrawnPlan) {
   EXPECT_FALSE(plan_drawn_sizes({{1, 3, 6}}, 1e-6).has_value());
 }
 
-}  // namespace
-}  // namespace vern
-
-namespace vern {
-namespace {
 
 TEST(SizePlan, PartsInOneRatioAmongPartsThatVaryKeepTheirRatio) {
   // A pillar and a wing of fixed proportions (1.43 : 1.14) beside two bays

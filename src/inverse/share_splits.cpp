@@ -47,43 +47,54 @@ std::optional<std::vector<std::size_t>> drawn_shares(const Split& s) {
   return relative;
 }
 
-// The shares of one split, as lines in one parameter s1 (index 0): the
-// first share that varies is s1, the others constants or straight-line
-// functions of it within `tol` (the two equal insets around a tier: s1
-// and s1), the last the rest. None when two shares vary apart: check()
-// pins down one parameter per split.
-std::optional<std::vector<Linear>> share_lines(const std::vector<std::vector<double>>& shares, double total,
-                                               double tol) {
-  const std::size_t k = shares.size();
-  std::vector<Linear> out(k);
+// Each of columns[0, count) as a constant or a straight line (within
+// `tol`) of the first that varies, s1 (index 0), which may lead only where
+// may_lead(its values) says so. None when nothing varies, or one varies
+// apart from s1: check() pins down one parameter per split.
+template <class MayLead>
+std::optional<std::vector<Linear>> lines_of_first(const std::vector<std::vector<double>>& columns, std::size_t count,
+                                                  double tol, MayLead may_lead) {
+  std::vector<Linear> out(columns.size());
   std::optional<std::size_t> leader;
-  for (std::size_t j = 0; j + 1 < k; ++j) {
-    const auto [lo, hi] = std::ranges::minmax(shares[j]);
+  for (std::size_t j = 0; j < count; ++j) {
+    const auto [lo, hi] = std::ranges::minmax(columns[j]);
     if (hi - lo <= tol) {
       out[j].c0 = shortest_decimal((lo + hi) / 2, tol / 4);
       continue;
     }
     if (!leader) {
+      if (!may_lead(columns[j])) return std::nullopt;
       leader = j;
       out[j].add(0, 1);
       continue;
     }
-    if (!shows_a_line(shares[*leader], tol)) return std::nullopt;
-    Fit f = line_fit(shares[*leader], shares[j]);
-    f.worst = worst_miss(shares[*leader], shares[j], f.a, f.b);
+    if (!shows_a_line(columns[*leader], tol)) return std::nullopt;
+    Fit f = line_fit(columns[*leader], columns[j]);
+    f.worst = worst_miss(columns[*leader], columns[j], f.a, f.b);
     if (f.worst > tol / 4) return std::nullopt;
-    const Fit s = short_line(shares[*leader], shares[j], f, tol / 4);
+    const Fit s = short_line(columns[*leader], columns[j], f, tol / 4);
     out[j].c0 = s.a;
     out[j].add(0, s.b);
   }
-  if (!leader) return std::nullopt;  // nothing varies: no draw to share
-  out[k - 1].c0 = total;
+  if (!leader) return std::nullopt;
+  return out;
+}
+
+// The shares of one split, as lines in one parameter s1: the first share
+// that varies is s1, the others constants or straight-line functions of
+// it (the two equal insets around a tier: s1 and s1), the last the rest.
+std::optional<std::vector<Linear>> share_lines(const std::vector<std::vector<double>>& shares, double total,
+                                               double tol) {
+  const std::size_t k = shares.size();
+  auto out = lines_of_first(shares, k - 1, tol, [](const std::vector<double>&) { return true; });
+  if (!out) return std::nullopt;  // nothing varies: no draw to share
+  (*out)[k - 1].c0 = total;
   for (std::size_t j = 0; j + 1 < k; ++j) {
-    out[k - 1].c0 -= out[j].c0;
-    out[k - 1].add(0, -out[j].coefficient(0));
+    (*out)[k - 1].c0 -= (*out)[j].c0;
+    (*out)[k - 1].add(0, -(*out)[j].coefficient(0));
   }
-  out[k - 1].c0 = shortest_decimal(out[k - 1].c0, tol / 4);
-  for (double& c : out[k - 1].c) c = shortest_decimal(c, 1e-9);  // -1 - 0.69 is not quite -1.69
+  (*out)[k - 1].c0 = shortest_decimal((*out)[k - 1].c0, tol / 4);
+  for (double& c : (*out)[k - 1].c) c = shortest_decimal(c, 1e-9);  // -1 - 0.69 is not quite -1.69
   return out;
 }
 
@@ -97,45 +108,26 @@ std::optional<std::vector<Linear>> share_lines(const std::vector<std::vector<dou
 std::optional<std::vector<Linear>> metric_lines(const std::vector<std::vector<double>>& lengths, double tol) {
   const std::size_t k = lengths.front().size();
   std::vector<double> totals;
+  std::vector<std::vector<double>> column(k);
   for (const auto& run : lengths) {
     double t = 0;
-    for (double l : run) t += l;
+    for (std::size_t j = 0; j < k; ++j) {
+      t += run[j];
+      column[j].push_back(run[j]);
+    }
     totals.push_back(t);
   }
   const auto [tlo, thi] = std::ranges::minmax(totals);
   if (thi - tlo <= tol) return std::nullopt;  // one length: shares say as much
-  std::vector<std::vector<double>> column(k);
-  for (const auto& run : lengths)
-    for (std::size_t j = 0; j < k; ++j) column[j].push_back(run[j]);
-  std::vector<Linear> out(k);
-  std::optional<std::size_t> leader;
-  for (std::size_t j = 0; j < k; ++j) {
-    const auto [lo, hi] = std::ranges::minmax(column[j]);
-    if (hi - lo <= tol) {
-      out[j].c0 = shortest_decimal((lo + hi) / 2, tol / 4);
-      continue;
-    }
-    if (!leader) {
-      // Four lengths or more, not three clumps (plots of three sizes put
-      // any two parts on some line through three points only by chance).
-      std::vector<double> sorted = column[j];
-      std::ranges::sort(sorted);
-      std::size_t distinct = 1;
-      for (std::size_t i = 1; i < sorted.size(); ++i) distinct += sorted[i] - sorted[i - 1] > tol ? 1 : 0;
-      if (distinct < 4) return std::nullopt;
-      leader = j;
-      out[j].add(0, 1);
-      continue;
-    }
-    Fit f = line_fit(column[*leader], column[j]);
-    f.worst = worst_miss(column[*leader], column[j], f.a, f.b);
-    if (f.worst > tol / 4) return std::nullopt;
-    const Fit short_fit = short_line(column[*leader], column[j], f, tol / 4);
-    out[j].c0 = short_fit.a;
-    out[j].add(0, short_fit.b);
-  }
-  if (!leader) return std::nullopt;
-  return out;
+  // Four lengths or more, not three clumps (plots of three sizes put any
+  // two parts on some line through three points only by chance).
+  return lines_of_first(column, k, tol, [&](const std::vector<double>& x) {
+    std::vector<double> sorted = x;
+    std::ranges::sort(sorted);
+    std::size_t distinct = 1;
+    for (std::size_t i = 1; i < sorted.size(); ++i) distinct += sorted[i] - sorted[i - 1] > tol ? 1 : 0;
+    return distinct >= 4;
+  });
 }
 
 // The lowest a line reaches for s1 in [lo, hi].
