@@ -286,6 +286,46 @@ TEST(BoxSplit, APodiumRightAcrossIsCutOffBeforeAColumnOfItsBays) {
   // (ABlockIsCutIntoPlotsBeforeSlicingItUnderATowersUpperStorey).
 }
 
+TEST(BoxSplit, CutsThatOnlyHappenToLineUpThroughTheStoreysWait) {
+  // A ground floor of a door (0..3) and window bays of 2.25 m, a roof band
+  // of dormer tiles 3 m wide: both have a face at x = 3 and at x = 12, so
+  // cuts along x there cross nothing, but they are few of either storey's
+  // own faces. The storeys are cut apart first, each row on its own.
+  std::vector<LabelledBox> boxes{part("door", {0, 0, 0}, {3, 1, 3})};
+  for (int i = 0; i < 4; ++i) {
+    const double x = 3 + 2.25 * i;
+    boxes.push_back(part("rect", {x, 0, 0}, {x + 0.5, 1, 3}));
+    boxes.push_back(part("window", {x + 0.5, 0, 0}, {x + 1.75, 1, 3}));
+    boxes.push_back(part("rect", {x + 1.75, 0, 0}, {x + 2.25, 1, 3}));
+  }
+  for (int i = 0; i < 4; ++i) {
+    const double x = 3.0 * i;
+    boxes.push_back(part("roof", {x, 0, 3}, {x + 1, 1, 5}));
+    boxes.push_back(part("window", {x + 1, 0, 3}, {x + 2, 1, 5}));
+    boxes.push_back(part("roof", {x + 2, 0, 3}, {x + 3, 1, 5}));
+  }
+  const SplitTree t = split(test::numbered(boxes));
+  ASSERT_TRUE(cut_along(t, 2, 2));
+  ASSERT_TRUE(cut_along(t.children[0], 0, 13));
+  ASSERT_TRUE(cut_along(t.children[1], 0, 12));
+}
+
+TEST(BoxSplit, EndWallsThroughEveryStoreyAreCutFirst) {
+  // A terrace front: end walls full height, two storeys of bays and a roof
+  // band between them. The cuts beside the end walls are all the roof
+  // band's own faces: they are the building's, and come first.
+  std::vector<LabelledBox> boxes{part("rect", {0, 0, 0}, {0.6, 1, 8}), part("rect", {9.6, 0, 0}, {10.2, 1, 8}),
+                                 part("roof", {0.6, 0, 6}, {9.6, 1, 8})};
+  for (int storey = 0; storey < 2; ++storey)
+    for (int bay = 0; bay < 3; ++bay) {
+      const double x = 0.6 + 3 * bay, z = 3.0 * storey;
+      boxes.push_back(part("rect", {x, 0, z}, {x + 1, 1, z + 3}));
+      boxes.push_back(part("window", {x + 1, 0, z}, {x + 3, 1, z + 3}));
+    }
+  const SplitTree t = split(test::numbered(boxes));
+  ASSERT_TRUE(cut_along(t, 0, 3));
+}
+
 TEST(BoxSplit, AnOnlyCutThatPeelsAirOffIsStillMade) {
   // A box under air along z, with nothing beside it: z is the only cut.
   const SplitTree t = split({part("rect", {0, 0, 0}, {2, 2, 1}, 0), part("rect", {0, 2, 0}, {2, 4, 3}, 1)});

@@ -333,7 +333,7 @@ class Splitter {
       if (w.lo[static_cast<std::size_t>(a)] == w.hi[static_cast<std::size_t>(a)]) continue;  // flat along a
       if (!find_pieces(w, a)) continue;
       if (pieces_.size() > 1) {
-        if (a != 2 && slab_first(w, a)) {
+        if (a != 2 && storeys_first(w, a)) {
           cut_along(w, 2);
           return;
         }
@@ -381,22 +381,55 @@ class Splitter {
     }
   }
 
-  // Storeys before plots where the lowest storey is a slab right across
-  // the container (a podium under a set-back tower, a base under a house
-  // and its garage) and the horizontal cut would not divide the container
-  // into whole things: a thin column of the podium with only air above it
-  // is no building. Leaves pieces_ as the sweep along z found them when it
-  // says so, else as the sweep along a found them.
-  bool slab_first(const Work& w, int a) {
+  // Storeys before plots, where cutting along a first would not divide
+  // the container into whole things:
+  //   - the lowest storey is a slab right across the container (a podium
+  //     under a set-back tower, a base under a house and its garage) and
+  //     some piece of the cut along a is not full: a thin column of the
+  //     podium with only air above it is no building;
+  //   - or every piece along a is full but the cuts along a only happen to
+  //     line up through the storeys: in every storey they are at most half
+  //     of the storey's own boundaries along a (a door and bays below, a
+  //     row of dormers above, meeting at one place by chance). Cuts that
+  //     make up most of some storey's boundaries (end walls through a
+  //     terrace's storeys and its roof band) are the building's own.
+  // Leaves pieces_ as the sweep along z found them when it says so, else as
+  // the sweep along a found them.
+  bool storeys_first(const Work& w, int a) {
     constexpr double kFull = 1 - 1e-6;
     piece_fill(w, a, fill_);
-    if (std::all_of(fill_.begin(), fill_.end(), [](double f) { return f >= kFull; })) return false;
+    const bool whole = std::all_of(fill_.begin(), fill_.end(), [](double f) { return f >= kFull; });
+    const std::size_t cuts_along_a = pieces_.size() - 1;
     if (w.hi[2] > w.lo[2] && find_pieces(w, 2) && pieces_.size() > 1) {
-      piece_fill(w, 2, fill_);
-      if (fill_.front() >= kFull) return true;
+      if (!whole) {
+        piece_fill(w, 2, fill_);
+        if (fill_.front() >= kFull) return true;
+      } else if (cuts_line_up_by_chance(w, a, cuts_along_a)) {
+        return true;
+      }
     }
     find_pieces(w, a);
     return false;
+  }
+
+  // After a sweep along z: does every piece have more than twice `cuts`
+  // boundaries of its own along a (its boxes' faces strictly inside the
+  // container)?
+  bool cuts_line_up_by_chance(const Work& w, int a, std::size_t cuts) {
+    const auto ax = static_cast<std::size_t>(a);
+    faces_.clear();
+    const Event* events = events_[ax].data();
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const Event e = events[i];
+      const Rank r = rank_of(ax, e);
+      if (r <= w.lo[ax] || r >= w.hi[ax]) continue;
+      faces_.push_back((std::uint64_t{target_[span_of_[e >> 1]]} << 32) | r);
+    }
+    std::sort(faces_.begin(), faces_.end());
+    faces_.erase(std::unique(faces_.begin(), faces_.end()), faces_.end());
+    std::vector<std::size_t> own(pieces_.size(), 0);
+    for (const std::uint64_t f : faces_) ++own[static_cast<std::size_t>(f >> 32)];
+    return std::all_of(own.begin(), own.end(), [&](std::size_t n) { return n > 2 * cuts; });
   }
 
   // Is there empty space between two of the pieces find_pieces found?
@@ -792,7 +825,8 @@ class Splitter {
   std::array<std::vector<double>, 3> rank_value_;  // per axis, per rank: its one coordinate, or NaN
   std::vector<Event> scratch_, scratch2_;     // regrouping buffers, as long as an axis's events
   std::vector<std::uint32_t> span_of_;        // per box: its piece in the current sweep
-  std::vector<double> fill_;                  // slab_first's piece fills (reused)
+  std::vector<double> fill_;                  // storeys_first's piece fills (reused)
+  std::vector<std::uint64_t> faces_;          // cuts_line_up_by_chance's (piece, rank) pairs (reused)
   std::vector<Work> stack_;                   // containers still to cut
   std::vector<std::vector<std::uint32_t>> groups_;  // unsplittable containers' boxes
   // The current sweep's pieces (reused: nothing is allocated per container).
