@@ -114,5 +114,16 @@ TEST(PrecisionRecall, CompoundBaysAroundADoorBayAreRepeatsOfTheBay) {
   EXPECT_GE(precision_of("semi_detached", 10), 0.9);
 }
 
+TEST(PrecisionRecall, ATiersInsetsAlongXAndYAreOneShare) {
+  // rectX(s1) calls rectY(1.1 * s1): each tier centred in the one below
+  // by one share on both axes, however many tiers (0.38 when drawn apart).
+  EXPECT_GE(precision_of("tiered_tower", 30), 0.8);
+}
+
+TEST(PrecisionRecall, StoreysCutApartBeforeCutsThatOnlyLineUp) {
+  // Dormers above, a door and bays below, meeting by chance at one place.
+  EXPECT_GE(precision_of("dormer_roof", 10), 0.9);
+}
+
 }  // namespace
 }  // namespace vern

@@ -130,6 +130,115 @@ std::optional<std::vector<Linear>> metric_lines(const std::vector<std::vector<do
   });
 }
 
+// Where a split ran: which example, and its place among that example's
+// runs in derivation order.
+struct RunAt {
+  std::size_t example = 0, order = 0;
+};
+
+// A changed split's draw in one run.
+struct DrawnAt {
+  RunAt at;
+  double value = 0;
+};
+
+// The split nodes below id, not entering calls.
+void splits_below(const Grammar& g, NodeId id, std::unordered_set<NodeId>& out) {
+  if (!out.insert(id).second) return;
+  if (std::holds_alternative<Call>(g.op(id))) return;
+  for_each_child(g.op(id), [&](NodeId c) { splits_below(g, c, out); });
+}
+
+// A split whose draw, in every run, is a straight line of the draw of the
+// split it runs inside (a tier's inset along y, the same share as its
+// inset along x, in towers of every tier count): it takes that line of
+// the outer split's parameter instead of a draw of its own,
+// `rectY(1.006 * s1)` inside `rectX(s1)`. Only for a split that runs
+// nowhere else, paired run by run with the outer split's latest run in the
+// same example (four pairs or more showing a line, or two or more equal).
+void link_nested_shares(Grammar& g, const std::unordered_map<NodeId, RuleId>& rule_of,
+                        const std::unordered_map<RuleId, NodeId>& body_of,
+                        const std::unordered_map<NodeId, std::vector<DrawnAt>>& values, std::vector<NodeId>& replace,
+                        double tol) {
+  // How many places hold each node, and call each rule, over what the
+  // rules reach.
+  std::vector<std::uint32_t> parents(g.node_count(), 0), calls(g.rules.size(), 0);
+  {
+    std::vector<bool> seen(g.node_count(), false);
+    std::vector<NodeId> stack;
+    // Each rule's body as it is about to be: a changed split's new one.
+    for (RuleId r = 0; r < g.rules.size(); ++r) {
+      const auto own = body_of.find(r);
+      stack.push_back(own != body_of.end() ? own->second : g.rules[r].body);
+    }
+    while (!stack.empty()) {
+      const NodeId id = stack.back();
+      stack.pop_back();
+      if (id >= seen.size() || seen[id]) continue;
+      seen[id] = true;
+      if (const auto* c = std::get_if<Call>(&g.op(id)); c && c->rule < calls.size()) ++calls[c->rule];
+      // A changed split becomes a call of its rule, whose new body is
+      // walked on its own.
+      if (const auto changed = rule_of.find(id); changed != rule_of.end()) {
+        ++calls[changed->second];
+        continue;
+      }
+      for_each_child(g.op(id), [&](NodeId c) {
+        if (c < parents.size()) ++parents[c];
+        stack.push_back(c);
+      });
+    }
+  }
+  std::vector<NodeId> outer_splits;
+  for (const auto& [id, rule] : rule_of) outer_splits.push_back(id);
+  std::ranges::sort(outer_splits);  // one order every time
+  for (const NodeId outer : outer_splits) {
+    const RuleId rule = rule_of.at(outer);
+    std::unordered_set<NodeId> below;
+    for_each_child(g.op(body_of.at(rule)), [&](NodeId c) { splits_below(g, c, below); });
+    // Inner splits run here only: held here alone, or the body of a rule
+    // called here alone (where: the node to replace).
+    std::vector<std::pair<NodeId, NodeId>> inner_splits;  // (changed split, where)
+    for (const NodeId id : below) {
+      if (id >= parents.size() || parents[id] != 1) continue;
+      if (id != outer && rule_of.count(id)) inner_splits.emplace_back(id, id);
+      if (const auto* c = std::get_if<Call>(&g.op(id)); c && c->args.empty() && calls[c->rule] == 1) {
+        const NodeId body = g.rules[c->rule].body;
+        if (body != outer && rule_of.count(body) && body_of.count(c->rule)) inner_splits.emplace_back(body, id);
+      }
+    }
+    std::ranges::sort(inner_splits);
+    const std::vector<DrawnAt>& outside = values.at(outer);
+    for (const auto& [inner, where] : inner_splits) {
+      std::vector<double> x, y;
+      for (const DrawnAt& v : values.at(inner)) {
+        const DrawnAt* latest = nullptr;
+        for (const DrawnAt& o : outside)
+          if (o.at.example == v.at.example && o.at.order < v.at.order && (!latest || o.at.order > latest->at.order))
+            latest = &o;
+        if (!latest) break;
+        x.push_back(latest->value);
+        y.push_back(v.value);
+      }
+      if (x.size() != values.at(inner).size() || x.size() < 2) continue;
+      Fit f;
+      if (shows_a_line(x, tol)) {
+        f = line_fit(x, y);
+      } else {
+        f.b = 1;  // from fewer, only equality
+      }
+      f.worst = worst_miss(x, y, f.a, f.b);
+      if (f.worst > tol / 4) continue;
+      const Fit line = short_line(x, y, f, tol / 4);
+      Linear passed;
+      passed.c0 = line.a;
+      passed.add(0, line.b);
+      const RuleId callee = rule_of.at(inner);
+      replace[where] = g.intern({Call{callee, {linear_expr(passed)}}, g.node(where).loc});
+    }
+  }
+}
+
 // The lowest a line reaches for s1 in [lo, hi].
 double lowest(const Linear& f, double lo, double hi) {
   const double b = f.coefficient(0);
@@ -141,11 +250,14 @@ double lowest(const Linear& f, double lo, double hi) {
 std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, const ShareOptions& opt) {
   struct Seen {
     std::vector<std::vector<double>> lengths;  // per run: the relative parts' lengths
+    std::vector<RunAt> at;                     // per run: where it ran
     bool lined_up = true;
   };
   std::unordered_map<NodeId, Seen> seen;
-  for (const CheckResult& r : results)
-    for (const SplitRun& run : runs_of(r.parts)) {
+  for (std::size_t e = 0; e < results.size(); ++e) {
+    const std::vector<SplitRun> runs = runs_of(results[e].parts);
+    for (std::size_t order = 0; order < runs.size(); ++order) {
+      const SplitRun& run = runs[order];
       const auto* split = std::get_if<Split>(&g.op(run.split));
       if (!split) continue;
       const auto relative = drawn_shares(*split);
@@ -157,14 +269,20 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
           if (m->part == (*relative)[j]) lengths[j] = m->length;
       double sum = 0;
       for (double l : lengths) sum += l;
-      if (std::ranges::any_of(lengths, [](double l) { return l < 0; }) || !(sum > 0)) s.lined_up = false;
-      else s.lengths.push_back(std::move(lengths));
+      if (std::ranges::any_of(lengths, [](double l) { return l < 0; }) || !(sum > 0)) {
+        s.lined_up = false;
+      } else {
+        s.lengths.push_back(std::move(lengths));
+        s.at.push_back({e, order});
+      }
     }
+  }
 
   // The rule each changed split runs as, the call that stands for it.
   std::vector<NodeId> replace(g.node_count(), kNoReplacement);
   std::unordered_map<NodeId, RuleId> rule_of;  // changed split -> its rule
   std::unordered_map<RuleId, NodeId> body_of;  // that rule -> the split with shares
+  std::unordered_map<NodeId, std::vector<DrawnAt>> values;  // changed split -> its draw in each run
   std::vector<std::vector<RuleId>> bodies(g.node_count());
   for (RuleId r = 0; r < g.rules.size(); ++r)
     if (g.rules[r].params.empty() && r != g.start_rule) bodies[g.rules[r].body].push_back(r);  // the start takes none
@@ -195,6 +313,7 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
     for (std::size_t j = 0; j < k; ++j)
       if ((*lines)[j].coefficient(0) == 1 && (*lines)[j].c0 == 0 && drawn.empty())
         for (const auto& run : s.lengths) drawn.push_back({metric ? run[j] : shares[j][&run - s.lengths.data()], 1});
+    if (drawn.size() != s.at.size()) continue;
     FitOptions fit;
     fit.resolution = opt.tolerance;
     fit.floor = 0;
@@ -230,12 +349,14 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
     const NodeId call = g.intern({Call{rule, {distribution_expr(d)}}, loc});
     if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
     replace[id] = call;
+    for (std::size_t i = 0; i < drawn.size(); ++i) values[id].push_back({s.at[i], drawn[i].value});
   }
   if (rule_of.empty()) return 0;
   // Calls of a rule that now takes the share: with it.
   for (NodeId id = 0; id < replace.size(); ++id)
     if (const auto* c = std::get_if<Call>(&g.op(id)); c && c->args.empty() && body_of.count(c->rule))
       replace[id] = replace[g.rules[c->rule].body];
+  link_nested_shares(g, rule_of, body_of, values, replace, opt.tolerance);
   for (RuleId r = 0; r < g.rules.size(); ++r) {
     const auto own = body_of.find(r);
     g.rules[r].body = substitute(g, own != body_of.end() ? own->second : g.rules[r].body, replace);
