@@ -5,6 +5,8 @@
 #include <map>
 #include <numeric>
 
+#include "inverse/examples_cost.hpp"
+
 namespace vern {
 
 namespace {
@@ -75,11 +77,11 @@ double reading_cost(const std::vector<SizedMember>& members, std::size_t part, c
     weight[kinds[m]] += members[m].weight;
     total += members[m].weight;
   }
-  double cost = 2 * std::log(1 / kPrecision) * static_cast<double>(range.size());
+  double cost = 2 * number_cost(kPrecision) * static_cast<double>(range.size());
   for (const auto& [kind, r] : range) {
     const double mid = (r.lo + r.hi) / 2;
     const double width = mid > 0 ? (r.hi - r.lo) / mid : 0.0;
-    cost += weight[kind] * (std::log(std::max(width, kPrecision) / kPrecision) - std::log(weight[kind] / total));
+    cost += weight[kind] * (drawn_value_cost(width, kPrecision) + kind_cost(weight[kind] / total));
   }
   return cost;
 }

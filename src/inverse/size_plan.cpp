@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "inverse/examples_cost.hpp"
+
 namespace vern {
 
 std::optional<std::vector<PartPlan>> plan_sizes(const std::vector<std::vector<double>>& lengths, double tolerance) {
@@ -151,8 +153,8 @@ std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::ve
       const auto [slo, shi] = std::minmax_element(shares.begin(), shares.end());
       double in_metres = 0, as_shares = 0;
       for (std::size_t m = 0; m < rows; ++m) {
-        in_metres += std::log(std::max(*mhi - *mlo, tolerance));
-        as_shares += std::log(std::max((*shi - *slo) * totals[m], tolerance));
+        in_metres += drawn_value_cost(*mhi - *mlo, tolerance);
+        as_shares += drawn_value_cost((*shi - *slo) * totals[m], tolerance);
       }
       if (in_metres < as_shares) {
         drawn.push_back(i);
