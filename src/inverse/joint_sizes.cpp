@@ -409,7 +409,9 @@ class Joiner {
         }
         formula[Q.occurrence][Q.part] = f;
         ++gained;
-        if (L.occurrence != Q.occurrence) ++linked;
+        // Within one split, share_splits draws shares that vary in one
+        // way once; lengths in metres linked there are this step's.
+        if (L.occurrence != Q.occurrence || !Q.relative) ++linked;
         continue;
       }
       std::vector<Observation> obs;
