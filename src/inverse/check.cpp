@@ -17,10 +17,13 @@
 #include "forward/scope.hpp"
 #include "graph/error.hpp"
 #include "graph/writer.hpp"
+#include "inverse/check_text.hpp"
 #include "inverse/deterministic_subtree.hpp"
 #include "inverse/support.hpp"
 
 namespace vern {
+
+using namespace check_detail;
 
 namespace {
 
@@ -35,27 +38,6 @@ constexpr std::size_t kMaxEnumerated = 64;
 constexpr double kMaxTileCounts = 100000;
 
 using BoxList = std::vector<std::uint32_t>;
-
-// "6.5", "0.333333": coordinates and values in messages.
-std::string num(double v) {
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v == 0 ? 0.0 : v);
-  return text;
-}
-
-std::string loc_text(SourceLoc l) { return l.known() ? std::to_string(l.line) + ":" + std::to_string(l.column) : "?"; }
-
-std::string bounds_text(const glm::dvec3& lo, const glm::dvec3& hi) {
-  return "x " + num(lo.x) + ".." + num(hi.x) + ", y " + num(lo.y) + ".." + num(hi.y) + ", z " + num(lo.z) + ".." +
-         num(hi.z);
-}
-
-std::string box_text(const LabelledBox& b) {
-  std::string name = b.object.empty() || b.object == b.label ? "'" + b.label + "'" : describe_object(b);
-  return name + " (" + bounds_text(b.min, b.max) + ")";
-}
-
 
 // A scope's own axis as a world axis: local coordinate t along it is
 // sign * (world - origin). Only scopes whose frame is a signed permutation
@@ -428,24 +410,9 @@ class Matcher {
 
   RuleId current_rule() const { return frames_.empty() ? kNone : frames_.back().rule; }
 
-  // An expression as written, with the parameter names of `rule`.
-  std::string expr_text(const Expr& e, RuleId rule) const {
-    return write_expression(g_, e, rule == kNone ? no_names_ : g_.rules[rule].params);
-  }
+  std::string expr_text(const Expr& e, RuleId rule) const { return check_detail::expr_text(g_, e, rule); }
   std::string expr_text(const Expr& e) const { return expr_text(e, current_rule()); }
-
-  std::string op_text(NodeId id, RuleId rule) const {
-    const Operation& op = g_.op(id);
-    std::string t = operation_name(op);
-    if (const auto* s = std::get_if<Split>(&op)) t += "(" + expr_text(s->axis, rule) + ")";
-    if (const auto* r = std::get_if<Repeat>(&op)) t += "(" + expr_text(r->axis, rule) + ")";
-    if (const auto* r = std::get_if<RepeatN>(&op)) t += "(" + expr_text(r->axis, rule) + ")";
-    if (const auto* p = std::get_if<Primitive>(&op)) t += "(" + g_.label(p->label) + ")";
-    if (const auto* c = std::get_if<Call>(&op)) t = g_.rules[c->rule].label;
-    return t;
-  }
-
-  std::string node_ref(NodeId id, RuleId rule) const { return op_text(id, rule) + " at " + loc_text(g_.node(id).loc); }
+  std::string node_ref(NodeId id, RuleId rule) const { return check_detail::node_ref(g_, id, rule); }
   std::string node_ref(NodeId id) const { return node_ref(id, current_rule()); }
 
   std::string origin_text(const Origin& o) const {
@@ -455,21 +422,16 @@ class Matcher {
     return o.call == kNone ? text : text + " in " + node_ref(o.call, o.rule);
   }
 
-  std::string choose_name(NodeId id, RuleId rule) const {
-    const bool is_body = rule != kNone && g_.rules[rule].body == id;
-    return is_body ? g_.rules[rule].label : "choice at " + loc_text(g_.node(id).loc);
-  }
-
   std::string format(const WitnessLine& w) const {
     const std::string rule = w.rule == kNone ? "?" : g_.rules[w.rule].label;
     switch (w.kind) {
       case WitnessLine::Kind::Alternative: {
         const auto& op = std::get<Choose>(g_.op(w.node));
-        return choose_name(w.node, w.rule) + ": alternative " + std::to_string(w.index + 1) + " of " +
+        return check_detail::choose_name(g_, w.node, w.rule) + ": alternative " + std::to_string(w.index + 1) + " of " +
                std::to_string(w.count) + " (" + node_ref(op.options[w.index].child, w.rule) + ")";
       }
       case WitnessLine::Kind::NoAlternative:
-        return choose_name(w.node, w.rule) + ": no alternative applies, nothing derived";
+        return check_detail::choose_name(g_, w.node, w.rule) + ": no alternative applies, nothing derived";
       case WitnessLine::Kind::Value:
         return rule + ", " + node_ref(w.node, w.rule) + ": " + w.name + " = " + num(w.value) + " (" +
                origin_text(w.origin) + ")";
@@ -1256,7 +1218,7 @@ class Matcher {
       witness_.push_back(line(WitnessLine::Kind::NoAlternative, id));
       return true;
     }
-    const std::string name = choose_name(id, current_rule());
+    const std::string name = check_detail::choose_name(g_, id, current_rule());
     if (!o->any)
       return recording() &&
              fail(id, s,
@@ -1590,7 +1552,6 @@ class Matcher {
   bool floating_ = true;
   int depth_ = 0;
   int quiet_ = 0;
-  const std::vector<std::string> no_names_;
 };
 
 // The search for one split: where each part begins and ends.
