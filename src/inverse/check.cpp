@@ -18,6 +18,7 @@
 #include "graph/error.hpp"
 #include "graph/writer.hpp"
 #include "inverse/check_text.hpp"
+#include "inverse/check_witness.hpp"
 #include "inverse/deterministic_subtree.hpp"
 #include "inverse/support.hpp"
 
@@ -92,35 +93,11 @@ struct Slot {
   int unknown = -1;
 };
 
-constexpr std::uint32_t kNone = ~std::uint32_t{0};
-
-// Where a random value was drawn, for the witness (spelled out only when
-// the example turns out derivable: most attempts fail).
-struct Origin {
-  const Expr* expr = nullptr;  // the argument or constant drawn
-  RuleId rule = kNone;         // whose parameter names `expr` uses (kNone: a constant)
-  NodeId call = kNone;         // the call that drew it (kNone: a constant)
-};
-
 struct Unknown {
   Support support;
   std::optional<double> value;  // once an operation pinned it down
   std::string name;             // the parameter or constant
   Origin origin;
-};
-
-// One line of the witness, kept as data until the example is derivable.
-struct WitnessLine {
-  enum class Kind : std::uint8_t { Alternative, NoAlternative, Value, Part, Tiles };
-  Kind kind = Kind::Value;
-  RuleId rule = 0;                   // the rule running
-  NodeId node = 0;                   // the operation
-  std::size_t index = 0, count = 0;  // alternative index of count; part index
-  double value = 0, size = 0;        // the value; Tiles: the count and a tile size (0: repeatN)
-  double length = 0;                 // Part: its length in metres
-  std::uint64_t path = 0;            // Part: the split's derivation_path
-  std::string name;                  // Value: the parameter or constant
-  Origin origin;                     // Value: what drew it
 };
 
 struct Frame {
@@ -346,7 +323,7 @@ class Matcher {
   std::vector<std::string> witness() const {
     std::vector<std::string> out;
     out.reserve(witness_.size());
-    for (const WitnessLine& w : witness_) out.push_back(format(w));
+    for (const WitnessLine& w : witness_) out.push_back(witness_text(g_, w));
     return out;
   }
   const Mismatch& mismatch() const { return best_; }
@@ -414,43 +391,6 @@ class Matcher {
   std::string expr_text(const Expr& e) const { return expr_text(e, current_rule()); }
   std::string node_ref(NodeId id, RuleId rule) const { return check_detail::node_ref(g_, id, rule); }
   std::string node_ref(NodeId id) const { return node_ref(id, current_rule()); }
-
-  std::string origin_text(const Origin& o) const {
-    if (!o.expr) return "?";
-    if (o.rule == kNone && o.call == kNone) return "constant " + expr_text(*o.expr, kNone);
-    const std::string text = expr_text(*o.expr, o.rule);
-    return o.call == kNone ? text : text + " in " + node_ref(o.call, o.rule);
-  }
-
-  std::string format(const WitnessLine& w) const {
-    const std::string rule = w.rule == kNone ? "?" : g_.rules[w.rule].label;
-    switch (w.kind) {
-      case WitnessLine::Kind::Alternative: {
-        const auto& op = std::get<Choose>(g_.op(w.node));
-        return check_detail::choose_name(g_, w.node, w.rule) + ": alternative " + std::to_string(w.index + 1) + " of " +
-               std::to_string(w.count) + " (" + node_ref(op.options[w.index].child, w.rule) + ")";
-      }
-      case WitnessLine::Kind::NoAlternative:
-        return check_detail::choose_name(g_, w.node, w.rule) + ": no alternative applies, nothing derived";
-      case WitnessLine::Kind::Value:
-        return rule + ", " + node_ref(w.node, w.rule) + ": " + w.name + " = " + num(w.value) + " (" +
-               origin_text(w.origin) + ")";
-      case WitnessLine::Kind::Part: {
-        const Size& size = std::get<Split>(g_.op(w.node)).parts[w.index].size;
-        return rule + ", " + node_ref(w.node, w.rule) + ", part " + std::to_string(w.index + 1) + ": " + num(w.value) +
-               " (" + (size.relative ? "~" : "") + expr_text(size.value, w.rule) + ")";
-      }
-      case WitnessLine::Kind::Tiles: {
-        const Operation& op = g_.op(w.node);
-        const auto* r = std::get_if<Repeat>(&op);
-        const std::string what =
-            r ? "size " + expr_text(r->size, w.rule) : "count " + expr_text(std::get<RepeatN>(op).count, w.rule);
-        return rule + ", " + node_ref(w.node, w.rule) + ": " + num(w.value) + " tiles" +
-               (w.size > 0 ? ", size " + num(w.size) : "") + " (" + what + ")";
-      }
-    }
-    return {};
-  }
 
   WitnessLine line(WitnessLine::Kind kind, NodeId node) const {
     WitnessLine w;
