@@ -17,6 +17,7 @@
 #include "forward/scope.hpp"
 #include "graph/error.hpp"
 #include "graph/writer.hpp"
+#include "inverse/check_scale.hpp"
 #include "inverse/check_text.hpp"
 #include "inverse/check_witness.hpp"
 #include "inverse/deterministic_subtree.hpp"
@@ -28,7 +29,6 @@ using namespace check_detail;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // derive()'s default nesting limit: deeper recursion is an error there, so
 // no derivation goes deeper.
 constexpr std::size_t kMaxDepth = 1000;
@@ -129,47 +129,6 @@ struct Cuts {
   }
 };
 
-enum class Mode {
-  Fill,      // sum(abs) < L: relative parts share the rest with a scale k
-  Overflow,  // sum(abs) >= L: absolute parts shrink by 1/c, relative parts get 0
-  NoFill,    // every relative share is 0 and sum(abs) < L: space left at the end
-};
-
-// The scale of a placement (k in Fill, c in Overflow) as the exact set
-// still possible, its hull bounds as a continuous measure for solving, and
-// how far fixed lengths miss their supports.
-struct ScaleState {
-  double lo = -kInf, hi = kInf;  // the hull of the scales still possible
-  std::optional<Support> holes;  // the exact set, once it is more than one interval
-  double penalty = 0;            // metres
-  bool track_set = true;         // false: the hull and penalty only (a cheap measure for solving)
-  bool ok() const { return penalty == 0 && lo <= hi && (!holes || !holes->empty()); }
-  void limit(double a, double b) {
-    lo = std::max(lo, a);
-    hi = std::min(hi, b);
-    if (holes) *holes = holes->clamp(a, b);
-  }
-  void limit(const Support& s) {
-    if (s.intervals.size() == 1 || !track_set || lo > hi) return limit(s.lower(), s.upper());
-    if (!holes) holes = Support::range(lo, hi);
-    *holes = holes->intersect(s);
-    lo = std::max(lo, s.lower());
-    hi = std::min(hi, s.upper());
-  }
-  void require(double miss) { penalty += std::max(0.0, miss); }
-  // The scales still possible.
-  Support set() const {
-    if (holes) return *holes;
-    return lo <= hi ? Support::range(lo, hi) : Support{};
-  }
-};
-
-double distance_to(const Support& s, double v) {
-  double best = kInf;
-  for (const auto& [lo, hi] : s.intervals) best = std::min(best, v < lo ? lo - v : (v > hi ? v - hi : 0.0));
-  return best;
-}
-
 struct PartInfo {
   bool relative = false;
   Support share;  // the size's support, negative values removed (derive() fails on them)
@@ -202,56 +161,6 @@ struct FreeScope {
 
 FreeScope compose(const FreeScope& fs, std::function<Scope(const Scope&)> f) {
   return {[at = fs.at, f = std::move(f)](double l) { return f(at(l)); }, fs.world, fs.lmin, fs.lmax};
-}
-
-// slope * k + offset: a bound on a length as a function of the scale k.
-struct Line {
-  double slope = 0, offset = 0;
-};
-
-// The k in [lo, hi] at which every lower line is below every upper line
-// (within tol): an interval, empty when lo > hi.
-std::pair<double, double> feasible_scales(const std::vector<Line>& lowers, const std::vector<Line>& uppers, double lo,
-                                          double hi, double tol) {
-  for (const Line& a : lowers)
-    for (const Line& b : uppers) {
-      const double d = a.slope - b.slope, r = b.offset - a.offset + tol;
-      if (std::abs(d) < 1e-300) {
-        if (r < 0) return {1, 0};
-      } else if (d > 0) {
-        hi = std::min(hi, r / d);
-      } else {
-        lo = std::max(lo, r / d);
-      }
-    }
-  return {lo, hi};
-}
-
-// How far from feasible the best k in [lo, hi] is: the least, over k, of
-// the largest excess of a lower line over an upper one. A convex piecewise
-// linear function, so its minimum lies at a crossing or an end.
-double least_excess(const std::vector<Line>& lowers, const std::vector<Line>& uppers, double lo, double hi) {
-  std::vector<Line> h;
-  for (const Line& a : lowers)
-    for (const Line& b : uppers) h.push_back({a.slope - b.slope, a.offset - b.offset});
-  auto g = [&](double k) {
-    double m = -kInf;
-    for (const Line& l : h) m = std::max(m, l.slope * k + l.offset);
-    return m;
-  };
-  std::vector<double> ks;
-  if (std::isfinite(lo)) ks.push_back(lo);
-  if (std::isfinite(hi)) ks.push_back(hi);
-  for (std::size_t i = 0; i < h.size(); ++i)
-    for (std::size_t j = i + 1; j < h.size(); ++j)
-      if (h[i].slope != h[j].slope) {
-        const double k = (h[j].offset - h[i].offset) / (h[i].slope - h[j].slope);
-        if (k >= lo && k <= hi) ks.push_back(k);
-      }
-  if (ks.empty()) ks.push_back(lo <= hi ? std::clamp(1.0, lo, hi) : lo);
-  double best = kInf;
-  for (double k : ks) best = std::min(best, g(k));
-  return best;
 }
 
 // The parts of a split and how their sizes are evaluated, shared by
