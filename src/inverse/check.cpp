@@ -17,6 +17,7 @@
 #include "forward/scope.hpp"
 #include "graph/error.hpp"
 #include "graph/writer.hpp"
+#include "inverse/check_cuts.hpp"
 #include "inverse/check_scale.hpp"
 #include "inverse/check_text.hpp"
 #include "inverse/check_witness.hpp"
@@ -37,29 +38,6 @@ constexpr std::size_t kMaxDepth = 1000;
 constexpr std::size_t kMaxEnumerated = 64;
 // Repeat tile counts tried for one random tile size.
 constexpr double kMaxTileCounts = 100000;
-
-using BoxList = std::vector<std::uint32_t>;
-
-// A scope's own axis as a world axis: local coordinate t along it is
-// sign * (world - origin). Only scopes whose frame is a signed permutation
-// (quarter turns) can be cut along an axis this way.
-struct AxisMap {
-  int world = 0;
-  double sign = 1;
-  double origin = 0;
-  double local(double w) const { return sign * (w - origin); }
-  double world_of(double t) const { return origin + sign * t; }
-};
-
-std::optional<AxisMap> axis_map(const Scope& s, Axis a) {
-  const glm::dvec3 f = s.frame[static_cast<int>(a)];
-  for (int w = 0; w < 3; ++w) {
-    const bool unit =
-        std::abs(std::abs(f[w]) - 1.0) < 1e-9 && std::abs(f[(w + 1) % 3]) < 1e-9 && std::abs(f[(w + 2) % 3]) < 1e-9;
-    if (unit) return AxisMap{w, f[w] > 0 ? 1.0 : -1.0, s.origin[w]};
-  }
-  return std::nullopt;
-}
 
 // Counts matching steps across the whole check; the limit is the user's.
 class Budget {
@@ -108,25 +86,6 @@ struct Frame {
 struct Mismatch {
   int depth = -1;
   std::string message;
-};
-
-// The positions along a scope's axis where parts may begin or end: the
-// faces of the boxes that no box crosses, snapped within the tolerance,
-// and the two ends of the scope. A position with flat boxes on it (zero
-// thickness along the axis) appears twice, the flat boxes in the
-// zero-length segment between the two copies, so a boundary there can give
-// them to either side.
-struct Cuts {
-  std::vector<double> at;           // local positions, ascending
-  std::vector<BoxList> segment;     // boxes in [at[k], at[k+1]]
-  std::vector<std::size_t> prefix;  // boxes in segments before k
-  BoxList outside;                  // boxes beyond the scope's ends
-  std::size_t between(std::size_t j, std::size_t e) const { return prefix[e] - prefix[j]; }
-  BoxList boxes(std::size_t j, std::size_t e) const {
-    BoxList out;
-    for (std::size_t k = j; k < e; ++k) out.insert(out.end(), segment[k].begin(), segment[k].end());
-    return out;
-  }
 };
 
 struct PartInfo {
@@ -205,6 +164,7 @@ class Matcher {
         deterministic_(deterministic),
         constants_(std::move(constants)),
         unknowns_(std::move(unknowns)),
+        cuts_(boxes, tolerance),
         floating_(floating) {
     lookup_ = [this](ExprKind kind, std::uint32_t index) { return binding(kind, index); };
     vanishes_.assign(g.node_count(), -1);
@@ -632,131 +592,6 @@ class Matcher {
 
   // ---- split ----
 
-  // Positions along the axis where no box crosses (see Cuts). Boxes
-  // beyond the scope's ends are collected in cuts.outside.
-  Cuts make_cuts(const BoxList& inside, const AxisMap& am, double length) const {
-    Cuts c;
-    // Every face and both ends, snapped: a run of positions within the
-    // tolerance becomes one, the scope's end if the run holds one, else
-    // its smallest.
-    struct Face {
-      double t;
-      int tag;  // -1: the scope's start, -2: its end, else 2 * k + (max face)
-    };
-    std::vector<Face> faces;
-    faces.reserve(2 * inside.size() + 2);
-    faces.push_back({0.0, -1});
-    faces.push_back({length, -2});
-    for (std::size_t k = 0; k < inside.size(); ++k) {
-      const LabelledBox& b = boxes_[inside[k]];
-      double t0 = am.local(b.min[am.world]), t1 = am.local(b.max[am.world]);
-      if (t0 > t1) std::swap(t0, t1);
-      faces.push_back({t0, static_cast<int>(2 * k)});
-      faces.push_back({t1, static_cast<int>(2 * k + 1)});
-    }
-    std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.t < b.t; });
-    std::vector<double> lo(inside.size()), hi(inside.size());
-    std::vector<double> positions;
-    for (std::size_t i = 0; i < faces.size();) {
-      std::size_t j = i;
-      double rep = faces[i].t;
-      bool has_start = false, has_end = false;
-      while (j < faces.size() && faces[j].t - faces[i].t <= tol_) {
-        has_start = has_start || faces[j].tag == -1;
-        has_end = has_end || faces[j].tag == -2;
-        ++j;
-      }
-      if (has_start)
-        rep = 0.0;
-      else if (has_end)
-        rep = length;
-      for (std::size_t k = i; k < j; ++k) {
-        if (faces[k].tag < 0) continue;
-        const auto box = static_cast<std::size_t>(faces[k].tag / 2);
-        (faces[k].tag % 2 ? hi : lo)[box] = rep;
-      }
-      positions.push_back(rep);
-      i = j;
-    }
-    std::sort(positions.begin(), positions.end());
-    positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
-    // Positions strictly inside a box are crossed: no boundary there.
-    std::vector<int> cover(positions.size() + 1, 0);
-    std::vector<bool> flat_at(positions.size(), false);
-    auto index_of = [&](double v) {
-      return static_cast<std::size_t>(std::lower_bound(positions.begin(), positions.end(), v) - positions.begin());
-    };
-    for (std::size_t k = 0; k < inside.size(); ++k) {
-      if (lo[k] < -tol_ || hi[k] > length + tol_) {
-        c.outside.push_back(inside[k]);
-        continue;
-      }
-      const std::size_t a = index_of(lo[k]), b = index_of(hi[k]);
-      if (a == b) {
-        flat_at[a] = true;
-        continue;
-      }
-      cover[a + 1] += 1;
-      cover[b] -= 1;
-    }
-    int running = 0;
-    for (std::size_t k = 0; k < positions.size(); ++k) {
-      running += cover[k];
-      if (running > 0 || positions[k] < 0 || positions[k] > length) continue;
-      c.at.push_back(positions[k]);
-      if (flat_at[k]) c.at.push_back(positions[k]);
-    }
-    const std::size_t segments = c.at.empty() ? 0 : c.at.size() - 1;
-    c.segment.assign(segments, {});
-    for (std::size_t k = 0; k < inside.size(); ++k) {
-      if (lo[k] < -tol_ || hi[k] > length + tol_) continue;
-      if (segments == 0) {
-        c.outside.push_back(inside[k]);
-        continue;
-      }
-      std::size_t seg;
-      const auto first = std::lower_bound(c.at.begin(), c.at.end(), lo[k]);
-      if (lo[k] == hi[k] && first != c.at.end() && *first == lo[k]) {
-        seg = static_cast<std::size_t>(first - c.at.begin());  // the zero-length segment at a flat box's cut
-      } else {
-        const auto after = std::upper_bound(c.at.begin(), c.at.end(), lo[k]);
-        seg = after == c.at.begin() ? 0 : static_cast<std::size_t>(after - c.at.begin()) - 1;
-      }
-      seg = std::min(seg, segments - 1);
-      c.segment[seg].push_back(inside[k]);
-    }
-    c.prefix.assign(segments + 1, 0);
-    for (std::size_t k = 0; k < segments; ++k) c.prefix[k + 1] = c.prefix[k] + c.segment[k].size();
-    return c;
-  }
-
-  // The cuts of the same boxes along the same axis, kept for a while: the
-  // alternatives of a choice each split the same boxes, mostly along the
-  // same axis, and sorting the faces is most of the cost of a failed try.
-  std::shared_ptr<const Cuts> cuts_of(const BoxList& inside, const AxisMap& am, double length) {
-    for (const CutsEntry& c : cuts_cache_)
-      if (c.world == am.world && c.sign == am.sign && c.origin == am.origin && c.length == length && c.boxes == inside)
-        return c.cuts;
-    auto cuts = std::make_shared<const Cuts>(make_cuts(inside, am, length));
-    CutsEntry entry{inside, am.world, am.sign, am.origin, length, cuts};
-    if (cuts_cache_.size() < 8)
-      cuts_cache_.push_back(std::move(entry));
-    else
-      cuts_cache_[cuts_next_++ % cuts_cache_.size()] = std::move(entry);
-    return cuts;
-  }
-
-  std::string cuts_text(const Cuts& c, const AxisMap& am) const {
-    std::vector<double> w;
-    for (double t : c.at) w.push_back(am.world_of(t));
-    std::sort(w.begin(), w.end());
-    w.erase(std::unique(w.begin(), w.end()), w.end());
-    std::string t = std::string(1, "xyz"[am.world]) + " = ";
-    for (std::size_t k = 0; k < w.size() && k < 12; ++k) t += (k ? ", " : "") + num(w[k]);
-    if (w.size() > 12) t += ", ... (" + std::to_string(w.size()) + " cuts)";
-    return t;
-  }
-
   std::string sizes_text(const Split& op) const {
     std::string t;
     for (std::size_t i = 0; i < op.parts.size(); ++i) {
@@ -797,7 +632,7 @@ class Matcher {
         last = std::max({last, am->local(boxes_[k].min[am->world]), am->local(boxes_[k].max[am->world])});
       st.length = last;
     }
-    st.cuts = cuts_of(inside, *am, st.length);
+    st.cuts = cuts_.of(inside, *am, st.length);
     if (!st.cuts->outside.empty()) {
       if (recording()) fail(id, s, "the boxes " + list_boxes(st.cuts->outside) + " lie outside the scope");
       return std::nullopt;
@@ -1386,14 +1221,7 @@ class Matcher {
   std::vector<std::int8_t> trails_;
   std::vector<std::int8_t> nothing_;
   std::unordered_map<const Expr*, Possible> fixed_values_;
-  struct CutsEntry {
-    BoxList boxes;
-    int world;
-    double sign, origin, length;
-    std::shared_ptr<const Cuts> cuts;
-  };
-  std::vector<CutsEntry> cuts_cache_;
-  std::size_t cuts_next_ = 0;
+  CutsCache cuts_;
   BindingLookup lookup_;
   Mismatch best_;
   std::string uncheckable_;
