@@ -12,11 +12,11 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "forward/stack_guard.hpp"
 #include "forward/evaluate.hpp"
 #include "forward/scope.hpp"
 #include "graph/error.hpp"
 #include "graph/writer.hpp"
+#include "inverse/check_budget.hpp"
 #include "inverse/check_cuts.hpp"
 #include "inverse/check_scale.hpp"
 #include "inverse/check_text.hpp"
@@ -38,31 +38,6 @@ constexpr std::size_t kMaxDepth = 1000;
 constexpr std::size_t kMaxEnumerated = 64;
 // Repeat tile counts tried for one random tile size.
 constexpr double kMaxTileCounts = 100000;
-
-// Counts matching steps across the whole check; the limit is the user's.
-class Budget {
- public:
-  explicit Budget(std::uint64_t max) : max_(max) {}
-  void step() {
-    if (++used_ > max_)
-      throw Error(ErrorKind::Limit, "error: more than " + std::to_string(max_) +
-                                        " matching steps\n  hint: raise CheckOptions::max_steps (check --max-steps), "
-                                        "or check a smaller example");
-    // Matching recurses once per split part and per nested operation, and
-    // every step passes here: stop while the stack still has room
-    // (forward/stack_guard.hpp) rather than crash on a split of 20000 parts.
-    if (stack_.exhausted())
-      throw Error(ErrorKind::Limit, "error: matching nests deeper than this thread's " +
-                                        std::to_string(stack_.size() >> 20) +
-                                        " MB stack holds\n  hint: check a smaller example (fewer parts side by side), "
-                                        "or raise the stack limit (ulimit -s)");
-  }
-
- private:
-  std::uint64_t max_;
-  std::uint64_t used_ = 0;
-  const StackGuard& stack_ = StackGuard::for_this_thread();
-};
 
 // A parameter or constant while matching: a known value, or an unknown
 // (a random value not yet pinned down by the example).
