@@ -16,6 +16,7 @@
 #include "forward/scope.hpp"
 #include "graph/error.hpp"
 #include "graph/writer.hpp"
+#include "inverse/check_bindings.hpp"
 #include "inverse/check_budget.hpp"
 #include "inverse/check_cuts.hpp"
 #include "inverse/check_scale.hpp"
@@ -38,25 +39,6 @@ constexpr std::size_t kMaxDepth = 1000;
 constexpr std::size_t kMaxEnumerated = 64;
 // Repeat tile counts tried for one random tile size.
 constexpr double kMaxTileCounts = 100000;
-
-// A parameter or constant while matching: a known value, or an unknown
-// (a random value not yet pinned down by the example).
-struct Slot {
-  Value value;
-  int unknown = -1;
-};
-
-struct Unknown {
-  Support support;
-  std::optional<double> value;  // once an operation pinned it down
-  std::string name;             // the parameter or constant
-  Origin origin;
-};
-
-struct Frame {
-  RuleId rule = 0;
-  std::vector<Slot> params;
-};
 
 struct Mismatch {
   int depth = -1;
@@ -137,11 +119,10 @@ class Matcher {
         tol_(tolerance),
         budget_(budget),
         deterministic_(deterministic),
-        constants_(std::move(constants)),
-        unknowns_(std::move(unknowns)),
+        vars_(std::move(constants), std::move(unknowns)),
         cuts_(boxes, tolerance),
         floating_(floating) {
-    lookup_ = [this](ExprKind kind, std::uint32_t index) { return binding(kind, index); };
+    lookup_ = [this](ExprKind kind, std::uint32_t index) { return vars_.binding(kind, index); };
     vanishes_.assign(g.node_count(), -1);
     trails_.assign(3 * g.node_count(), -1);
     nothing_.assign(g.node_count(), -1);
@@ -149,7 +130,7 @@ class Matcher {
 
   bool run(const Scope& start, const BoxList& all) {
     const Rule& rule = g_.rules[g_.start_rule];
-    frames_.push_back({g_.start_rule, {}});
+    vars_.enter({g_.start_rule, {}});
     if (!rule.params.empty()) {
       depth_ = 0;
       return fail(rule.body, start, "cannot check: the start rule '" + rule.label + "' takes parameters");
@@ -177,59 +158,25 @@ class Matcher {
  private:
   friend class SplitSearch;
 
-  // ---- names, unknowns and the trail of their bindings ----
-
-  Binding binding(ExprKind kind, std::uint32_t index) const {
-    const Slot& slot = kind == ExprKind::Param ? frames_.back().params.at(index) : constants_.at(index);
-    if (slot.unknown < 0) return {true, slot.value, {}};
-    const Unknown& u = unknowns_[static_cast<std::size_t>(slot.unknown)];
-    if (u.value) return {true, Value(*u.value), {}};
-    return {false, {}, u.support};
-  }
-
-  // The unknowns an expression uses that nothing has pinned down yet.
-  void open_unknowns(const Expr& e, std::vector<int>& out) const {
-    for (const auto& n : e.nodes()) {
-      if (n.kind != ExprKind::Param && n.kind != ExprKind::Constant) continue;
-      const Slot& slot = n.kind == ExprKind::Param ? frames_.back().params.at(n.index) : constants_.at(n.index);
-      if (slot.unknown >= 0 && !unknowns_[static_cast<std::size_t>(slot.unknown)].value &&
-          std::find(out.begin(), out.end(), slot.unknown) == out.end())
-        out.push_back(slot.unknown);
-    }
-  }
-
-  void bind(int u, double v) {
-    trail_.emplace_back(u, unknowns_[static_cast<std::size_t>(u)].value);
-    unknowns_[static_cast<std::size_t>(u)].value = v;
-  }
-
-  void undo(std::size_t mark) {
-    while (trail_.size() > mark) {
-      unknowns_[static_cast<std::size_t>(trail_.back().first)].value = trail_.back().second;
-      trail_.pop_back();
-    }
-  }
-
   // Restores what a match or query added: on failure, its witness lines
   // and bindings; always, the unknowns drawn inside it (out of scope now).
   struct Marks {
     std::size_t witness, trail, unknowns;
   };
-  Marks marks() const { return {witness_.size(), trail_.size(), unknowns_.size()}; }
+  Marks marks() const { return {witness_.size(), vars_.trail_size(), vars_.unknown_count()}; }
   void restore(const Marks& m, bool keep) {
     if (!keep) {
       witness_.resize(m.witness);
-      undo(m.trail);
+      vars_.undo(m.trail);
     }
-    std::erase_if(trail_, [&](const auto& t) { return static_cast<std::size_t>(t.first) >= m.unknowns; });
-    unknowns_.resize(m.unknowns);
+    vars_.drop_unknowns(m.unknowns);
   }
 
   // ---- messages ----
 
-  std::string rule_label() const { return frames_.empty() ? "?" : g_.rules[frames_.back().rule].label; }
+  std::string rule_label() const { return vars_.rule() == kNone ? "?" : g_.rules[vars_.rule()].label; }
 
-  RuleId current_rule() const { return frames_.empty() ? kNone : frames_.back().rule; }
+  RuleId current_rule() const { return vars_.rule(); }
 
   std::string expr_text(const Expr& e, RuleId rule) const { return check_detail::expr_text(g_, e, rule); }
   std::string expr_text(const Expr& e) const { return expr_text(e, current_rule()); }
@@ -255,7 +202,7 @@ class Matcher {
   std::string where(NodeId id, const Scope& s) const {
     const Bounds b = world_bounds(s);
     std::string t = "at " + rule_label();
-    if (!frames_.empty()) t += " (" + loc_text(g_.rules[frames_.back().rule].loc) + ")";
+    if (vars_.rule() != kNone) t += " (" + loc_text(g_.rules[vars_.rule()].loc) + ")";
     return t + ", " + node_ref(id) + " on " + bounds_text(b.min, b.max);
   }
 
@@ -294,7 +241,7 @@ class Matcher {
   // constant are the same everywhere: their values are kept.
   std::optional<Possible> evaluate(const Expr& e, NodeId id, const Scope& s, const char* what, std::size_t number = 0) {
     const bool fixed = std::none_of(e.nodes().begin(), e.nodes().end(), [&](const ExprNode& n) {
-      return n.kind == ExprKind::Param || (n.kind == ExprKind::Constant && constants_.at(n.index).unknown >= 0);
+      return n.kind == ExprKind::Param || (n.kind == ExprKind::Constant && vars_.constant(n.index).unknown >= 0);
     });
     if (fixed) {
       const auto hit = fixed_values_.find(&e);
@@ -615,10 +562,10 @@ class Matcher {
     // Which unknowns the sizes use: few-valued ones are tried value by
     // value, one continuous one is solved for per placement.
     std::vector<int> open;
-    for (const auto& part : op.parts) open_unknowns(part.size.value, open);
+    for (const auto& part : op.parts) vars_.open_unknowns(part.size.value, open);
     std::vector<int> continuous;
     for (int u : open) {
-      if (auto v = unknowns_[static_cast<std::size_t>(u)].support.values(kMaxEnumerated)) {
+      if (auto v = vars_.unknown(u).support.values(kMaxEnumerated)) {
         st.finite.push_back(u);
         st.finite_values.push_back(*v);
       } else {
@@ -627,7 +574,7 @@ class Matcher {
     }
     if (continuous.size() > 1) {
       std::string names;
-      for (int u : continuous) names += (names.empty() ? "" : ", ") + unknowns_[static_cast<std::size_t>(u)].name;
+      for (int u : continuous) names += (names.empty() ? "" : ", ") + vars_.unknown(u).name;
       cannot_check(id, s, "the sizes depend on several random values at once (" + names + ")");
       return std::nullopt;
     }
@@ -650,11 +597,11 @@ class Matcher {
   bool each_sizing(NodeId id, const Split& op, const Scope& s, SplitSetup& st, F f) {
     std::vector<std::size_t> pick(st.finite.size(), 0);
     while (true) {
-      const std::size_t trail_mark = trail_.size(), witness_mark = witness_.size();
+      const std::size_t trail_mark = vars_.trail_size(), witness_mark = witness_.size();
       for (std::size_t k = 0; k < st.finite.size(); ++k) {
-        const Unknown& u = unknowns_[static_cast<std::size_t>(st.finite[k])];
+        const Unknown& u = vars_.unknown(st.finite[k]);
         const double v = st.finite_values[k][pick[k]];
-        bind(st.finite[k], v);
+        vars_.bind(st.finite[k], v);
         note_value(id, u.name, v, u.origin);
       }
       for (std::size_t i = 0; i < op.parts.size(); ++i) {
@@ -671,7 +618,7 @@ class Matcher {
         }
       }
       if (f()) return true;
-      undo(trail_mark);
+      vars_.undo(trail_mark);
       witness_.resize(witness_mark);
       std::size_t k = 0;
       while (k < pick.size() && ++pick[k] == st.finite_values[k].size()) pick[k++] = 0;
@@ -890,7 +837,7 @@ class Matcher {
   // arguments, and the few-valued random arguments to try one by one.
   std::optional<std::pair<Frame, std::vector<ArgChoice>>> setup_call(NodeId id, const Call& op, const Scope& s) {
     const Rule& callee = g_.rules[op.rule];
-    if (frames_.size() >= kMaxDepth) {
+    if (vars_.depth() >= kMaxDepth) {
       if (recording())
         fail(id, s, "rule calls nested deeper than " + std::to_string(kMaxDepth) + " (derive() stops there)");
       return std::nullopt;
@@ -904,7 +851,7 @@ class Matcher {
       // value used twice stays one value.
       if (arg.nodes().size() == 1 && (root.kind == ExprKind::Param || root.kind == ExprKind::Constant)) {
         frame.params[k] =
-            root.kind == ExprKind::Param ? frames_.back().params.at(root.index) : constants_.at(root.index);
+            root.kind == ExprKind::Param ? vars_.param(root.index) : vars_.constant(root.index);
         continue;
       }
       auto p = evaluate(arg, id, s, "argument", k + 1);
@@ -922,9 +869,8 @@ class Matcher {
         choices.push_back({k, *values});
       } else {
         // Continuous: an unknown, pinned down by the first split that uses it.
-        unknowns_.push_back({p->support, std::nullopt, k < callee.params.size() ? callee.params[k] : "?",
-                             Origin{&arg, current_rule(), id}});
-        frame.params[k].unknown = static_cast<int>(unknowns_.size() - 1);
+        frame.params[k].unknown = vars_.add({p->support, std::nullopt, k < callee.params.size() ? callee.params[k] : "?",
+                                             Origin{&arg, current_rule(), id}});
       }
     }
     return std::make_pair(std::move(frame), std::move(choices));
@@ -936,9 +882,9 @@ class Matcher {
   bool each_binding(NodeId id, const Call& op, Frame& frame, const std::vector<ArgChoice>& choices, std::size_t next,
                     F& body) {
     if (next == choices.size()) {
-      frames_.push_back(frame);
+      vars_.enter(frame);
       const bool ok = body();
-      frames_.pop_back();
+      vars_.leave();
       return ok;
     }
     const Rule& callee = g_.rules[op.rule];
@@ -1183,10 +1129,7 @@ class Matcher {
   const double tol_;
   Budget& budget_;
   DeterministicSubtrees& deterministic_;
-  std::vector<Slot> constants_;
-  std::vector<Unknown> unknowns_;
-  std::vector<std::pair<int, std::optional<double>>> trail_;
-  std::vector<Frame> frames_;
+  Bindings vars_;
   // Where the node being matched lies (derivation_path), and the part or
   // option the next match() enters through.
   std::vector<std::uint64_t> path_{0};
@@ -1685,7 +1628,7 @@ class SplitSearch {
   // fit: a scan of its support, then a golden-section refinement around the
   // best point (the misfit is piecewise linear and V-shaped at a solution).
   std::optional<double> solve() {
-    Unknown& u = m_.unknowns_[static_cast<std::size_t>(st_.solve_for)];
+    Unknown& u = m_.vars_.unknown(st_.solve_for);
     auto misfit = [&](double v) {
       u.value = v;
       const double r = refresh_shares() ? violation(replay(false)) : kInf;
@@ -1775,7 +1718,7 @@ class SplitSearch {
   // the parts below (which see it through their own tolerance).
   template <typename Fits>
   double centre(double v, Fits& fits) const {
-    const Unknown& u = m_.unknowns_[static_cast<std::size_t>(st_.solve_for)];
+    const Unknown& u = m_.vars_.unknown(st_.solve_for);
     double lo_bound = u.support.lower(), hi_bound = u.support.upper();
     for (const auto& [lo, hi] : u.support.intervals)
       if (v >= lo && v <= hi) lo_bound = lo, hi_bound = hi;
@@ -1803,10 +1746,10 @@ class SplitSearch {
   // A placement fits the sizes: bind what it pins down, match every part.
   bool complete(const ScaleState& sized) {
     if (free_) return collect_across(sized);
-    const std::size_t witness_mark = m_.witness_.size(), trail_mark = m_.trail_.size();
+    const std::size_t witness_mark = m_.witness_.size(), trail_mark = m_.vars_.trail_size();
     auto give_up = [&] {
       m_.witness_.resize(witness_mark);
-      m_.undo(trail_mark);
+      m_.vars_.undo(trail_mark);
       if (st_.solve_for >= 0) refresh_shares();
       return false;
     };
@@ -1814,10 +1757,10 @@ class SplitSearch {
     if (st_.solve_for >= 0) {
       const auto v = solve();
       if (!v) return false;
-      m_.bind(st_.solve_for, *v);
+      m_.vars_.bind(st_.solve_for, *v);
       refresh_shares();
       sc = replay();
-      const Unknown& u = m_.unknowns_[static_cast<std::size_t>(st_.solve_for)];
+      const Unknown& u = m_.vars_.unknown(st_.solve_for);
       m_.note_value(id_, u.name, *v, u.origin);
     }
     const double k = pick_scale(sc);
@@ -1849,11 +1792,11 @@ class SplitSearch {
           continue;
         }
       }
-      const std::size_t mark = m_.witness_.size(), trail = m_.trail_.size();
+      const std::size_t mark = m_.witness_.size(), trail = m_.vars_.trail_size();
       m_.slot_ = static_cast<std::uint32_t>(i + 1);
       const bool ok = m_.match(parts_[i].child, s_.slice(axis_, from, len), cuts_.boxes(pl.from, pl.to));
       // Remember the result unless it pinned down an unknown from outside.
-      if (memo && m_.trail_.size() == trail)
+      if (memo && m_.vars_.trail_size() == trail)
         memo_[key] = {
             ok, std::vector<WitnessLine>(m_.witness_.begin() + static_cast<std::ptrdiff_t>(mark), m_.witness_.end())};
       if (!ok) return false;
@@ -1872,11 +1815,11 @@ class SplitSearch {
 
   // Query across the open axis: the lengths every child accepts.
   bool collect_across(const ScaleState&) {
-    const std::size_t trail_mark = m_.trail_.size();
+    const std::size_t trail_mark = m_.vars_.trail_size();
     if (st_.solve_for >= 0) {
       const auto v = solve();
       if (!v) return false;
-      m_.bind(st_.solve_for, *v);
+      m_.vars_.bind(st_.solve_for, *v);
       refresh_shares();
     }
     auto part_scope = [&](double from, double len) {
@@ -1904,7 +1847,7 @@ class SplitSearch {
       acc = acc.intersect(m_.lengths(p.child, part_scope(start, gap), {}));
     }
     collected_ = collected_.unite(acc);
-    m_.undo(trail_mark);
+    m_.vars_.undo(trail_mark);
     if (st_.solve_for >= 0) refresh_shares();
     return false;
   }
@@ -1944,10 +1887,10 @@ class SplitSearch {
     ls = ls.clamp(free_->lmin, free_->lmax);
     if (ls.empty()) return;
     any_sized_ = true;
-    const std::size_t witness_mark = m_.witness_.size(), trail_mark = m_.trail_.size();
+    const std::size_t witness_mark = m_.witness_.size(), trail_mark = m_.vars_.trail_size();
     if (children_match(false)) collected_ = collected_.unite(ls);
     m_.witness_.resize(witness_mark);
-    m_.undo(trail_mark);
+    m_.vars_.undo(trail_mark);
   }
 
   // One line per part whose size is random: the value that reproduces it.
