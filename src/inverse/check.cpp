@@ -19,6 +19,7 @@
 #include "inverse/check_bindings.hpp"
 #include "inverse/check_budget.hpp"
 #include "inverse/check_cuts.hpp"
+#include "inverse/check_emptiness.hpp"
 #include "inverse/check_scale.hpp"
 #include "inverse/check_text.hpp"
 #include "inverse/check_witness.hpp"
@@ -121,11 +122,9 @@ class Matcher {
         deterministic_(deterministic),
         vars_(std::move(constants), std::move(unknowns)),
         cuts_(boxes, tolerance),
+        empty_(g, lookup_),
         floating_(floating) {
     lookup_ = [this](ExprKind kind, std::uint32_t index) { return vars_.binding(kind, index); };
-    vanishes_.assign(g.node_count(), -1);
-    trails_.assign(3 * g.node_count(), -1);
-    nothing_.assign(g.node_count(), -1);
   }
 
   bool run(const Scope& start, const BoxList& all) {
@@ -284,114 +283,6 @@ class Matcher {
     if (auto a = p->value.to_axis()) return a;
     if (recording()) fail(id, s, std::string(what) + " must be an axis, found " + p->value.describe());
     return std::nullopt;
-  }
-
-  // Derives nothing whatever the scope and the draws (nil, or only nils).
-  bool vanishes(NodeId id) {
-    std::int8_t& memo = vanishes_[id];
-    if (memo >= 0) return memo == 1;
-    memo = 0;  // recursion: assume it derives something
-    const Operation& op = g_.op(id);
-    bool v = false;
-    if (std::holds_alternative<Nil>(op)) {
-      v = true;
-    } else if (std::holds_alternative<Primitive>(op) || std::holds_alternative<Colour>(op)) {
-      v = false;
-    } else if (const auto* c = std::get_if<Call>(&op)) {
-      v = vanishes(g_.rules[c->rule].body);
-    } else {
-      v = true;
-      for (NodeId child : node_children(op)) v = v && vanishes(child);
-    }
-    vanishes_[id] = v ? 1 : 0;
-    return v;
-  }
-
-  // Can what node `id` derives stop short of its scope's end along its own
-  // axis a, leaving empty space there? Only then may a part holding it end
-  // in empty space. A static over-approximation: axes given by parameters,
-  // sizes that use parameters and transforms all count as "may".
-  bool may_trail(NodeId id, int a) {
-    std::int8_t& memo = trails_[static_cast<std::size_t>(id) * 3 + static_cast<std::size_t>(a)];
-    if (memo >= 0) return memo == 1;
-    memo = 1;  // recursion: assume it may
-    const Operation& op = g_.op(id);
-    bool v = true;
-    if (std::holds_alternative<Primitive>(op) || std::holds_alternative<Colour>(op)) {
-      v = false;
-    } else if (const auto* sp = std::get_if<Split>(&op)) {
-      const int b = literal_axis(sp->axis);
-      if (b == a) {
-        // Along a: the last part ends the split unless it may be empty.
-        const SplitPart& last = sp->parts.back();
-        v = share_may_be_zero(last.size.value) || may_derive_nothing(last.child) || may_trail(last.child, a);
-      } else if (b >= 0) {
-        // Across: the parts that hold boxes all reach the split's end.
-        v = false;
-        for (const auto& part : sp->parts) v = v || (!vanishes(part.child) && may_trail(part.child, a));
-      }
-    } else if (const auto* rep = std::get_if<Repeat>(&op)) {
-      v = literal_axis(rep->axis) < 0 || may_trail(rep->child, a);
-    } else if (const auto* rn = std::get_if<RepeatN>(&op)) {
-      v = literal_axis(rn->axis) < 0 || may_trail(rn->child, a);
-    } else if (const auto* ch = std::get_if<Choose>(&op)) {
-      v = false;
-      for (const auto& o : ch->options) v = v || (!vanishes(o.child) && may_trail(o.child, a));
-    } else if (const auto* call = std::get_if<Call>(&op)) {
-      v = may_trail(g_.rules[call->rule].body, a);
-    }
-    trails_[static_cast<std::size_t>(id) * 3 + static_cast<std::size_t>(a)] = v ? 1 : 0;
-    return v;
-  }
-
-  // Can node `id` derive nothing at all in some case (a nil alternative,
-  // a zero share, a condition that fails)? Over-approximated like may_trail.
-  bool may_derive_nothing(NodeId id) {
-    std::int8_t& memo = nothing_[id];
-    if (memo >= 0) return memo == 1;
-    memo = 1;
-    const Operation& op = g_.op(id);
-    bool v = true;
-    if (std::holds_alternative<Primitive>(op) || std::holds_alternative<Colour>(op)) {
-      v = false;
-    } else if (const auto* sp = std::get_if<Split>(&op)) {
-      // Nothing at all only when every part may give nothing.
-      v = literal_axis(sp->axis) < 0;
-      bool all = true;
-      for (const auto& part : sp->parts)
-        all = all && (share_may_be_zero(part.size.value) || may_derive_nothing(part.child));
-      v = v || all;
-    } else if (const auto* rep = std::get_if<Repeat>(&op)) {
-      v = may_derive_nothing(rep->child);
-    } else if (const auto* ch = std::get_if<Choose>(&op)) {
-      v = false;
-      for (const auto& o : ch->options) {
-        const auto priority = o.priority.literal();
-        v = v || !o.condition.empty() || (!o.priority.empty() && !(priority && *priority > 0)) ||
-            may_derive_nothing(o.child);
-      }
-    } else if (const auto* call = std::get_if<Call>(&op)) {
-      v = may_derive_nothing(g_.rules[call->rule].body);
-    }
-    nothing_[id] = v ? 1 : 0;
-    return v;
-  }
-
-  static int literal_axis(const Expr& e) {
-    const ExprNode& root = e.node(e.root());
-    return e.nodes().size() == 1 && root.kind == ExprKind::Axis ? static_cast<int>(root.op) : -1;
-  }
-
-  // May a size be 0? Sizes that use parameters may; others are evaluated
-  // (constants are known, or unknowns with a support).
-  bool share_may_be_zero(const Expr& e) {
-    if (e.uses_params()) return true;
-    try {
-      const Support values = expression_support(e, lookup_);
-      return values.empty() || values.contains(0.0);
-    } catch (...) {
-      return true;
-    }
   }
 
   // ---- matching ----
@@ -586,7 +477,7 @@ class Matcher {
       st.parts[i].child = op.parts[i].child;
       st.parts[i].nil = std::holds_alternative<Nil>(child);
       st.parts[i].primitive = std::holds_alternative<Primitive>(child) || std::holds_alternative<Colour>(child);
-      st.parts[i].vanishes = vanishes(op.parts[i].child);
+      st.parts[i].vanishes = empty_.vanishes(op.parts[i].child);
     }
     return st;
   }
@@ -1135,12 +1026,10 @@ class Matcher {
   std::vector<std::uint64_t> path_{0};
   std::uint32_t slot_ = 0;
   std::vector<WitnessLine> witness_;
-  std::vector<std::int8_t> vanishes_;
-  std::vector<std::int8_t> trails_;
-  std::vector<std::int8_t> nothing_;
   std::unordered_map<const Expr*, Possible> fixed_values_;
   CutsCache cuts_;
   BindingLookup lookup_;
+  Emptiness empty_;
   Mismatch best_;
   std::string uncheckable_;
   bool open_ends_unsupported_ = false;
@@ -1389,7 +1278,7 @@ class SplitSearch {
     if (!floating_ || free_ || mode_ == Mode::Overflow || parts_[i].primitive || e >= last) return false;
     if (cuts_.between(e, e + 1) != 0 || cuts_.between(e - 1, e) == 0) return false;
     if (i + 1 == parts_.size() && mode_ != Mode::NoFill) return false;
-    return m_.may_trail(parts_[i].child, static_cast<int>(axis_));
+    return m_.empty_.may_trail(parts_[i].child, static_cast<int>(axis_));
   }
 
   // The lengths part i's child accepts beyond its last box, up to the next box.
