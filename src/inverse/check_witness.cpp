@@ -31,14 +31,14 @@ std::string witness_text(const Grammar& g, const WitnessLine& w) {
              origin_text(g, w.origin) + ")";
     case WitnessLine::Kind::Part: {
       const Size& size = std::get<Split>(g.op(w.node)).parts[w.index].size;
-      return rule + ", " + node_ref(g, w.node, w.rule) + ", part " + std::to_string(w.index + 1) + ": " +
-             num(w.value) + " (" + (size.relative ? "~" : "") + expr_text(g, size.value, w.rule) + ")";
+      return rule + ", " + node_ref(g, w.node, w.rule) + ", part " + std::to_string(w.index + 1) + ": " + num(w.value) +
+             " (" + (size.relative ? "~" : "") + expr_text(g, size.value, w.rule) + ")";
     }
     case WitnessLine::Kind::Tiles: {
       const Operation& op = g.op(w.node);
       const auto* r = std::get_if<Repeat>(&op);
-      const std::string what = r ? "size " + expr_text(g, r->size, w.rule)
-                                 : "count " + expr_text(g, std::get<RepeatN>(op).count, w.rule);
+      const std::string what =
+          r ? "size " + expr_text(g, r->size, w.rule) : "count " + expr_text(g, std::get<RepeatN>(op).count, w.rule);
       return rule + ", " + node_ref(g, w.node, w.rule) + ": " + num(w.value) + " tiles" +
              (w.size > 0 ? ", size " + num(w.size) : "") + " (" + what + ")";
     }
