@@ -1,0 +1,869 @@
+// The matcher's walk (check_matcher.hpp): one node at a time, each kind of
+// operation sent to where it is matched; terminals, nil, transforms and
+// comp faces here, with the evaluation of expressions they all use.
+#include "inverse/check_matcher.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "forward/evaluate.hpp"
+
+namespace vern::check_detail {
+
+Matcher::Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double tolerance, Budget& budget,
+                 DeterministicSubtrees& deterministic, std::vector<Slot> constants, std::vector<Unknown> unknowns,
+                 bool floating)
+    : g_(g),
+      boxes_(boxes),
+      tol_(tolerance),
+      budget_(budget),
+      deterministic_(deterministic),
+      vars_(std::move(constants), std::move(unknowns)),
+      cuts_(boxes, tolerance),
+      empty_(g, lookup_),
+      floating_(floating) {
+  lookup_ = [this](ExprKind kind, std::uint32_t index) { return vars_.binding(kind, index); };
+}
+
+bool Matcher::run(const Scope& start, const BoxList& all) {
+  const Rule& rule = g_.rules[g_.start_rule];
+  vars_.enter({g_.start_rule, {}});
+  if (!rule.params.empty()) {
+    depth_ = 0;
+    return fail(rule.body, start, "cannot check: the start rule '" + rule.label + "' takes parameters");
+  }
+  return match(rule.body, start, all);
+}
+
+void Matcher::restore(const Marks& m, bool keep) {
+  if (!keep) {
+    witness_.resize(m.witness);
+    vars_.undo(m.trail);
+  }
+  vars_.drop_unknowns(m.unknowns);
+}
+
+std::optional<Possible> Matcher::evaluate(const Expr& e, NodeId id, const Scope& s, const char* what,
+                                          std::size_t number) {
+  const bool fixed = std::none_of(e.nodes().begin(), e.nodes().end(), [&](const ExprNode& n) {
+    return n.kind == ExprKind::Param || (n.kind == ExprKind::Constant && vars_.constant(n.index).unknown >= 0);
+  });
+  if (fixed) {
+    const auto hit = fixed_values_.find(&e);
+    if (hit != fixed_values_.end()) return hit->second;
+  }
+  auto name = [&] { return std::string(what) + (number ? " " + std::to_string(number) : ""); };
+  try {
+    Possible p = possible_values(e, lookup_);
+    if (fixed) fixed_values_.emplace(&e, p);
+    return p;
+  } catch (const EvaluationError& err) {
+    if (recording()) fail(id, s, name() + " cannot be evaluated (" + err.message + "), so derive() fails here");
+  } catch (const NotCheckable& nc) {
+    cannot_check(id, s, name() + ": " + nc.message);
+  }
+  return std::nullopt;
+}
+
+std::optional<double> Matcher::exact_number(const Expr& e, NodeId id, const Scope& s, const char* what) {
+  auto p = evaluate(e, id, s, what);
+  if (!p) return std::nullopt;
+  if (!p->exact) {
+    cannot_check(id, s, std::string(what) + " is random (" + expr_text(e) + ")");
+    return std::nullopt;
+  }
+  if (!p->value.is_number()) {
+    if (recording()) fail(id, s, std::string(what) + " must be a number, found " + p->value.describe());
+    return std::nullopt;
+  }
+  return p->value.number();
+}
+
+std::optional<Axis> Matcher::exact_axis(const Expr& e, NodeId id, const Scope& s, const char* what) {
+  auto p = evaluate(e, id, s, what);
+  if (!p) return std::nullopt;
+  if (!p->exact) {
+    cannot_check(id, s, std::string(what) + " is random (" + expr_text(e) + ")");
+    return std::nullopt;
+  }
+  if (auto a = p->value.to_axis()) return a;
+  if (recording()) fail(id, s, std::string(what) + " must be an axis, found " + p->value.describe());
+  return std::nullopt;
+}
+
+bool Matcher::match(NodeId id, const Scope& s, const BoxList& inside) {
+  budget_.step();
+  const Marks m = marks();
+  ++depth_;
+  path_.push_back(derivation_path(path_.back(), id, slot_));
+  slot_ = 0;
+  // Only where the grammar below has one outcome and places contents
+  // with T or S: the one place the matcher may not follow it.
+  const bool placed = deterministic_.placed(id);
+  const Mismatch before = placed ? best_ : Mismatch{};
+  bool ok = dispatch(id, s, inside);
+  if (!ok && placed) {
+    restore(m, false);
+    ok = derives_here(id, s, inside, before);
+  }
+  path_.pop_back();
+  --depth_;
+  restore(m, ok);
+  return ok;
+}
+
+bool Matcher::derives_here(NodeId id, const Scope& s, const BoxList& inside, const Mismatch& before) {
+  for (std::size_t k = 0; k < inside.size(); ++k) budget_.step();
+  const auto why = deterministic_.difference(id, s, boxes_, inside, tol_, box_text);
+  if (quiet_ == 0) best_ = before;
+  if (!why) return true;
+  return fail(id, s, *why);
+}
+
+bool Matcher::dispatch(NodeId id, const Scope& s, const BoxList& inside) {
+  const Operation& op = g_.op(id);
+  if (const auto* p = std::get_if<Primitive>(&op)) return match_terminal(id, g_.label(p->label), s, inside);
+  if (std::holds_alternative<Colour>(op)) return match_terminal(id, "rect", s, inside);
+  if (std::holds_alternative<Nil>(op)) {
+    if (inside.empty()) return true;
+    return recording() && fail(id, s, "expected empty space, found " + list_boxes(inside));
+  }
+  if (const auto* sp = std::get_if<Split>(&op)) return match_split(id, *sp, s, inside);
+  if (std::holds_alternative<Repeat>(op) || std::holds_alternative<RepeatN>(op)) return match_repeat(id, s, inside);
+  if (const auto* c = std::get_if<Choose>(&op)) return match_choose(id, *c, s, inside);
+  if (const auto* c = std::get_if<Call>(&op)) return match_call(id, *c, s, inside);
+  if (const auto* c = std::get_if<Comp>(&op)) return match_comp(id, *c, s, inside);
+  if (auto f = transform(id, s)) return match(node_children(op)[0], (*f)(s), inside);
+  return false;
+}
+
+bool Matcher::match_terminal(NodeId id, const std::string& label, const Scope& s, const BoxList& inside) {
+  const Bounds b = world_bounds(s);
+  if (inside.empty()) return recording() && fail(id, s, "expected a '" + label + "' box filling the scope, found none");
+  if (inside.size() > 1)
+    return recording() &&
+           fail(id, s,
+                "expected one '" + label + "' box, found " + std::to_string(inside.size()) + ": " + list_boxes(inside));
+  const LabelledBox& box = boxes_[inside[0]];
+  if (box.label != label) return recording() && fail(id, s, "expected a '" + label + "' box, found " + box_text(box));
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(box.min[k] - b.min[k]) > tol_ || std::abs(box.max[k] - b.max[k]) > tol_)
+      return recording() && fail(id, s, "the box " + box_text(box) + " does not fill the scope");
+  return true;
+}
+
+std::optional<std::function<Scope(const Scope&)>> Matcher::transform(NodeId id, const Scope& s) {
+  const Operation& op = g_.op(id);
+  if (const auto* t = std::get_if<Translate>(&op)) {
+    std::array<double, 3> v{};
+    std::array<bool, 3> rel{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      auto x = exact_number(t->offset[i].value, id, s, "a T offset");
+      if (!x) return std::nullopt;
+      v[i] = *x;
+      rel[i] = t->offset[i].relative;
+    }
+    return [v, rel](const Scope& in) {
+      glm::dvec3 d(0.0);
+      for (int i = 0; i < 3; ++i) d[i] = rel[i] ? v[i] * in.size[i] : v[i];
+      Scope out = in;
+      out.origin += in.frame * d;
+      return out;
+    };
+  }
+  if (const auto* sc = std::get_if<Scale>(&op)) {
+    std::array<double, 3> v{};
+    std::array<bool, 3> rel{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      auto x = exact_number(sc->size[i].value, id, s, "an S size");
+      if (!x) return std::nullopt;
+      if (*x < 0) {
+        if (recording()) fail(id, s, "an S size is negative (" + num(*x) + "), so derive() fails here");
+        return std::nullopt;
+      }
+      v[i] = *x;
+      rel[i] = sc->size[i].relative;
+    }
+    return [v, rel](const Scope& in) {
+      Scope out = in;
+      for (int i = 0; i < 3; ++i) out.size[i] = rel[i] ? v[i] * in.size[i] : v[i];
+      return out;
+    };
+  }
+  if (const auto* r = std::get_if<Rotate>(&op)) {
+    const auto a = exact_axis(r->axis, id, s, "the axis of R");
+    if (!a) return std::nullopt;
+    const auto angle = exact_number(r->angle, id, s, "the angle of R");
+    if (!angle) return std::nullopt;
+    return [a = *a, angle = *angle](const Scope& in) { return rotated(in, a, angle); };
+  }
+  if (recording()) fail(id, s, std::string("unknown operation ") + operation_name(op));
+  return std::nullopt;
+}
+
+bool Matcher::match_comp(NodeId id, const Comp& op, const Scope& s, const BoxList& inside) {
+  std::vector<Scope> faces;
+  std::vector<BoxList> parts(op.parts.size());
+  for (const auto& part : op.parts) faces.push_back(face_scope(s, part.face));
+  for (std::uint32_t k : inside) {
+    const LabelledBox& b = boxes_[k];
+    bool placed = false;
+    for (std::size_t i = 0; i < faces.size() && !placed; ++i) {
+      const Bounds f = world_bounds(faces[i]);
+      bool within = true;
+      for (int w = 0; w < 3; ++w) within = within && b.min[w] >= f.min[w] - tol_ && b.max[w] <= f.max[w] + tol_;
+      if (within) {
+        parts[i].push_back(k);
+        placed = true;
+      }
+    }
+    if (!placed) return recording() && fail(id, s, "the box " + box_text(b) + " lies on none of the faces");
+  }
+  for (std::size_t i = 0; i < op.parts.size(); ++i)
+    if (!match(op.parts[i].child, faces[i], parts[i])) return false;
+  return true;
+}
+
+// ---- report ----
+// What the matcher reports (check_matcher.hpp): why the deepest attempt
+// failed, kept as text only when it is the deepest so far, and the
+// witness lines of a success.
+
+std::vector<MatchedPart> Matcher::matched_parts() const {
+  std::vector<MatchedPart> out;
+  for (const WitnessLine& w : witness_)
+    if (w.kind == WitnessLine::Kind::Part) out.push_back({w.path, w.node, w.index, w.length, w.value});
+  return out;
+}
+
+std::vector<std::string> Matcher::witness() const {
+  std::vector<std::string> out;
+  out.reserve(witness_.size());
+  for (const WitnessLine& w : witness_) out.push_back(witness_text(g_, w));
+  return out;
+}
+
+std::string Matcher::rule_label() const { return vars_.rule() == kNone ? "?" : g_.rules[vars_.rule()].label; }
+
+WitnessLine Matcher::line(WitnessLine::Kind kind, NodeId node) const {
+  WitnessLine w;
+  w.kind = kind;
+  w.rule = current_rule();
+  w.node = node;
+  return w;
+}
+
+void Matcher::note_value(NodeId node, const std::string& name, double v, const Origin& origin) {
+  WitnessLine w = line(WitnessLine::Kind::Value, node);
+  w.name = name;
+  w.value = v;
+  w.origin = origin;
+  witness_.push_back(std::move(w));
+}
+
+std::string Matcher::where(NodeId id, const Scope& s) const {
+  const Bounds b = world_bounds(s);
+  std::string t = "at " + rule_label();
+  if (vars_.rule() != kNone) t += " (" + loc_text(g_.rules[vars_.rule()].loc) + ")";
+  return t + ", " + node_ref(id) + " on " + bounds_text(b.min, b.max);
+}
+
+std::string Matcher::list_boxes(const BoxList& list) const {
+  std::string t;
+  for (std::size_t k = 0; k < list.size() && k < 3; ++k) t += (k ? ", " : "") + box_text(boxes_[list[k]]);
+  if (list.size() > 3) t += ", ... (" + std::to_string(list.size()) + " in all)";
+  return t;
+}
+
+bool Matcher::fail(NodeId id, const Scope& s, const std::string& what) {
+  if (quiet_ > 0) return false;
+  if (depth_ > best_.depth) best_ = {depth_, where(id, s) + ": " + what};
+  return false;
+}
+
+bool Matcher::cannot_check(NodeId id, const Scope& s, const std::string& what) {
+  if (quiet_ > 0) {
+    open_ends_unsupported_ = true;
+    return false;
+  }
+  if (uncheckable_.empty()) uncheckable_ = where(id, s) + ": " + what;
+  return fail(id, s, "cannot check: " + what);
+}
+
+// ---- split ----
+// Matching a split (check_matcher.hpp): its axis, the cuts of the boxes
+// along it and the sizes of its parts; the placements are searched by
+// SplitSearch (split_search.hpp), once for every sizing of few-valued
+// random values, in three modes (GRAMMAR.md "Sizes").
+
+std::string Matcher::sizes_text(const Split& op) const {
+  std::string t;
+  for (std::size_t i = 0; i < op.parts.size(); ++i) {
+    t += (i ? " : " : "");
+    t += (op.parts[i].size.relative ? "~" : "") + expr_text(op.parts[i].size.value);
+  }
+  return t;
+}
+
+std::optional<SplitSetup> Matcher::setup_split(NodeId id, const Split& op, const Scope& s, const BoxList& inside,
+                                               const FreeScope* fs) {
+  SplitSetup st;
+  const auto a = exact_axis(op.axis, id, s, "the axis of split");
+  if (!a) return std::nullopt;
+  st.axis = *a;
+  const auto am = axis_map(s, *a);
+  if (!am) {
+    cannot_check(id, s, "the scope is turned by an angle other than a quarter turn");
+    return std::nullopt;
+  }
+  st.am = *am;
+  st.length = s.size[static_cast<int>(*a)];
+  if (fs && am->world == fs->world) {
+    // Along the open axis: only a split whose start stays put is
+    // supported; the last box face ends what is fixed.
+    const Scope s0 = fs->at(fs->lmin);
+    if (std::abs(s0.origin[am->world] - s.origin[am->world]) > tol_) {
+      cannot_check(id, s, "a boundary in empty space at the start of a split");
+      return std::nullopt;
+    }
+    st.free_axis = true;
+    st.l0_length = s0.size[static_cast<int>(*a)];
+    st.l1_length = st.length;
+    double last = 0;
+    for (std::uint32_t k : inside)
+      last = std::max({last, am->local(boxes_[k].min[am->world]), am->local(boxes_[k].max[am->world])});
+    st.length = last;
+  }
+  st.cuts = cuts_.of(inside, *am, st.length);
+  if (!st.cuts->outside.empty()) {
+    if (recording()) fail(id, s, "the boxes " + list_boxes(st.cuts->outside) + " lie outside the scope");
+    return std::nullopt;
+  }
+  // Which unknowns the sizes use: few-valued ones are tried value by
+  // value, one continuous one is solved for per placement.
+  std::vector<int> open;
+  for (const auto& part : op.parts) vars_.open_unknowns(part.size.value, open);
+  std::vector<int> continuous;
+  for (int u : open) {
+    if (auto v = vars_.unknown(u).support.values(kMaxEnumerated)) {
+      st.finite.push_back(u);
+      st.finite_values.push_back(*v);
+    } else {
+      continuous.push_back(u);
+    }
+  }
+  if (continuous.size() > 1) {
+    std::string names;
+    for (int u : continuous) names += (names.empty() ? "" : ", ") + vars_.unknown(u).name;
+    cannot_check(id, s, "the sizes depend on several random values at once (" + names + ")");
+    return std::nullopt;
+  }
+  st.solve_for = continuous.empty() ? -1 : continuous[0];
+  st.parts.resize(op.parts.size());
+  for (std::size_t i = 0; i < op.parts.size(); ++i) {
+    const Operation& child = g_.op(op.parts[i].child);
+    st.parts[i].relative = op.parts[i].size.relative;
+    st.parts[i].child = op.parts[i].child;
+    st.parts[i].nil = std::holds_alternative<Nil>(child);
+    st.parts[i].primitive = std::holds_alternative<Primitive>(child) || std::holds_alternative<Colour>(child);
+    st.parts[i].vanishes = empty_.vanishes(op.parts[i].child);
+  }
+  return st;
+}
+
+bool Matcher::match_split(NodeId id, const Split& op, const Scope& s, const BoxList& inside) {
+  auto st = setup_split(id, op, s, inside, nullptr);
+  if (!st) return false;
+  bool any_sized = false;
+  const bool found = each_sizing(id, op, s, *st, [&] {
+    double abs_max = 0;
+    bool zero_relative = true, any_absolute = false;
+    for (const auto& p : st->parts) {
+      if (p.relative) {
+        zero_relative = zero_relative && p.share.contains(0.0);
+      } else {
+        abs_max += p.share.upper();
+        any_absolute = true;
+      }
+    }
+    SplitSearch search(*this, id, op, s, *st, nullptr);
+    const bool overflow = any_absolute && abs_max >= st->length - tol_;
+    // First with every boundary on a cut, then with ends in empty space.
+    bool ok = false;
+    for (bool floating : {false, true})
+      ok = ok || ((!floating || floating_) &&
+                  (search.run(Mode::Fill, floating) || (overflow && search.run(Mode::Overflow, floating)) ||
+                   (zero_relative && search.run(Mode::NoFill, floating))));
+    any_sized = any_sized || search.any_sized();
+    return ok;
+  });
+  if (found) return true;
+  if (st->cuts->at.size() < 2 && !inside.empty())
+    return recording() &&
+           fail(id, s, "the scope has no length along " + expr_text(op.axis) + " but holds " + list_boxes(inside));
+  if (!any_sized)
+    return recording() && fail(id, s,
+                               "no placement of the parts on the cuts of the example's boxes fits sizes " +
+                                   sizes_text(op) + " (cuts at " + cuts_text(*st->cuts, st->am) + ")");
+  return recording() &&
+         fail(id, s, "the parts' contents do not match for any placement that fits sizes " + sizes_text(op));
+}
+
+// ---- repeat ----
+// Matching repeat and repeatN (check_matcher.hpp): the tile counts their
+// size or count allows, tried in order; a count fits when no box crosses a
+// tile boundary and every tile's child matches its boxes.
+
+std::string Matcher::repeat_what(NodeId id) const {
+  const Operation& op = g_.op(id);
+  if (const auto* r = std::get_if<Repeat>(&op)) return "size " + expr_text(r->size);
+  return "count " + expr_text(std::get<RepeatN>(op).count);
+}
+
+std::optional<std::vector<TileCount>> Matcher::tile_counts(NodeId id, const Scope& s, Axis a, bool& random) {
+  const Operation& op = g_.op(id);
+  const double length = s.size[static_cast<int>(a)];
+  std::vector<TileCount> out;
+  if (const auto* r = std::get_if<Repeat>(&op)) {
+    auto size = evaluate(r->size, id, s, "the tile size");
+    if (!size) return std::nullopt;
+    random = !size->exact;
+    auto count_for = [&](double tile) { return repeat_tile_count(length, tile); };
+    const Support sizes = size->support.clamp(std::numeric_limits<double>::min(), kInf);
+    if (sizes.empty()) {
+      if (recording()) fail(id, s, "the tile size " + expr_text(r->size) + " is never > 0, so derive() fails here");
+      return std::nullopt;
+    }
+    if (size->exact) return std::vector<TileCount>{{count_for(sizes.lower()), sizes.lower()}};
+    const double n_min = count_for(sizes.upper()), n_max = count_for(sizes.lower());
+    if (!std::isfinite(n_max) || n_max - n_min > kMaxTileCounts) {
+      cannot_check(id, s, "the tile size " + expr_text(r->size) + " allows too many tile counts");
+      return std::nullopt;
+    }
+    for (double n = n_min; n <= n_max; n += 1) {
+      // Some size of the support must give exactly n tiles.
+      const Support fitting = sizes.clamp(length / n * (1 - 1e-9), n > 1 ? length / (n - 1) : kInf);
+      if (!fitting.empty())
+        out.push_back({n, fitting.bounded() ? (fitting.lower() + fitting.upper()) / 2 : fitting.lower()});
+    }
+    return out;
+  }
+  const auto& rn = std::get<RepeatN>(op);
+  auto count = evaluate(rn.count, id, s, "the count of repeatN");
+  if (!count) return std::nullopt;
+  random = !count->exact;
+  std::vector<double> counts;
+  if (auto values = count->support.values(kMaxEnumerated)) {
+    for (double v : *values) counts.push_back(std::round(v));
+  } else {
+    if (!count->support.bounded() || count->support.upper() - count->support.lower() > kMaxTileCounts) {
+      cannot_check(id, s, "the count " + expr_text(rn.count) + " allows too many tile counts");
+      return std::nullopt;
+    }
+    for (double v = std::round(count->support.lower()); v <= std::round(count->support.upper()); v += 1)
+      if (count->support.contains(v, 0.5)) counts.push_back(v);
+  }
+  std::sort(counts.begin(), counts.end());
+  counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
+  for (double n : counts) out.push_back({std::max(n, 0.0), 0});
+  return out;
+}
+
+bool Matcher::tiles_fit(const BoxList& inside, const AxisMap& am, double length, std::uint64_t n,
+                        std::vector<BoxList>& tiles) const {
+  const double tile = length / static_cast<double>(n);
+  tiles.assign(n, {});
+  for (std::uint32_t k : inside) {
+    double t0 = am.local(boxes_[k].min[am.world]), t1 = am.local(boxes_[k].max[am.world]);
+    if (t0 > t1) std::swap(t0, t1);
+    if (t0 < -tol_ || t1 > length + tol_) return false;
+    std::uint64_t i = tile > 0 ? static_cast<std::uint64_t>(std::max(0.0, std::floor((t0 + tol_) / tile))) : 0;
+    i = std::min(i, n - 1);
+    // The box must end by the end of its tile: otherwise it crosses a boundary.
+    if (i + 1 < n && t1 > tile * static_cast<double>(i + 1) + tol_) return false;
+    tiles[i].push_back(k);
+  }
+  return true;
+}
+
+std::optional<Matcher::RepeatSetup> Matcher::setup_repeat(NodeId id, const Scope& s) {
+  const Operation& op = g_.op(id);
+  const auto* r = std::get_if<Repeat>(&op);
+  const auto* rn = std::get_if<RepeatN>(&op);
+  RepeatSetup st;
+  const auto a = exact_axis(r ? r->axis : rn->axis, id, s, r ? "the axis of repeat" : "the axis of repeatN");
+  if (!a) return std::nullopt;
+  st.axis = *a;
+  st.am = axis_map(s, *a);
+  st.child = r ? r->child : rn->child;
+  auto counts = tile_counts(id, s, *a, st.random);
+  if (!counts) return std::nullopt;
+  st.counts = std::move(*counts);
+  return st;
+}
+
+bool Matcher::match_repeat(NodeId id, const Scope& s, const BoxList& inside) {
+  auto st = setup_repeat(id, s);
+  if (!st) return false;
+  const double length = s.size[static_cast<int>(st->axis)];
+  std::vector<BoxList> tiles;
+  std::string tried;
+  for (const TileCount& c : st->counts) {
+    budget_.step();
+    const std::size_t mark = witness_.size();
+    if (st->random) {
+      WitnessLine w = line(WitnessLine::Kind::Tiles, id);
+      w.value = c.n;
+      w.size = c.size;
+      witness_.push_back(std::move(w));
+    }
+    if (c.n <= 0) {
+      if (inside.empty()) return true;
+      witness_.resize(mark);
+      continue;
+    }
+    if (!st->am) return cannot_check(id, s, "the scope is turned by an angle other than a quarter turn");
+    const auto n = static_cast<std::uint64_t>(c.n);
+    if (tiles_fit(inside, *st->am, length, n, tiles)) {
+      const double tile = length / c.n;
+      bool ok = true;
+      for (std::uint64_t i = 0; i < n && ok; ++i)
+        ok = match(st->child, s.slice(st->axis, tile * static_cast<double>(i), tile), tiles[i]);
+      if (ok) return true;
+    } else if (tried.size() < 200) {
+      tried += (tried.empty() ? "" : ", ") + num(c.n);
+    }
+    witness_.resize(mark);
+  }
+  if (!recording()) return false;
+  if (st->counts.empty()) return fail(id, s, "no tile count fits the tile " + repeat_what(id));
+  if (tried.empty())
+    return fail(id, s, "the tiles' contents do not match for any tile count of the " + repeat_what(id));
+  return fail(id, s, "boxes cross the tile boundaries of " + tried + " tiles (" + repeat_what(id) + ")");
+}
+
+// ---- choices ----
+// Matching alternatives and rule calls (check_matcher.hpp). Alternatives
+// are tried in order, those whose condition can hold and whose priority
+// can be > 0; a call's random arguments are tried value by value when they
+// have few values and become unknowns (check_bindings.hpp) otherwise.
+
+std::optional<Matcher::Options> Matcher::options_of(NodeId id, const Choose& op, const Scope& s) {
+  Options o;
+  o.applicable.assign(op.options.size(), false);
+  for (std::size_t i = 0; i < op.options.size(); ++i) {
+    const ChooseOption& opt = op.options[i];
+    bool can_hold = true, can_fail = false;
+    if (!opt.condition.empty()) {
+      auto c = evaluate(opt.condition, id, s, "the condition of alternative", i + 1);
+      if (!c) return std::nullopt;
+      can_hold = !c->support.empty() && !(c->support.is_point() && c->support.lower() == 0.0);
+      can_fail = c->support.contains(0.0);
+    }
+    bool can_win = true, can_lose = false;
+    if (can_hold && !opt.priority.empty()) {
+      auto p = evaluate(opt.priority, id, s, "the priority of alternative", i + 1);
+      if (!p) return std::nullopt;
+      can_win = p->support.upper() > 0;
+      can_lose = p->support.lower() <= 0;
+    }
+    o.applicable[i] = can_hold && can_win;
+    o.any = o.any || o.applicable[i];
+    o.nil_possible = o.nil_possible && (!o.applicable[i] || can_fail || can_lose);
+  }
+  return o;
+}
+
+bool Matcher::match_choose(NodeId id, const Choose& op, const Scope& s, const BoxList& inside) {
+  auto o = options_of(id, op, s);
+  if (!o) return false;
+  for (std::size_t i = 0; i < op.options.size(); ++i) {
+    if (!o->applicable[i]) continue;
+    const std::size_t mark = witness_.size();
+    if (op.options.size() > 1) {
+      WitnessLine w = line(WitnessLine::Kind::Alternative, id);
+      w.index = i;
+      w.count = op.options.size();
+      witness_.push_back(std::move(w));
+    }
+    slot_ = static_cast<std::uint32_t>(i + 1);
+    if (match(op.options[i].child, s, inside)) return true;
+    witness_.resize(mark);
+  }
+  if (o->nil_possible && inside.empty()) {
+    witness_.push_back(line(WitnessLine::Kind::NoAlternative, id));
+    return true;
+  }
+  const std::string name = check_detail::choose_name(g_, id, current_rule());
+  if (!o->any)
+    return recording() && fail(id, s,
+                               "no alternative of '" + name + "' applies here (conditions false or priorities <= 0), " +
+                                   "so it derives nothing, but the example has " + list_boxes(inside));
+  return recording() && fail(id, s, "no alternative of '" + name + "' matches");
+}
+
+std::optional<std::pair<Frame, std::vector<ArgChoice>>> Matcher::setup_call(NodeId id, const Call& op, const Scope& s) {
+  const Rule& callee = g_.rules[op.rule];
+  if (vars_.depth() >= kMaxDepth) {
+    if (recording())
+      fail(id, s, "rule calls nested deeper than " + std::to_string(kMaxDepth) + " (derive() stops there)");
+    return std::nullopt;
+  }
+  Frame frame{op.rule, std::vector<Slot>(op.args.size())};
+  std::vector<ArgChoice> choices;
+  for (std::size_t k = 0; k < op.args.size(); ++k) {
+    const Expr& arg = op.args[k];
+    const ExprNode& root = arg.node(arg.root());
+    // A parameter or constant passed on keeps its identity: a random
+    // value used twice stays one value.
+    if (arg.nodes().size() == 1 && (root.kind == ExprKind::Param || root.kind == ExprKind::Constant)) {
+      frame.params[k] = root.kind == ExprKind::Param ? vars_.param(root.index) : vars_.constant(root.index);
+      continue;
+    }
+    auto p = evaluate(arg, id, s, "argument", k + 1);
+    if (!p) return std::nullopt;
+    if (p->exact) {
+      frame.params[k].value = p->value;
+    } else if (auto values = p->support.values(kMaxEnumerated)) {
+      if (values->empty()) {
+        if (recording())
+          fail(id, s,
+               "argument " + std::to_string(k + 1) + " of " + callee.label + " (" + expr_text(arg) +
+                   ") has no possible value");
+        return std::nullopt;
+      }
+      choices.push_back({k, *values});
+    } else {
+      // Continuous: an unknown, pinned down by the first split that uses it.
+      frame.params[k].unknown = vars_.add({p->support, std::nullopt, k < callee.params.size() ? callee.params[k] : "?",
+                                           Origin{&arg, current_rule(), id}});
+    }
+  }
+  return std::make_pair(std::move(frame), std::move(choices));
+}
+
+bool Matcher::match_call(NodeId id, const Call& op, const Scope& s, const BoxList& inside) {
+  auto setup = setup_call(id, op, s);
+  if (!setup) return false;
+  const NodeId body_id = g_.rules[op.rule].body;
+  auto body = [&] { return match(body_id, s, inside); };
+  return each_binding(id, op, setup->first, setup->second, 0, body);
+}
+
+// ---- lengths ----
+// Length queries (check_matcher.hpp, check_free_scope.hpp): for a part
+// that ends in empty space, the lengths at which its child derives exactly
+// its boxes. Each kind of operation answers for its own scope: terminals
+// by their world bounds, splits by their placements (SplitSearch collects
+// instead of matching), repeats by their tile counts.
+
+Support Matcher::lengths(NodeId id, const FreeScope& fs, const BoxList& inside) {
+  budget_.step();
+  const Marks m = marks();
+  ++depth_;
+  ++quiet_;
+  Support r = lengths_dispatch(id, fs, inside);
+  --quiet_;
+  --depth_;
+  restore(m, false);
+  return r.clamp(fs.lmin, fs.lmax);
+}
+
+Support Matcher::lengths_dispatch(NodeId id, const FreeScope& fs, const BoxList& inside) {
+  const Operation& op = g_.op(id);
+  const Support all = Support::range(fs.lmin, fs.lmax);
+  if (const auto* p = std::get_if<Primitive>(&op)) return lengths_terminal(g_.label(p->label), fs, inside);
+  if (std::holds_alternative<Colour>(op)) return lengths_terminal("rect", fs, inside);
+  if (std::holds_alternative<Nil>(op)) return inside.empty() ? all : Support{};
+  if (const auto* sp = std::get_if<Split>(&op)) return lengths_split(id, *sp, fs, inside);
+  const Scope probe = fs.at(fs.lmax);
+  if (std::holds_alternative<Repeat>(op) || std::holds_alternative<RepeatN>(op)) return lengths_repeat(id, fs, inside);
+  if (const auto* c = std::get_if<Choose>(&op)) {
+    auto o = options_of(id, *c, probe);
+    if (!o) return {};
+    Support acc = o->nil_possible && inside.empty() ? all : Support{};
+    for (std::size_t i = 0; i < c->options.size(); ++i)
+      if (o->applicable[i]) acc = acc.unite(lengths(c->options[i].child, fs, inside));
+    return acc;
+  }
+  if (const auto* c = std::get_if<Call>(&op)) {
+    auto setup = setup_call(id, *c, probe);
+    if (!setup) return {};
+    const NodeId body_id = g_.rules[c->rule].body;
+    Support acc;
+    auto body = [&] {
+      acc = acc.unite(lengths(body_id, fs, inside));
+      return false;
+    };
+    each_binding(id, *c, setup->first, setup->second, 0, body);
+    return acc;
+  }
+  if (std::holds_alternative<Comp>(op)) {
+    open_ends_unsupported_ = true;
+    return {};
+  }
+  if (auto f = transform(id, probe)) return lengths(node_children(op)[0], compose(fs, *f), inside);
+  return {};
+}
+
+Support Matcher::lengths_terminal(const std::string& label, const FreeScope& fs, const BoxList& inside) {
+  if (inside.size() != 1 || boxes_[inside[0]].label != label) return {};
+  const LabelledBox& b = boxes_[inside[0]];
+  const int w = fs.world;
+  auto fits = [&](double l) {
+    const Bounds sb = world_bounds(fs.at(l));
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(b.min[k] - sb.min[k]) > tol_ || std::abs(b.max[k] - sb.max[k]) > tol_) return false;
+    return true;
+  };
+  if (!(fs.lmax > fs.lmin)) return fits(fs.lmax) ? Support::point(fs.lmax) : Support{};
+  const Bounds b0 = world_bounds(fs.at(fs.lmin)), b1 = world_bounds(fs.at(fs.lmax));
+  const double span = fs.lmax - fs.lmin;
+  const double dlo = (b1.min[w] - b0.min[w]) / span, dhi = (b1.max[w] - b0.max[w]) / span;
+  double l;
+  if (std::abs(dhi) > 1e-12)
+    l = fs.lmin + (b.max[w] - b0.max[w]) / dhi;
+  else if (std::abs(dlo) > 1e-12)
+    l = fs.lmin + (b.min[w] - b0.min[w]) / dlo;
+  else
+    return fits(fs.lmin) ? Support::range(fs.lmin, fs.lmax) : Support{};
+  if (l < fs.lmin - tol_ || l > fs.lmax + tol_) return {};
+  l = std::clamp(l, fs.lmin, fs.lmax);
+  return fits(l) ? Support::point(l) : Support{};
+}
+
+Support Matcher::lengths_repeat(NodeId id, const FreeScope& fs, const BoxList& inside) {
+  const Scope probe = fs.at(fs.lmax);
+  auto st = setup_repeat(id, probe);
+  if (!st) return {};
+  if (!st->am) {
+    open_ends_unsupported_ = true;
+    return {};
+  }
+  if (st->am->world == fs.world) return lengths_repeat_along(id, fs, inside, *st);
+  const double length = probe.size[static_cast<int>(st->axis)];
+  std::vector<BoxList> tiles;
+  Support acc;
+  for (const TileCount& c : st->counts) {
+    budget_.step();
+    if (c.n <= 0) {
+      if (inside.empty()) acc = Support::range(fs.lmin, fs.lmax);
+      continue;
+    }
+    const auto n = static_cast<std::uint64_t>(c.n);
+    if (!tiles_fit(inside, *st->am, length, n, tiles)) continue;
+    const double tile = length / c.n;
+    Support here = Support::range(fs.lmin, fs.lmax);
+    for (std::uint64_t i = 0; i < n && !here.empty(); ++i) {
+      const Axis a = st->axis;
+      const double from = tile * static_cast<double>(i);
+      here = here.intersect(lengths(
+          st->child, compose(fs, [a, from, tile](const Scope& sc) { return sc.slice(a, from, tile); }), tiles[i]));
+    }
+    acc = acc.unite(here);
+  }
+  return acc;
+}
+
+Support Matcher::lengths_repeat_along(NodeId id, const FreeScope& fs, const BoxList& inside, const RepeatSetup& st) {
+  const Scope s0 = fs.at(fs.lmin), s1 = fs.at(fs.lmax);
+  const AxisMap& am = *st.am;
+  const int a = static_cast<int>(st.axis);
+  const Support all = Support::range(fs.lmin, fs.lmax);
+  const double span = fs.lmax - fs.lmin, l0 = s0.size[a], l1 = s1.size[a];
+  if (!(span > 0) || std::abs(l1 - l0) < 1e-12 * std::max(1.0, span)) return match(id, s1, inside) ? all : Support{};
+  if (std::abs(s0.origin[am.world] - s1.origin[am.world]) > tol_) {
+    open_ends_unsupported_ = true;  // the tiles start at the moving end
+    return {};
+  }
+  const double slope = (l1 - l0) / span;
+  auto l_of = [&](double length) { return fs.lmin + (length - l0) / slope; };
+  const Operation& op = g_.op(id);
+  const auto* rep = std::get_if<Repeat>(&op);
+  Support sizes;
+  if (rep) {
+    auto size = evaluate(rep->size, id, s1, "the tile size");
+    if (!size) return {};
+    sizes = size->support.clamp(std::numeric_limits<double>::min(), kInf);
+  }
+  // Does some tile size give n tiles on length L? (repeatN: its counts.)
+  auto count_fits = [&](double n, double length) {
+    if (!rep) return std::any_of(st.counts.begin(), st.counts.end(), [&](const TileCount& c) { return c.n == n; });
+    return !sizes.clamp(length / n * (1 - 1e-9), n > 1 ? length / (n - 1) : kInf).empty();
+  };
+  double last = 0;
+  std::vector<double> faces;
+  for (std::uint32_t k : inside)
+    for (double w : {boxes_[k].min[am.world], boxes_[k].max[am.world]}) {
+      faces.push_back(am.local(w));
+      last = std::max(last, faces.back());
+    }
+  std::sort(faces.begin(), faces.end());
+  Support acc;
+  // One tile: the scope itself.
+  if (rep) {
+    if (sizes.upper() >= l0 * (1 - 1e-9))
+      acc = lengths(st.child, fs, inside).clamp(fs.lmin, sizes.upper() >= l1 ? fs.lmax : l_of(sizes.upper()));
+  } else if (count_fits(1, 0)) {
+    acc = lengths(st.child, fs, inside);
+  }
+  double n_max = rep ? std::floor(l1 / sizes.lower()) + 1 : 0;
+  for (const TileCount& c : st.counts) n_max = std::max(n_max, c.n);
+  n_max = std::min(n_max, static_cast<double>(2 * inside.size() + 2));
+  std::vector<BoxList> tiles;
+  for (double n = 2; n <= n_max; n += 1) {
+    double previous = -kInf;
+    for (double c : faces) {
+      budget_.step();
+      const double length = n * c;
+      if (c - previous <= tol_ || length < last - tol_ || length > l1 + tol_ || length < l0 - tol_) continue;
+      previous = c;
+      if (!count_fits(n, length)) continue;
+      const double l = std::clamp(l_of(length), fs.lmin, fs.lmax);
+      const Scope sc = fs.at(l);
+      const auto count = static_cast<std::uint64_t>(n);
+      if (!tiles_fit(inside, am, sc.size[a], count, tiles)) continue;
+      const double tile = sc.size[a] / n;
+      bool ok = true;
+      for (std::uint64_t i = 0; i < count && ok; ++i)
+        ok = match(st.child, sc.slice(st.axis, tile * static_cast<double>(i), tile), tiles[i]);
+      if (ok) acc = acc.unite(Support::point(l));
+    }
+  }
+  return acc;
+}
+
+Support Matcher::lengths_split(NodeId id, const Split& op, const FreeScope& fs, const BoxList& inside) {
+  const Scope probe = fs.at(fs.lmax);
+  auto st = setup_split(id, op, probe, inside, &fs);
+  if (!st) return {};
+  Support acc;
+  each_sizing(id, op, probe, *st, [&] {
+    bool zero_relative = true, any_absolute = false;
+    for (const auto& p : st->parts) {
+      if (p.relative)
+        zero_relative = zero_relative && p.share.contains(0.0);
+      else
+        any_absolute = true;
+    }
+    SplitSearch search(*this, id, op, probe, *st, &fs);
+    search.run(Mode::Fill);
+    if (any_absolute) search.run(Mode::Overflow);
+    if (zero_relative) search.run(Mode::NoFill);
+    acc = acc.unite(search.collected());
+    return false;
+  });
+  return acc;
+}
+
+}  // namespace vern::check_detail

@@ -1,0 +1,734 @@
+// The search for a split's placement (split_search.hpp): part by part,
+// each one empty or spanning cuts, narrowing the possible scale as it
+// goes; a placement that fits the sizes is completed by matching the
+// parts' children.
+#include "inverse/split_search.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "forward/evaluate.hpp"
+#include "inverse/check_matcher.hpp"
+
+namespace vern::check_detail {
+
+SplitSearch::SplitSearch(Matcher& m, NodeId id, const Split& op, const Scope& s, SplitSetup& st, const FreeScope* free)
+    : m_(m),
+      id_(id),
+      op_(op),
+      s_(s),
+      st_(st),
+      cuts_(*st.cuts),
+      parts_(st.parts),
+      axis_(st.axis),
+      length_(st.length),
+      tol_(m.tol_),
+      free_(free),
+      placement_(st.parts.size()) {}
+
+bool SplitSearch::run(Mode mode, bool floating) {
+  mode_ = mode;
+  floating_ = floating;
+  return place(0, 0, 0, parts_.size(), initial());
+}
+
+ScaleState SplitSearch::initial(bool track_set) const {
+  ScaleState sc;
+  sc.track_set = track_set;
+  if (mode_ == Mode::Fill) sc.limit(kTiny, kInf);
+  if (mode_ == Mode::Overflow) sc.limit(1.0, kInf);
+  return sc;
+}
+
+bool SplitSearch::may_float(std::size_t i, std::size_t e) const {
+  const std::size_t last = cuts_.at.size() - 1;
+  if (!floating_ || free_ || mode_ == Mode::Overflow || parts_[i].primitive || e >= last) return false;
+  if (cuts_.between(e, e + 1) != 0 || cuts_.between(e - 1, e) == 0) return false;
+  if (i + 1 == parts_.size() && mode_ != Mode::NoFill) return false;
+  return m_.empty_.may_trail(parts_[i].child, static_cast<int>(axis_));
+}
+
+const Support& SplitSearch::floating_lengths(std::size_t i, std::size_t j, std::size_t e) {
+  const auto key = std::make_tuple(i, j, e);
+  auto hit = floating_memo_.find(key);
+  if (hit != floating_memo_.end()) return hit->second;
+  const std::size_t last = cuts_.at.size() - 1;
+  std::size_t g = e;
+  while (g < last && cuts_.between(g, g + 1) == 0) ++g;
+  FreeScope fs{[s = s_, a = axis_, from = at(j)](double l) { return s.slice(a, from, l); }, st_.am.world,
+               at(e) - at(j) + tol_, at(g) - at(j)};
+  Support result = fs.lmin <= fs.lmax ? m_.lengths(parts_[i].child, fs, cuts_.boxes(j, e)) : Support{};
+  return floating_memo_[key] = std::move(result);
+}
+
+bool SplitSearch::close_checked(std::size_t floating, std::size_t first, std::size_t last, std::size_t anchor,
+                                double end, bool final, ScaleState& sc) const {
+  close_run(floating, first, last, anchor, end, final, sc);
+  return sc.ok();
+}
+
+bool SplitSearch::resolve_floating(ScaleState& sc) {
+  bool asked = false;
+  for (std::size_t f = 0; f < parts_.size(); ++f) {
+    Placement& pl = placement_[f];
+    if (!pl.floating || pl.queried) continue;
+    pl.lengths = floating_lengths(f, pl.from, pl.to);
+    pl.queried = true;
+    asked = true;
+  }
+  if (!asked) return true;
+  sc = replay();
+  return sc.ok();
+}
+
+bool SplitSearch::place(std::size_t i, std::size_t anchor, std::size_t run_first, std::size_t floating, ScaleState sc) {
+  m_.budget_.step();
+  const std::size_t n = parts_.size();
+  const std::size_t last = cuts_.at.size() - 1;
+  if (i == n) {
+    if (cuts_.between(anchor, last) != 0) return false;
+    if (free_axis()) {
+      collect_open_end(anchor, run_first, sc);
+      return false;
+    }
+    if (!close_checked(floating, run_first, n, anchor, length_, true, sc) || !resolve_floating(sc)) return false;
+    any_sized_ = true;
+    return complete(sc);
+  }
+  const PartInfo& p = parts_[i];
+  if (may_be_empty(p, run_first == i)) {
+    placement_[i] = {};
+    if (place(i + 1, anchor, run_first, floating, sc)) return true;
+  }
+  if (!may_hold_boxes(p)) return false;
+  // A floating part needs empty parts after it.
+  if (floating < n && run_first == i) return false;
+  // After empty parts the part may begin anywhere up to the first box.
+  std::size_t last_start = anchor;
+  if (run_first < i)
+    while (last_start < last && cuts_.between(anchor, last_start + 1) == 0) ++last_start;
+  for (std::size_t j = anchor; j <= last_start; ++j) {
+    ScaleState sj = sc;
+    if (!close_checked(floating, run_first, i, anchor, at(j), false, sj)) continue;
+    for (std::size_t e = j + 1; e <= last; ++e) {
+      const std::size_t count = cuts_.between(j, e);
+      if (count == 0) continue;
+      if (p.primitive && count > 1) break;
+      const double len = at(e) - at(j);
+      if (len <= tol_) continue;  // a part of zero length is not derived
+      ScaleState se = sj;
+      constrain_filled(p, len, se);
+      if (se.ok()) {
+        placement_[i] = {true, false, j, e, {}, len};
+        if (place(i + 1, e, i + 1, none(), se)) return true;
+      }
+      if (may_float(i, e)) {
+        std::size_t g = e;
+        while (g < last && cuts_.between(g, g + 1) == 0) ++g;
+        placement_[i] = {true, true, j, e, Support::range(at(e) - at(j) + tol_, at(g) - at(j)), 0, false};
+        if (place(i + 1, e, i + 1, i, sj)) return true;
+      }
+    }
+  }
+  return false;
+}
+
+std::vector<SplitSearch::Run> SplitSearch::runs() const {
+  std::vector<Run> out;
+  const std::size_t n = parts_.size();
+  std::size_t anchor = 0, floating = n, i = 0;
+  while (true) {
+    std::size_t j = i;
+    while (j < n && !placement_[j].filled) ++j;
+    const bool final = j == n;
+    const double end = final ? length_ : at(placement_[j].from);
+    if (j > i || floating < n || final) out.push_back({i, j, anchor, end, final, floating});
+    if (final) return out;
+    anchor = placement_[j].to;
+    floating = placement_[j].floating ? j : n;
+    i = j + 1;
+  }
+}
+
+double SplitSearch::run_start(const Run& r) const {
+  return r.floating < parts_.size() ? at(placement_[r.floating].from) + placement_[r.floating].length : at(r.anchor);
+}
+
+ScaleState SplitSearch::replay(bool track_set) const {
+  ScaleState sc = initial(track_set);
+  for (std::size_t i = 0; i < parts_.size(); ++i)
+    if (placement_[i].filled && !placement_[i].floating)
+      constrain_filled(parts_[i], at(placement_[i].to) - at(placement_[i].from), sc);
+  for (const Run& r : runs()) close_run(r.floating, r.first, r.last, r.anchor, r.end, r.final, sc);
+  return sc;
+}
+
+double SplitSearch::pick_scale(const ScaleState& sc) const {
+  const Support set = sc.set();
+  if (mode_ == Mode::NoFill || set.empty()) return 1;
+  const auto& [lo, hi] = set.intervals.front();
+  return std::isfinite(hi) ? (lo + hi) / 2 : std::max(lo, 1.0);
+}
+
+bool SplitSearch::complete(const ScaleState& sized) {
+  if (free_) return collect_across(sized);
+  const std::size_t witness_mark = m_.witness_.size(), trail_mark = m_.vars_.trail_size();
+  auto give_up = [&] {
+    m_.witness_.resize(witness_mark);
+    m_.vars_.undo(trail_mark);
+    if (st_.solve_for >= 0) refresh_shares();
+    return false;
+  };
+  ScaleState sc = sized;
+  if (st_.solve_for >= 0) {
+    const auto v = solve();
+    if (!v) return false;
+    m_.vars_.bind(st_.solve_for, *v);
+    refresh_shares();
+    sc = replay();
+    const Unknown& u = m_.vars_.unknown(st_.solve_for);
+    m_.note_value(id_, u.name, *v, u.origin);
+  }
+  const double k = pick_scale(sc);
+  for (const Run& r : runs()) {
+    if (r.floating >= parts_.size()) continue;
+    const auto l = floating_length(r.floating, r.first, r.last, r.end, r.final, k);
+    if (!l) return give_up();
+    placement_[r.floating].length = *l;
+  }
+  add_witness(k);
+  if (children_match(true)) return true;
+  return give_up();
+}
+
+bool SplitSearch::children_match(bool lone_runs) {
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const Placement& pl = placement_[i];
+    if (!pl.filled) continue;
+    const double from = at(pl.from), len = pl.floating ? pl.length : at(pl.to) - from;
+    const auto key = std::make_tuple(i, pl.from, pl.to);
+    const bool memo = st_.solve_for < 0 && !pl.floating;
+    if (memo) {
+      const auto hit = memo_.find(key);
+      if (hit != memo_.end()) {
+        if (!hit->second.first) return false;
+        m_.witness_.insert(m_.witness_.end(), hit->second.second.begin(), hit->second.second.end());
+        continue;
+      }
+    }
+    const std::size_t mark = m_.witness_.size(), trail = m_.vars_.trail_size();
+    m_.slot_ = static_cast<std::uint32_t>(i + 1);
+    const bool ok = m_.match(parts_[i].child, s_.slice(axis_, from, len), cuts_.boxes(pl.from, pl.to));
+    // Remember the result unless it pinned down an unknown from outside.
+    if (memo && m_.vars_.trail_size() == trail)
+      memo_[key] = {
+          ok, std::vector<WitnessLine>(m_.witness_.begin() + static_cast<std::ptrdiff_t>(mark), m_.witness_.end())};
+    if (!ok) return false;
+  }
+  if (!lone_runs) return true;
+  for (const Run& r : runs()) {
+    const double start = run_start(r), gap = r.end - start;
+    if (r.last - r.first != 1 || gap <= tol_ || (r.final && mode_ == Mode::NoFill)) continue;
+    const PartInfo& p = parts_[r.first];
+    if (p.vanishes || (p.relative && mode_ == Mode::Overflow)) continue;
+    m_.slot_ = static_cast<std::uint32_t>(r.first + 1);
+    if (!m_.match(p.child, s_.slice(axis_, start, gap), {})) return false;
+  }
+  return true;
+}
+
+void SplitSearch::add_witness(double k) {
+  std::vector<double> value(parts_.size(), 0.0), length(parts_.size(), 0.0);
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const Placement& pl = placement_[i];
+    if (!pl.filled) continue;
+    const double len = pl.floating ? pl.length : at(pl.to) - at(pl.from);
+    length[i] = len;
+    value[i] = mode_ == Mode::Fill && parts_[i].relative ? len / k : (mode_ == Mode::Overflow ? len * k : len);
+  }
+  for (const Run& r : runs()) {
+    // Shares interpolated between their bounds so the run's lengths add up.
+    double lo = 0, hi = 0;
+    for (std::size_t i = r.first; i < r.last; ++i) {
+      const PartInfo& p = parts_[i];
+      if (p.relative && mode_ != Mode::Fill) continue;
+      const double f = p.relative ? k : 1.0;
+      lo += f * p.share.lower();
+      hi += f * p.share.upper();
+    }
+    const double gap = r.end - run_start(r);
+    const double target = mode_ == Mode::Overflow ? gap * k : gap;
+    double t = 0;
+    if (std::isfinite(hi) && hi > lo && !(r.final && mode_ == Mode::NoFill))
+      t = std::clamp((target - lo) / (hi - lo), 0.0, 1.0);
+    for (std::size_t i = r.first; i < r.last; ++i) {
+      const Support& sh = parts_[i].share;
+      value[i] = std::isfinite(sh.upper()) ? sh.lower() + t * (sh.upper() - sh.lower()) : sh.lower();
+      const bool shares = parts_[i].relative && mode_ == Mode::Fill;
+      length[i] =
+          mode_ == Mode::Overflow ? (parts_[i].relative ? 0.0 : value[i] / k) : (shares ? value[i] * k : value[i]);
+    }
+  }
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    if (!parts_[i].random) continue;
+    WitnessLine w = m_.line(WitnessLine::Kind::Part, id_);
+    w.index = i;
+    w.value = value[i];
+    w.path = m_.path_.back();
+    w.length = length[i];
+    m_.witness_.push_back(std::move(w));
+  }
+}
+
+// ---- split sizes ----
+// What a split's part sizes allow of a placement (split_search.hpp): each
+// part or run of empty parts narrows the scale (check_scale.hpp), or adds
+// to the penalty where a fixed length misses its size.
+
+void SplitSearch::constrain_filled(const PartInfo& p, double len, ScaleState& sc) const {
+  switch (mode_) {
+    case Mode::Fill:
+      if (!p.relative) return sc.require(distance_to(p.share, len) - tol_);
+      if (!sc.track_set || (p.share.intervals.size() == 1 && !p.share.integer))
+        return sc.limit((len - tol_) / p.share.upper(), p.share.lower() > 0 ? (len + tol_) / p.share.lower() : kInf);
+      return sc.limit(ratio(len, p.share));
+    case Mode::Overflow:
+      if (p.relative) return sc.require(len);
+      if (!sc.track_set || (p.share.intervals.size() == 1 && !p.share.integer))
+        return sc.limit(p.share.lower() / (len + tol_), len > tol_ ? p.share.upper() / (len - tol_) : kInf);
+      return sc.limit(inverse_ratio(p.share, len));
+    case Mode::NoFill:
+      if (p.relative) return sc.require(len);
+      return sc.require(distance_to(p.share, len) - tol_);
+  }
+}
+
+Support SplitSearch::ratio(double len, const Support& share) const {
+  Support out;
+  for (const auto& [lo, hi] : hull_if_integer(share).intervals)
+    if (hi > 0) out = out.unite(Support::range((len - tol_) / hi, lo > 0 ? (len + tol_) / lo : kInf));
+  return out;
+}
+
+Support SplitSearch::inverse_ratio(const Support& share, double len) const {
+  Support out;
+  for (const auto& [lo, hi] : hull_if_integer(share).intervals)
+    out = out.unite(Support::range(lo / (len + tol_), len > tol_ ? hi / (len - tol_) : kInf));
+  return out;
+}
+
+bool SplitSearch::may_be_empty(const PartInfo& p, bool starts_run) const {
+  if (p.vanishes || starts_run) return true;
+  if (mode_ == Mode::Overflow && p.relative) return true;
+  return p.share.contains(0.0);
+}
+
+bool SplitSearch::may_hold_boxes(const PartInfo& p) const {
+  if (p.nil || p.vanishes) return false;
+  return !(p.relative && mode_ != Mode::Fill);
+}
+
+SplitSearch::RunSums SplitSearch::run_sums(std::size_t first, std::size_t last, bool final) const {
+  // A lone part between two fixed ends may derive nothing at positive
+  // length (matched for real in complete()); in a longer run, or where
+  // the end is open, a part that derives something must have length 0.
+  const bool lone = last - first == 1 && !(final && (mode_ == Mode::NoFill || free_axis()));
+  RunSums r;
+  for (std::size_t i = first; i < last; ++i) {
+    const PartInfo& p = parts_[i];
+    if (p.relative && mode_ == Mode::Overflow) continue;
+    Support share = p.share;
+    if ((p.relative && mode_ == Mode::NoFill) || (!p.vanishes && !lone)) {
+      if (!share.contains(0.0)) r.possible = false;
+      share = Support::point(0.0);
+    }
+    (p.relative ? r.rl : r.al) += share.lower();
+    (p.relative ? r.rh : r.ah) += share.upper();
+  }
+  return r;
+}
+
+void SplitSearch::constrain_run(std::size_t first, std::size_t last, double gap, bool final, ScaleState& sc) const {
+  const RunSums r = run_sums(first, last, final);
+  if (!r.possible) return sc.require(kInf);
+  switch (mode_) {
+    case Mode::Fill: {
+      // gap = k * r + a for some r in [rl, rh], a in [al, ah].
+      const double upper = r.rl > 0 ? (gap + tol_ - r.al) / r.rl : kInf;
+      const double lower = r.rh > 0 ? (gap - tol_ - r.ah) / r.rh : -kInf;
+      if (r.rl <= 0) sc.require(r.al - gap - tol_);
+      if (r.rh <= 0) sc.require(gap - tol_ - r.ah);
+      return sc.limit(lower, upper);
+    }
+    case Mode::Overflow:
+      // The absolute parts here, shrunk by c, fill the gap.
+      return sc.limit(r.al / (gap + tol_), gap > tol_ ? r.ah / (gap - tol_) : kInf);
+    case Mode::NoFill:
+      sc.require(r.al - gap - tol_);
+      if (!final) sc.require(gap - tol_ - r.ah);
+      return;
+  }
+}
+
+void SplitSearch::floating_lines(std::size_t f, const RunSums& r, double end, bool final,
+                                 std::pair<double, double> share, std::pair<double, double> len,
+                                 std::vector<Line>& lowers, std::vector<Line>& uppers) const {
+  const PartInfo& p = parts_[f];
+  const bool scaled = mode_ == Mode::Fill;
+  const bool rel = p.relative && scaled;
+  const double total = end - at(placement_[f].from);
+  const double ah = final && mode_ == Mode::NoFill ? kInf : r.ah;
+  lowers.clear();
+  uppers.clear();
+  lowers.push_back(rel ? Line{share.first, 0} : Line{0, share.first});
+  if (std::isfinite(share.second)) uppers.push_back(rel ? Line{share.second, 0} : Line{0, share.second});
+  lowers.push_back({0, len.first});
+  uppers.push_back({0, len.second});
+  // The run's length, total - length, lies within [k rl + al, k rh + ah].
+  if (std::isfinite(ah) && std::isfinite(r.rh)) lowers.push_back({scaled ? -r.rh : 0, total - ah});
+  uppers.push_back({scaled ? -r.rl : 0, total - r.al});
+}
+
+void SplitSearch::constrain_floating(std::size_t f, std::size_t first, std::size_t last, double end, bool final,
+                                     ScaleState& sc) const {
+  const RunSums r = run_sums(first, last, final);
+  if (!r.possible) return sc.require(kInf);
+  const bool scaled = mode_ == Mode::Fill;
+  const double klo = scaled ? std::max(sc.lo, kTiny) : 0, khi = scaled ? sc.hi : 0;
+  Support ks;
+  double excess = kInf;
+  std::vector<Line> lowers, uppers;
+  for (const auto& share : hull_if_integer(parts_[f].share).intervals)
+    for (const auto& len : placement_[f].lengths.intervals) {
+      floating_lines(f, r, end, final, share, len, lowers, uppers);
+      const auto [a, b] = feasible_scales(lowers, uppers, klo, khi, tol_);
+      if (a <= b)
+        ks = ks.unite(Support::range(a, b));
+      else
+        excess = std::min(excess, least_excess(lowers, uppers, klo, khi));
+    }
+  if (ks.empty()) return sc.require(std::max(excess, kTiny));
+  if (scaled) sc.limit(ks);
+}
+
+std::optional<double> SplitSearch::floating_length(std::size_t f, std::size_t first, std::size_t last, double end,
+                                                   bool final, double k) const {
+  const RunSums r = run_sums(first, last, final);
+  std::vector<Line> lowers, uppers;
+  const double kk = mode_ == Mode::Fill ? k : 0;
+  for (const auto& share : hull_if_integer(parts_[f].share).intervals)
+    for (const auto& len : placement_[f].lengths.intervals) {
+      floating_lines(f, r, end, final, share, len, lowers, uppers);
+      double lo = -kInf, hi = kInf;
+      for (const Line& l : lowers) lo = std::max(lo, l.slope * kk + l.offset);
+      for (const Line& l : uppers) hi = std::min(hi, l.slope * kk + l.offset);
+      if (lo <= hi + tol_) return std::clamp((lo + hi) / 2, len.first, len.second);
+    }
+  return std::nullopt;
+}
+
+void SplitSearch::close_run(std::size_t floating, std::size_t first, std::size_t last, std::size_t anchor, double end,
+                            bool final, ScaleState& sc) const {
+  if (floating < parts_.size()) return constrain_floating(floating, first, last, end, final, sc);
+  if (first < last) return constrain_run(first, last, end - at(anchor), final, sc);
+  if (final && mode_ != Mode::NoFill) sc.require(end - at(anchor) - tol_);
+}
+
+// ---- split solve ----
+// Solving for the one continuous random value a split's sizes use
+// (split_search.hpp): the value that makes a placement fit, found from the
+// lengths when the sizes are linear in it, else by scanning its support.
+
+double SplitSearch::violation(const ScaleState& sc) const {
+  double v = sc.penalty / tol_;
+  if (sc.lo > sc.hi) v += (sc.lo - sc.hi) / std::max({std::abs(sc.hi), std::abs(sc.lo), 1e-300});
+  if (v == 0 && !sc.ok()) v = 1e-12;
+  return v;
+}
+
+bool SplitSearch::refresh_shares() {
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    try {
+      parts_[i].share = expression_support(op_.parts[i].size.value, m_.lookup_).clamp(0, kInf);
+    } catch (const EvaluationError&) {
+      return false;
+    } catch (const NotCheckable&) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<double> SplitSearch::linear_guesses(Unknown& u) {
+  std::vector<double> out;
+  if (mode_ != Mode::Fill) return out;
+  const double lo = u.support.lower(), hi = u.support.upper();
+  const double u0 = lo + (hi - lo) / 4, step = (hi - lo) / 4;
+  if (!(step > 0)) return out;
+  std::vector<std::array<double, 3>> size(parts_.size());
+  std::vector<bool> linear(parts_.size(), true);
+  for (int k = 0; k < 3; ++k) {
+    u.value = u0 + k * step;
+    const bool ok = refresh_shares();
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+      if (!ok || !parts_[i].share.is_point())
+        linear[i] = false;
+      else
+        size[i][static_cast<std::size_t>(k)] = parts_[i].share.lower();
+    }
+  }
+  u.value.reset();
+  refresh_shares();
+  struct SizeLine {  // size = a + b * unknown, on a part this long
+    double a, b, length;
+    bool relative;
+  };
+  std::vector<SizeLine> lines;
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const Placement& pl = placement_[i];
+    if (!linear[i] || !pl.filled || pl.floating) continue;
+    const auto& v = size[i];
+    const double b = (v[1] - v[0]) / step;
+    if (std::abs((v[2] - v[1]) - (v[1] - v[0])) > 1e-9 * std::max(1.0, std::abs(v[2]))) continue;
+    lines.push_back({v[0] - b * u0, b, at(pl.to) - at(pl.from), parts_[i].relative});
+  }
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const SizeLine& p = lines[i];
+    if (!p.relative) {
+      if (p.b != 0) out.push_back((p.length - p.a) / p.b);
+      continue;
+    }
+    // Two relative parts: their lengths in the ratio of their sizes.
+    for (std::size_t j = i + 1; j < lines.size(); ++j) {
+      const SizeLine& q = lines[j];
+      if (!q.relative) continue;
+      const double d = p.length * q.b - q.length * p.b;
+      if (d != 0) out.push_back((q.length * p.a - p.length * q.a) / d);
+    }
+  }
+  // Every size a point on a line: the relative parts share what the
+  // absolute ones leave of the scope, so one part holding boxes is
+  // enough (a tower of share s1 under air of share 77 - s1).
+  if (std::ranges::all_of(linear, [](bool l) { return l; })) {
+    double sum_a = 0, sum_b = 0, fixed = 0;
+    bool absolute_move = false;
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+      const auto& v = size[i];
+      const double b = (v[1] - v[0]) / step;
+      if (parts_[i].relative) {
+        sum_a += v[0] - b * u0;
+        sum_b += b;
+      } else {
+        fixed += v[0];
+        absolute_move = absolute_move || b != 0;
+      }
+    }
+    const double rest = length_ - fixed;
+    if (!absolute_move && rest > 0)
+      for (const SizeLine& p : lines) {
+        if (!p.relative) continue;
+        // length * (sum_a + sum_b u) = (a + b u) * rest
+        const double d = p.length * sum_b - p.b * rest;
+        if (d != 0) out.push_back((p.a * rest - p.length * sum_a) / d);
+      }
+  }
+  std::erase_if(out, [&](double v) { return !(v >= lo && v <= hi); });
+  return out;
+}
+
+template <typename Fits>
+double SplitSearch::centre(double v, Fits& fits) const {
+  const Unknown& u = m_.vars_.unknown(st_.solve_for);
+  double lo_bound = u.support.lower(), hi_bound = u.support.upper();
+  for (const auto& [lo, hi] : u.support.intervals)
+    if (v >= lo && v <= hi) lo_bound = lo, hi_bound = hi;
+  auto edge = [&](double bound) {
+    if (fits(bound)) return bound;
+    double in = v, out = bound;
+    for (int k = 0; k < 12; ++k) {  // to 2.4e-4 of the stretch: plenty for a middle
+      const double mid = (in + out) / 2;
+      (fits(mid) ? in : out) = mid;
+    }
+    return in;
+  };
+  if (lo_bound == hi_bound) return v;
+  return (edge(lo_bound) + edge(hi_bound)) / 2;
+}
+
+std::optional<double> SplitSearch::solve() {
+  Unknown& u = m_.vars_.unknown(st_.solve_for);
+  auto misfit = [&](double v) {
+    u.value = v;
+    const double r = refresh_shares() ? violation(replay(false)) : kInf;
+    u.value.reset();
+    return r;
+  };
+  auto fits = [&](double v) {
+    u.value = v;
+    const bool ok = refresh_shares() && replay().ok();
+    u.value.reset();
+    return ok;
+  };
+  std::optional<double> found;
+  if (!u.support.values(256) && u.support.bounded())
+    for (double v : linear_guesses(u))
+      if (fits(v)) return v;
+  if (auto values = u.support.values(256)) {
+    for (double v : *values)
+      if (fits(v)) {
+        found = v;
+        break;
+      }
+  } else if (u.support.bounded()) {
+    std::vector<double> xs;
+    for (const auto& [lo, hi] : u.support.intervals)
+      for (int k = 0; k <= 32; ++k) xs.push_back(lo + (hi - lo) * k / 32.0);
+    std::vector<double> fs;
+    for (double x : xs) {
+      m_.budget_.step();
+      fs.push_back(misfit(x));
+      if (fs.back() == 0 && fits(x)) {
+        found = x;
+        break;
+      }
+    }
+    if (found) xs.clear();
+    // Refine around the lowest few local minima of the scan: the misfit
+    // mixes terms that jump where a share reaches 0, so the lowest
+    // sample need not lie in the basin of the solution.
+    std::vector<std::size_t> minima;
+    for (std::size_t i = 0; i < xs.size(); ++i)
+      if ((i == 0 || fs[i] <= fs[i - 1]) && (i + 1 == xs.size() || fs[i] <= fs[i + 1])) minima.push_back(i);
+    std::sort(minima.begin(), minima.end(), [&](std::size_t p, std::size_t q) { return fs[p] < fs[q]; });
+    if (minima.size() > 6) minima.resize(6);
+    for (std::size_t best : minima) {
+      double a = std::max(xs[best > 0 ? best - 1 : best], u.support.lower());
+      double b = std::min(xs[best + 1 < xs.size() ? best + 1 : best], u.support.upper());
+      const double phi = (std::sqrt(5.0) - 1) / 2;
+      double c = b - phi * (b - a), d = a + phi * (b - a);
+      double fc = misfit(c), fd = misfit(d);
+      // Until the bracket is float noise or a point fits (misfit 0).
+      for (int k = 0; k < 80 && fc > 0 && fd > 0 && b - a > 1e-15 * std::max(1.0, std::abs(b)); ++k) {
+        m_.budget_.step();
+        if (fc <= fd) {
+          b = d;
+          d = c;
+          fd = fc;
+          c = b - phi * (b - a);
+          fc = misfit(c);
+        } else {
+          a = c;
+          c = d;
+          fc = fd;
+          d = a + phi * (b - a);
+          fd = misfit(d);
+        }
+      }
+      for (double v : {fc == 0 ? c : d, xs[best], (a + b) / 2, c, d})
+        if (u.support.contains(v, 0) && fits(v)) {
+          found = v;
+          break;
+        }
+      if (found) break;
+    }
+  }
+  if (found) {
+    auto zero = [&](double v) { return misfit(v) == 0; };
+    const double mid = centre(*found, zero);
+    if (fits(mid)) found = mid;
+  }
+  refresh_shares();
+  return found;
+}
+
+// ---- lengths ----
+// Length queries through a split: SplitSearch collects the lengths its
+// placements allow instead of matching.
+
+bool SplitSearch::collect_across(const ScaleState&) {
+  const std::size_t trail_mark = m_.vars_.trail_size();
+  if (st_.solve_for >= 0) {
+    const auto v = solve();
+    if (!v) return false;
+    m_.vars_.bind(st_.solve_for, *v);
+    refresh_shares();
+  }
+  auto part_scope = [&](double from, double len) {
+    return compose(*free_, [a = axis_, from, len](const Scope& sc) { return sc.slice(a, from, len); });
+  };
+  Support acc = Support::range(free_->lmin, free_->lmax);
+  for (std::size_t i = 0; i < parts_.size() && !acc.empty(); ++i) {
+    const Placement& pl = placement_[i];
+    if (!pl.filled) continue;
+    const auto key = std::make_tuple(i, pl.from, pl.to);
+    auto hit = lengths_memo_.find(key);
+    if (hit == lengths_memo_.end() || st_.solve_for >= 0)
+      hit = lengths_memo_
+                .insert_or_assign(key, m_.lengths(parts_[i].child, part_scope(at(pl.from), at(pl.to) - at(pl.from)),
+                                                  cuts_.boxes(pl.from, pl.to)))
+                .first;
+    acc = acc.intersect(hit->second);
+  }
+  for (const Run& r : runs()) {
+    if (acc.empty()) break;
+    const double start = run_start(r), gap = r.end - start;
+    if (r.last - r.first != 1 || gap <= tol_ || (r.final && mode_ == Mode::NoFill)) continue;
+    const PartInfo& p = parts_[r.first];
+    if (p.vanishes || (p.relative && mode_ == Mode::Overflow)) continue;
+    acc = acc.intersect(m_.lengths(p.child, part_scope(start, gap), {}));
+  }
+  collected_ = collected_.unite(acc);
+  m_.vars_.undo(trail_mark);
+  if (st_.solve_for >= 0) refresh_shares();
+  return false;
+}
+
+void SplitSearch::collect_open_end(std::size_t anchor, std::size_t run_first, const ScaleState& sc) {
+  if (!sc.ok()) return;
+  const RunSums r = run_sums(run_first, parts_.size(), true);
+  if (!r.possible) return;
+  Support gaps;
+  switch (mode_) {
+    case Mode::Fill:
+      for (const auto& [ka, kb] : sc.set().intervals)
+        gaps = gaps.unite(Support::range(ka * r.rl + r.al - tol_, (r.rh > 0 ? kb * r.rh : 0.0) + r.ah + tol_));
+      break;
+    case Mode::Overflow:
+      for (const auto& [ca, cb] : sc.set().intervals)
+        gaps = gaps.unite(Support::range(std::isfinite(cb) ? r.al / cb - tol_ : -tol_, r.ah / ca + tol_));
+      break;
+    case Mode::NoFill:
+      gaps = Support::range(r.al - tol_, kInf);
+      break;
+  }
+  // The scope's length moves linearly with l.
+  const double span = free_->lmax - free_->lmin;
+  const double slope = span > 0 ? (st_.l1_length - st_.l0_length) / span : 0;
+  Support ls;
+  for (const auto& [g0, g1] : gaps.intervals) {
+    if (std::abs(slope) > 1e-12) {
+      ls = ls.unite(Support::range(free_->lmin + (at(anchor) + g0 - st_.l0_length) / slope,
+                                   free_->lmin + (at(anchor) + g1 - st_.l0_length) / slope));
+    } else if (st_.l0_length - at(anchor) >= g0 && st_.l0_length - at(anchor) <= g1) {
+      ls = Support::range(free_->lmin, free_->lmax);
+    }
+  }
+  ls = ls.clamp(free_->lmin, free_->lmax);
+  if (ls.empty()) return;
+  any_sized_ = true;
+  const std::size_t witness_mark = m_.witness_.size(), trail_mark = m_.vars_.trail_size();
+  if (children_match(false)) collected_ = collected_.unite(ls);
+  m_.witness_.resize(witness_mark);
+  m_.vars_.undo(trail_mark);
+}
+
+}  // namespace vern::check_detail
