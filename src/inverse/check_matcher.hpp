@@ -5,6 +5,7 @@
 // inside each scope, for one choice of the random constants (check.cpp
 // tries them). Each kind of operation is matched in a file of its own:
 //   check_matcher.cpp  the walk: terminals, nil, transforms, comp faces, expressions
+//   check_report.cpp   what a match leaves: the deepest failure, the witness
 // A match that fails takes back what it added (witness lines, bindings of
 // unknowns), so the walk is a plain backtracking search.
 #pragma once
@@ -92,7 +93,7 @@ class Matcher {
   Marks marks() const { return {witness_.size(), vars_.trail_size(), vars_.unknown_count()}; }
   void restore(const Marks& m, bool keep);
 
-  // ---- messages and witness (check_matcher.cpp) ----
+  // ---- messages and witness (check_report.cpp) ----
 
   std::string rule_label() const;
   RuleId current_rule() const { return vars_.rule(); }
