@@ -5,6 +5,7 @@
 // inside each scope, for one choice of the random constants (check.cpp
 // tries them). Each kind of operation is matched in a file of its own:
 //   check_matcher.cpp  the walk: terminals, nil, transforms, comp faces, expressions
+//   check_split.cpp    splits (their placements are searched by split_search.hpp)
 //   check_report.cpp   what a match leaves: the deepest failure, the witness
 // A match that fails takes back what it added (witness lines, bindings of
 // unknowns), so the walk is a plain backtracking search.
@@ -136,7 +137,7 @@ class Matcher {
   std::optional<std::function<Scope(const Scope&)>> transform(NodeId id, const Scope& s);
   bool match_comp(NodeId id, const Comp& op, const Scope& s, const BoxList& inside);
 
-  // ---- splits (check_matcher.cpp) ----
+  // ---- splits (check_split.cpp) ----
 
   // "~2 : ~1", for messages.
   std::string sizes_text(const Split& op) const;
