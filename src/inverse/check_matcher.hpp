@@ -6,6 +6,7 @@
 // tries them). Each kind of operation is matched in a file of its own:
 //   check_matcher.cpp  the walk: terminals, nil, transforms, comp faces, expressions
 //   check_split.cpp    splits (their placements are searched by split_search.hpp)
+//   check_repeat.cpp   repeat and repeatN: which tile counts, which boxes per tile
 //   check_report.cpp   what a match leaves: the deepest failure, the witness
 // A match that fails takes back what it added (witness lines, bindings of
 // unknowns), so the walk is a plain backtracking search.
@@ -151,7 +152,7 @@ class Matcher {
   bool each_sizing(NodeId id, const Split& op, const Scope& s, SplitSetup& st, F f);
   bool match_split(NodeId id, const Split& op, const Scope& s, const BoxList& inside);
 
-  // ---- repeats (check_matcher.cpp) ----
+  // ---- repeats (check_repeat.cpp) ----
 
   // "size 1" or "count randint(3, 5)": what decides a repeat's tile count.
   std::string repeat_what(NodeId id) const;
