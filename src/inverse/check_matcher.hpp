@@ -7,6 +7,7 @@
 //   check_matcher.cpp  the walk: terminals, nil, transforms, comp faces, expressions
 //   check_split.cpp    splits (their placements are searched by split_search.hpp)
 //   check_repeat.cpp   repeat and repeatN: which tile counts, which boxes per tile
+//   check_choices.cpp  alternatives and rule calls with their arguments
 //   check_report.cpp   what a match leaves: the deepest failure, the witness
 // A match that fails takes back what it added (witness lines, bindings of
 // unknowns), so the walk is a plain backtracking search.
@@ -171,7 +172,7 @@ class Matcher {
   std::optional<RepeatSetup> setup_repeat(NodeId id, const Scope& s);
   bool match_repeat(NodeId id, const Scope& s, const BoxList& inside);
 
-  // ---- choices and calls (check_matcher.cpp) ----
+  // ---- choices and calls (check_choices.cpp) ----
 
   struct Options {
     std::vector<bool> applicable;
