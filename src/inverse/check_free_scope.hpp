@@ -3,7 +3,7 @@
 // A split part whose end lies in empty space, where no box face marks it
 // (the top of a skyscraper plot above its towers), has no length the cuts
 // could give. Its child is asked instead which lengths it accepts
-// (Matcher::lengths, check_matcher.cpp): at(l) is the scope the part would
+// (Matcher::lengths, check_lengths.cpp): at(l) is the scope the part would
 // have at length l, and operations below compose their own change of scope
 // with it, so the question reaches the terminals, whose world bounds move
 // linearly with l.

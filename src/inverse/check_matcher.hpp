@@ -8,6 +8,7 @@
 //   check_split.cpp    splits (their placements are searched by split_search.hpp)
 //   check_repeat.cpp   repeat and repeatN: which tile counts, which boxes per tile
 //   check_choices.cpp  alternatives and rule calls with their arguments
+//   check_lengths.cpp  length queries: which lengths along an open axis a node accepts
 //   check_report.cpp   what a match leaves: the deepest failure, the witness
 // A match that fails takes back what it added (witness lines, bindings of
 // unknowns), so the walk is a plain backtracking search.
@@ -191,7 +192,7 @@ class Matcher {
                     F& body);
   bool match_call(NodeId id, const Call& op, const Scope& s, const BoxList& inside);
 
-  // ---- length queries: which lengths along an open axis fit (check_matcher.cpp) ----
+  // ---- length queries: which lengths along an open axis fit (check_lengths.cpp) ----
 
   // The lengths l in [fs.lmin, fs.lmax] for which node `id`, run on
   // fs.at(l), derives exactly `inside`. A query: it leaves no witness,

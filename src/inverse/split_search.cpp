@@ -8,12 +8,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <optional>
-#include <string>
 #include <tuple>
 #include <utility>
-#include <variant>
 #include <vector>
 
 #include "forward/evaluate.hpp"
@@ -648,87 +645,6 @@ std::optional<double> SplitSearch::solve() {
   }
   refresh_shares();
   return found;
-}
-
-// ---- lengths ----
-// Length queries through a split: SplitSearch collects the lengths its
-// placements allow instead of matching.
-
-bool SplitSearch::collect_across(const ScaleState&) {
-  const std::size_t trail_mark = m_.vars_.trail_size();
-  if (st_.solve_for >= 0) {
-    const auto v = solve();
-    if (!v) return false;
-    m_.vars_.bind(st_.solve_for, *v);
-    refresh_shares();
-  }
-  auto part_scope = [&](double from, double len) {
-    return compose(*free_, [a = axis_, from, len](const Scope& sc) { return sc.slice(a, from, len); });
-  };
-  Support acc = Support::range(free_->lmin, free_->lmax);
-  for (std::size_t i = 0; i < parts_.size() && !acc.empty(); ++i) {
-    const Placement& pl = placement_[i];
-    if (!pl.filled) continue;
-    const auto key = std::make_tuple(i, pl.from, pl.to);
-    auto hit = lengths_memo_.find(key);
-    if (hit == lengths_memo_.end() || st_.solve_for >= 0)
-      hit = lengths_memo_
-                .insert_or_assign(key, m_.lengths(parts_[i].child, part_scope(at(pl.from), at(pl.to) - at(pl.from)),
-                                                  cuts_.boxes(pl.from, pl.to)))
-                .first;
-    acc = acc.intersect(hit->second);
-  }
-  for (const Run& r : runs()) {
-    if (acc.empty()) break;
-    const double start = run_start(r), gap = r.end - start;
-    if (r.last - r.first != 1 || gap <= tol_ || (r.final && mode_ == Mode::NoFill)) continue;
-    const PartInfo& p = parts_[r.first];
-    if (p.vanishes || (p.relative && mode_ == Mode::Overflow)) continue;
-    acc = acc.intersect(m_.lengths(p.child, part_scope(start, gap), {}));
-  }
-  collected_ = collected_.unite(acc);
-  m_.vars_.undo(trail_mark);
-  if (st_.solve_for >= 0) refresh_shares();
-  return false;
-}
-
-void SplitSearch::collect_open_end(std::size_t anchor, std::size_t run_first, const ScaleState& sc) {
-  if (!sc.ok()) return;
-  const RunSums r = run_sums(run_first, parts_.size(), true);
-  if (!r.possible) return;
-  Support gaps;
-  switch (mode_) {
-    case Mode::Fill:
-      for (const auto& [ka, kb] : sc.set().intervals)
-        gaps = gaps.unite(Support::range(ka * r.rl + r.al - tol_, (r.rh > 0 ? kb * r.rh : 0.0) + r.ah + tol_));
-      break;
-    case Mode::Overflow:
-      for (const auto& [ca, cb] : sc.set().intervals)
-        gaps = gaps.unite(Support::range(std::isfinite(cb) ? r.al / cb - tol_ : -tol_, r.ah / ca + tol_));
-      break;
-    case Mode::NoFill:
-      gaps = Support::range(r.al - tol_, kInf);
-      break;
-  }
-  // The scope's length moves linearly with l.
-  const double span = free_->lmax - free_->lmin;
-  const double slope = span > 0 ? (st_.l1_length - st_.l0_length) / span : 0;
-  Support ls;
-  for (const auto& [g0, g1] : gaps.intervals) {
-    if (std::abs(slope) > 1e-12) {
-      ls = ls.unite(Support::range(free_->lmin + (at(anchor) + g0 - st_.l0_length) / slope,
-                                   free_->lmin + (at(anchor) + g1 - st_.l0_length) / slope));
-    } else if (st_.l0_length - at(anchor) >= g0 && st_.l0_length - at(anchor) <= g1) {
-      ls = Support::range(free_->lmin, free_->lmax);
-    }
-  }
-  ls = ls.clamp(free_->lmin, free_->lmax);
-  if (ls.empty()) return;
-  any_sized_ = true;
-  const std::size_t witness_mark = m_.witness_.size(), trail_mark = m_.vars_.trail_size();
-  if (children_match(false)) collected_ = collected_.unite(ls);
-  m_.witness_.resize(witness_mark);
-  m_.vars_.undo(trail_mark);
 }
 
 }  // namespace vern::check_detail

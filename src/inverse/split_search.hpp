@@ -16,7 +16,7 @@
 //
 // The search itself is in split_search.cpp; what the part sizes allow of a
 // placement in split_search.cpp; solving for a continuous random value the
-// sizes use in split_search.cpp; the length queries in check_matcher.cpp.
+// sizes use in split_search.cpp; the length queries in check_lengths.cpp.
 #pragma once
 
 #include <cstddef>
@@ -196,7 +196,7 @@ class SplitSearch {
   template <typename Fits>
   double centre(double v, Fits& fits) const;
 
-  // ---- length queries (check_matcher.cpp) ----
+  // ---- length queries (check_lengths.cpp) ----
 
   // Query across the open axis: the lengths every child accepts.
   bool collect_across(const ScaleState&);
