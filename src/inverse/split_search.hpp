@@ -15,7 +15,7 @@
 // last run of empty space can stretch to.
 //
 // The search itself is in split_search.cpp; what the part sizes allow of a
-// placement in split_search.cpp; solving for a continuous random value the
+// placement in split_sizes.cpp; solving for a continuous random value the
 // sizes use in split_search.cpp; the length queries in check_lengths.cpp.
 #pragma once
 
@@ -95,7 +95,7 @@ class SplitSearch {
   std::size_t none() const { return parts_.size(); }
   double at(std::size_t cut) const { return cuts_.at[cut]; }
 
-  // ---- the size constraints (split_search.cpp) ----
+  // ---- the size constraints (split_sizes.cpp) ----
 
   // A part that holds boxes, of length len.
   void constrain_filled(const PartInfo& p, double len, ScaleState& sc) const;
