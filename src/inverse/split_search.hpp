@@ -16,7 +16,7 @@
 //
 // The search itself is in split_search.cpp; what the part sizes allow of a
 // placement in split_sizes.cpp; solving for a continuous random value the
-// sizes use in split_search.cpp; the length queries in check_lengths.cpp.
+// sizes use in split_solve.cpp; the length queries in check_lengths.cpp.
 #pragma once
 
 #include <cstddef>
@@ -172,7 +172,7 @@ class SplitSearch {
   // One line per part whose size is random: the value that reproduces it.
   void add_witness(double k);
 
-  // ---- solving for a continuous random value (split_search.cpp) ----
+  // ---- solving for a continuous random value (split_solve.cpp) ----
 
   // How far the placement is from fitting: 0 when it fits. Misses in
   // metres count in tolerances, so a length that cannot fit at all (a run
