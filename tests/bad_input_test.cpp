@@ -463,6 +463,8 @@ const std::vector<BadInput> kCases = {
    nullptr, 600},
   {"limit_operations", "generate", {"ok.grm", "--max-operations", "2", "-o", "out.obj"}, kLimit,
    "ok.grm:1:", "more than 2 operations in one derivation", kValidGrammar},
+  {"limit_repeat_subnormal_tile", "generate", {"repeat_subnormal_tile.grm", "-o", "out.obj"}, kLimit,
+   "repeat_subnormal_tile.grm:1:7: error: ", "repeat would make inf tiles", {"grammar/repeat_subnormal_tile.grm"}},
 
   // ---- command lines ----
   {"generate_unknown_option", "generate", {"ok.grm", "--sede", "3"}, kUsage,
