@@ -101,7 +101,7 @@ Support Matcher::lengths_repeat(NodeId id, const FreeScope& fs, const BoxList& i
   }
   if (st->am->world == fs.world) return lengths_repeat_along(id, fs, inside, *st);
   const double length = probe.size[static_cast<int>(st->axis)];
-  std::vector<BoxList> tiles;
+  Tiling tiles;
   Support acc;
   for (const TileCount& c : st->counts) {
     budget_.step();
@@ -117,7 +117,7 @@ Support Matcher::lengths_repeat(NodeId id, const FreeScope& fs, const BoxList& i
       const Axis a = st->axis;
       const double from = tile * static_cast<double>(i);
       here = here.intersect(lengths(
-          st->child, compose(fs, [a, from, tile](const Scope& sc) { return sc.slice(a, from, tile); }), tiles[i]));
+          st->child, compose(fs, [a, from, tile](const Scope& sc) { return sc.slice(a, from, tile); }), tiles.take(i)));
     }
     acc = acc.unite(here);
   }
@@ -169,7 +169,7 @@ Support Matcher::lengths_repeat_along(NodeId id, const FreeScope& fs, const BoxL
   double n_max = rep ? std::floor(l1 / sizes.lower()) + 1 : 0;
   for (const TileCount& c : st.counts) n_max = std::max(n_max, c.n);
   n_max = std::min(n_max, static_cast<double>(2 * inside.size() + 2));
-  std::vector<BoxList> tiles;
+  Tiling tiles;
   for (double n = 2; n <= n_max; n += 1) {
     double previous = -kInf;
     for (double c : faces) {
@@ -185,7 +185,7 @@ Support Matcher::lengths_repeat_along(NodeId id, const FreeScope& fs, const BoxL
       const double tile = sc.size[a] / n;
       bool ok = true;
       for (std::uint64_t i = 0; i < count && ok; ++i)
-        ok = match(st.child, sc.slice(st.axis, tile * static_cast<double>(i), tile), tiles[i]);
+        ok = match(st.child, sc.slice(st.axis, tile * static_cast<double>(i), tile), tiles.take(i));
       if (ok) acc = acc.unite(Support::point(l));
     }
   }

@@ -55,6 +55,26 @@ struct Mismatch {
   std::string message;
 };
 
+// The boxes of a repeat's tiles: the tile each box lies in, by tile (the
+// boxes of one tile in the order they were added). A repeat may make
+// millions of tiles, most of them empty: only the boxes are kept.
+class Tiling {
+ public:
+  void clear() {
+    boxes_.clear();
+    next_ = 0;
+  }
+  void add(std::uint64_t tile, std::uint32_t box) { boxes_.emplace_back(tile, box); }
+  // Orders the boxes by tile, once all are added.
+  void sort();
+  // The boxes of tile i: tiles 0, 1, 2, ... are taken in turn.
+  BoxList take(std::uint64_t i);
+
+ private:
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> boxes_;  // (tile, box)
+  std::size_t next_ = 0;
+};
+
 // A random argument with few values, tried value by value.
 struct ArgChoice {
   std::size_t arg;
@@ -161,8 +181,7 @@ class Matcher {
   // The tile counts a repeat or repeatN may make on scope s, in order.
   std::optional<std::vector<TileCount>> tile_counts(NodeId id, const Scope& s, Axis a, bool& random);
   // Do n equal tiles put every boundary where no box crosses? Fills `tiles`.
-  bool tiles_fit(const BoxList& inside, const AxisMap& am, double length, std::uint64_t n,
-                 std::vector<BoxList>& tiles) const;
+  bool tiles_fit(const BoxList& inside, const AxisMap& am, double length, std::uint64_t n, Tiling& tiles) const;
   struct RepeatSetup {
     Axis axis = Axis::X;
     std::optional<AxisMap> am;

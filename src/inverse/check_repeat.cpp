@@ -15,6 +15,17 @@
 
 namespace vern::check_detail {
 
+void Tiling::sort() {
+  std::stable_sort(boxes_.begin(), boxes_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  next_ = 0;
+}
+
+BoxList Tiling::take(std::uint64_t i) {
+  BoxList out;
+  for (; next_ < boxes_.size() && boxes_[next_].first == i; ++next_) out.push_back(boxes_[next_].second);
+  return out;
+}
+
 std::string Matcher::repeat_what(NodeId id) const {
   const Operation& op = g_.op(id);
   if (const auto* r = std::get_if<Repeat>(&op)) return "size " + expr_text(r->size);
@@ -70,10 +81,9 @@ std::optional<std::vector<TileCount>> Matcher::tile_counts(NodeId id, const Scop
   return out;
 }
 
-bool Matcher::tiles_fit(const BoxList& inside, const AxisMap& am, double length, std::uint64_t n,
-                        std::vector<BoxList>& tiles) const {
+bool Matcher::tiles_fit(const BoxList& inside, const AxisMap& am, double length, std::uint64_t n, Tiling& tiles) const {
   const double tile = length / static_cast<double>(n);
-  tiles.assign(n, {});
+  tiles.clear();
   for (std::uint32_t k : inside) {
     double t0 = am.local(boxes_[k].min[am.world]), t1 = am.local(boxes_[k].max[am.world]);
     if (t0 > t1) std::swap(t0, t1);
@@ -82,8 +92,9 @@ bool Matcher::tiles_fit(const BoxList& inside, const AxisMap& am, double length,
     i = std::min(i, n - 1);
     // The box must end by the end of its tile: otherwise it crosses a boundary.
     if (i + 1 < n && t1 > tile * static_cast<double>(i + 1) + tol_) return false;
-    tiles[i].push_back(k);
+    tiles.add(i, k);
   }
+  tiles.sort();
   return true;
 }
 
@@ -107,7 +118,7 @@ bool Matcher::match_repeat(NodeId id, const Scope& s, const BoxList& inside) {
   auto st = setup_repeat(id, s);
   if (!st) return false;
   const double length = s.size[static_cast<int>(st->axis)];
-  std::vector<BoxList> tiles;
+  Tiling tiles;
   std::string tried;
   for (const TileCount& c : st->counts) {
     budget_.step();
@@ -129,7 +140,7 @@ bool Matcher::match_repeat(NodeId id, const Scope& s, const BoxList& inside) {
       const double tile = length / c.n;
       bool ok = true;
       for (std::uint64_t i = 0; i < n && ok; ++i)
-        ok = match(st->child, s.slice(st->axis, tile * static_cast<double>(i), tile), tiles[i]);
+        ok = match(st->child, s.slice(st->axis, tile * static_cast<double>(i), tile), tiles.take(i));
       if (ok) return true;
     } else if (tried.size() < 200) {
       tried += (tried.empty() ? "" : ", ") + num(c.n);
