@@ -466,6 +466,27 @@ const std::vector<BadInput> kCases = {
   {"limit_repeat_subnormal_tile", "generate", {"repeat_subnormal_tile.grm", "-o", "out.obj"}, kLimit,
    "repeat_subnormal_tile.grm:1:7: error: ", "repeat would make inf tiles", {"grammar/repeat_subnormal_tile.grm"}},
 
+  // ---- grammars checked against an example: the same refusals as generate's, at the same place ----
+  {"check_repeat_zero_tile", "check", {"repeat_zero_tile.grm", "two_parts.obj"}, kInput,
+   "repeat_zero_tile.grm:1:17: error: ", "the tile size of repeat is 0", {"grammar/repeat_zero_tile.grm", "obj/two_parts.obj"}},
+  {"check_repeat_tiny_tile", "check", {"repeat_tiny_tile.grm", "two_parts.obj"}, kLimit,
+   "repeat_tiny_tile.grm:1:7: error: ", "more than check's limit of 10000000 matching steps",
+   {"grammar/repeat_tiny_tile.grm", "obj/two_parts.obj"}},
+  {"check_repeat_200M_tiles_bounds_memory", "check", {"repeat_200M_tiles.grm", "two_parts.obj"}, kLimit,
+   "repeat_200M_tiles.grm:1:7: error: ", "repeat would make 2", {"grammar/repeat_200M_tiles.grm", "obj/two_parts.obj"},
+   nullptr, nullptr, 100},
+  {"check_repeat_count_overflows", "check", {"repeat_count_overflows.grm", "two_parts.obj"}, kLimit,
+   "repeat_count_overflows.grm:1:7: error: ", "repeat would make 1.999999998e+19 tiles",
+   {"grammar/repeat_count_overflows.grm", "obj/two_parts.obj"}},
+  {"check_repeat_subnormal_tile", "check", {"repeat_subnormal_tile.grm", "two_parts.obj"}, kLimit,
+   "repeat_subnormal_tile.grm:1:7: error: ", "repeat would make inf tiles",
+   {"grammar/repeat_subnormal_tile.grm", "obj/two_parts.obj"}},
+  {"check_repeatN_1e12", "check", {"repeatN_1e12.grm", "two_parts.obj"}, kLimit,
+   "repeatN_1e12.grm:1:18: error: ", "repeatN asks for 1e+12 tiles", {"grammar/repeatN_1e12.grm", "obj/two_parts.obj"}},
+  {"check_repeatN_1e19_bounds_memory", "check", {"repeatN_1e19.grm", "two_parts.obj"}, kLimit,
+   "repeatN_1e19.grm:1:18: error: ", "repeatN asks for 1e+19 tiles", {"grammar/repeatN_1e19.grm", "obj/two_parts.obj"},
+   nullptr, nullptr, 100},
+
   // ---- command lines ----
   {"generate_unknown_option", "generate", {"ok.grm", "--sede", "3"}, kUsage,
    "generate: error: ", "unknown option '--sede'\n  hint: did you mean '--seed'?", kValidGrammar},

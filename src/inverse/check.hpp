@@ -133,7 +133,11 @@ struct CheckResult {
 // Checks whether `grammar`, started with its start rule on the axis-aligned
 // scope [0, scope_size], derives exactly `boxes` (already translated so the
 // scope starts at the origin). Throws vern::Error (Limit) when more than
-// options.max_steps steps are needed.
+// options.max_steps steps are needed, or a repeat would make more tiles
+// than that (each tile is matched once); and (Input) where derive() fails
+// whatever it draws and generate says so: a repeat's tile size never > 0.
+// A repeat's error names grammar.source_name:line:column and the rule
+// chain, as generate's does.
 CheckResult check_example(const Grammar& grammar, const std::vector<LabelledBox>& boxes, glm::dvec3 scope_size,
                           const CheckOptions& options = {});
 

@@ -65,6 +65,7 @@ class Bindings {
   void enter(const Frame& frame) { frames_.push_back(frame); }
   void leave() { frames_.pop_back(); }
   std::size_t depth() const { return frames_.size(); }
+  const std::vector<Frame>& frames() const { return frames_; }
   // The running rule, kNone before the start rule runs.
   RuleId rule() const { return frames_.empty() ? kNone : frames_.back().rule; }
 

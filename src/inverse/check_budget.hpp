@@ -17,6 +17,8 @@ namespace vern::check_detail {
 class Budget {
  public:
   explicit Budget(std::uint64_t max) : max_(max) {}
+  // The most steps a check may take.
+  std::uint64_t limit() const { return max_; }
   void step() {
     if (++used_ > max_)
       throw Error(ErrorKind::Limit, "error: more than " + std::to_string(max_) +

@@ -109,7 +109,7 @@ Support Matcher::lengths_repeat(NodeId id, const FreeScope& fs, const BoxList& i
       if (inside.empty()) acc = Support::range(fs.lmin, fs.lmax);
       continue;
     }
-    const auto n = static_cast<std::uint64_t>(c.n);
+    const std::uint64_t n = tiles_within_limit(id, c.n);
     if (!tiles_fit(inside, *st->am, length, n, tiles)) continue;
     const double tile = length / c.n;
     Support here = Support::range(fs.lmin, fs.lmax);

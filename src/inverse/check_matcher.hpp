@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "forward/scope.hpp"
+#include "graph/error.hpp"
 #include "graph/grammar.hpp"
 #include "inverse/check.hpp"
 #include "inverse/check_bindings.hpp"
@@ -136,6 +137,13 @@ class Matcher {
   // (quiet) record nothing: their failures are not the example's.
   bool fail(NodeId id, const Scope& s, const std::string& what);
   bool cannot_check(NodeId id, const Scope& s, const std::string& what);
+  // What derive() refuses whatever it draws (a tile size never > 0), and
+  // work beyond the limits, stop the whole check, with generate's message:
+  // the grammar's file:line:col, the rule chain and a hint.
+  [[noreturn]] void refuse(ErrorKind kind, SourceLoc loc, const std::string& message, const std::string& hint) const;
+  // "plot > house(3) > floors(?)": the running rules, with their arguments
+  // as far as they are known.
+  std::string rule_chain() const;
 
   // ---- expressions (check_matcher.cpp) ----
 
@@ -180,6 +188,10 @@ class Matcher {
   std::string repeat_what(NodeId id) const;
   // The tile counts a repeat or repeatN may make on scope s, in order.
   std::optional<std::vector<TileCount>> tile_counts(NodeId id, const Scope& s, Axis a, bool& random);
+  // n tiles of repeat `id`, refused when matching them would take more
+  // steps than the check may: each tile is matched once. Refused before
+  // any is laid out, as derive() refuses more tiles than its limit.
+  std::uint64_t tiles_within_limit(NodeId id, double n) const;
   // Do n equal tiles put every boundary where no box crosses? Fills `tiles`.
   bool tiles_fit(const BoxList& inside, const AxisMap& am, double length, std::uint64_t n, Tiling& tiles) const;
   struct RepeatSetup {

@@ -13,7 +13,25 @@
 #include <variant>
 #include <vector>
 
+#include "graph/number_format.hpp"
+
 namespace vern::check_detail {
+
+namespace {
+
+constexpr const char* kTileSizeHint = "give a tile length in metres, or use repeatN(axis, count) for a number of tiles";
+
+// Counts from `first` to `last`, one by one: by index, so that counts
+// beyond 2^53, where adding 1 to a double changes nothing, still end.
+std::vector<double> counts_between(double first, double last) {
+  std::vector<double> out;
+  if (!(first <= last)) return out;
+  const auto steps = static_cast<std::uint64_t>(last - first);
+  for (std::uint64_t k = 0; k <= steps; ++k) out.push_back(first + static_cast<double>(k));
+  return out;
+}
+
+}  // namespace
 
 void Tiling::sort() {
   std::stable_sort(boxes_.begin(), boxes_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -41,18 +59,31 @@ std::optional<std::vector<TileCount>> Matcher::tile_counts(NodeId id, const Scop
     if (!size) return std::nullopt;
     random = !size->exact;
     auto count_for = [&](double tile) { return repeat_tile_count(length, tile); };
+    // Where derive() fails whatever it draws, generate stops with an input
+    // error at the tile size; so does check.
+    if (size->exact && size->value.is_number()) {
+      const double tile = size->value.number();
+      if (!(tile > 0))
+        refuse(ErrorKind::Input, r->size.loc(),
+               "the tile size of repeat is " + format_number(tile) + "; it must be > 0", kTileSizeHint);
+      return std::vector<TileCount>{{count_for(tile), tile}};
+    }
     const Support sizes = size->support.clamp(std::numeric_limits<double>::min(), kInf);
     if (sizes.empty()) {
+      if (!size->exact)
+        refuse(ErrorKind::Input, r->size.loc(), "the tile size of repeat, " + expr_text(r->size) + ", is never > 0",
+               kTileSizeHint);
       if (recording()) fail(id, s, "the tile size " + expr_text(r->size) + " is never > 0, so derive() fails here");
       return std::nullopt;
     }
-    if (size->exact) return std::vector<TileCount>{{count_for(sizes.lower()), sizes.lower()}};
     const double n_min = count_for(sizes.upper()), n_max = count_for(sizes.lower());
+    // Every count past the limit: refused, whatever the draw.
+    tiles_within_limit(id, n_min);
     if (!std::isfinite(n_max) || n_max - n_min > kMaxTileCounts) {
       cannot_check(id, s, "the tile size " + expr_text(r->size) + " allows too many tile counts");
       return std::nullopt;
     }
-    for (double n = n_min; n <= n_max; n += 1) {
+    for (double n : counts_between(n_min, n_max)) {
       // Some size of the support must give exactly n tiles.
       const Support fitting = sizes.clamp(length / n * (1 - 1e-9), n > 1 ? length / (n - 1) : kInf);
       if (!fitting.empty())
@@ -68,17 +99,30 @@ std::optional<std::vector<TileCount>> Matcher::tile_counts(NodeId id, const Scop
   if (auto values = count->support.values(kMaxEnumerated)) {
     for (double v : *values) counts.push_back(std::round(v));
   } else {
+    if (count->support.bounded()) tiles_within_limit(id, std::round(count->support.lower()));
     if (!count->support.bounded() || count->support.upper() - count->support.lower() > kMaxTileCounts) {
       cannot_check(id, s, "the count " + expr_text(rn.count) + " allows too many tile counts");
       return std::nullopt;
     }
-    for (double v = std::round(count->support.lower()); v <= std::round(count->support.upper()); v += 1)
+    for (double v : counts_between(std::round(count->support.lower()), std::round(count->support.upper())))
       if (count->support.contains(v, 0.5)) counts.push_back(v);
   }
   std::sort(counts.begin(), counts.end());
   counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
   for (double n : counts) out.push_back({std::max(n, 0.0), 0});
   return out;
+}
+
+std::uint64_t Matcher::tiles_within_limit(NodeId id, double n) const {
+  const std::uint64_t limit = budget_.limit();
+  if (n <= static_cast<double>(limit) && n < 0x1p64) return static_cast<std::uint64_t>(n);
+  const std::string beyond =
+      " tiles, more than check's limit of " + std::to_string(limit) + " matching steps (one per tile)";
+  if (const auto* rn = std::get_if<RepeatN>(&g_.op(id)))
+    refuse(ErrorKind::Limit, rn->count.loc(), "repeatN asks for " + format_number(n) + beyond,
+           "raise the limit with --max-steps (CheckOptions::max_steps), or ask for fewer tiles");
+  refuse(ErrorKind::Limit, g_.node(id).loc, "repeat would make " + format_number(n) + beyond,
+         "raise the limit with --max-steps (CheckOptions::max_steps), or use a larger tile size");
 }
 
 bool Matcher::tiles_fit(const BoxList& inside, const AxisMap& am, double length, std::uint64_t n, Tiling& tiles) const {
@@ -134,8 +178,8 @@ bool Matcher::match_repeat(NodeId id, const Scope& s, const BoxList& inside) {
       witness_.resize(mark);
       continue;
     }
+    const std::uint64_t n = tiles_within_limit(id, c.n);
     if (!st->am) return cannot_check(id, s, "the scope is turned by an angle other than a quarter turn");
-    const auto n = static_cast<std::uint64_t>(c.n);
     if (tiles_fit(inside, *st->am, length, n, tiles)) {
       const double tile = length / c.n;
       bool ok = true;

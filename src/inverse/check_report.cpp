@@ -7,6 +7,9 @@
 #include <utility>
 #include <vector>
 
+#include "forward/rule_chain.hpp"
+#include "graph/number_format.hpp"
+
 namespace vern::check_detail {
 
 std::vector<MatchedPart> Matcher::matched_parts() const {
@@ -68,6 +71,25 @@ bool Matcher::cannot_check(NodeId id, const Scope& s, const std::string& what) {
   }
   if (uncheckable_.empty()) uncheckable_ = where(id, s) + ": " + what;
   return fail(id, s, "cannot check: " + what);
+}
+
+void Matcher::refuse(ErrorKind kind, SourceLoc loc, const std::string& message, const std::string& hint) const {
+  throw Error(kind,
+              format_message(g_.source_name, loc, message) + "\n  rule chain: " + rule_chain() + "\n  hint: " + hint);
+}
+
+std::string Matcher::rule_chain() const {
+  const std::vector<Frame>& frames = vars_.frames();
+  return rule_chain_text(
+      g_, frames.size(), [&](std::size_t i) { return frames[i].rule; },
+      [&](std::size_t i, std::size_t k) {
+        if (k >= frames[i].params.size()) return std::string("?");
+        const Slot& slot = frames[i].params[k];
+        if (slot.unknown < 0) return slot.value.describe();
+        // A random value the example has not pinned down (yet) has no value to name.
+        const Unknown& u = vars_.unknown(slot.unknown);
+        return u.value ? format_number(*u.value) : std::string("?");
+      });
 }
 
 }  // namespace vern::check_detail
