@@ -1,8 +1,9 @@
 // check: does a grammar derive these buildings exactly, and how?
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <iostream>
+#include <optional>
+#include <string>
 
 #include "graph/atomic_file.hpp"
 #include "graph/parser.hpp"
@@ -28,7 +29,7 @@ CommandLine make_command_line() {
   cl.add({"--tolerance", "", 1, "METRES", "coordinates closer than this are equal (default: 1e-6 of the example's size or distance from the origin)"});
   cl.add({"--scope", "", 3, "X Y Z", "plot size to derive on (default: each example's own extent)"});
   cl.add({"--brief", "-b", 0, "", "one line per example, without the choices"});
-  cl.add({"--max-steps", "", 1, "N", "give up after N matching steps per example (default 10000000)"});
+  cl.add({"--max-steps", "", 1, "N", "give up after N matching steps per example (default 10000000); a repeat of more tiles is refused"});
   cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
   cl.add_standard_options(/*quiet=*/false);
   cl.set_epilog(
@@ -40,6 +41,19 @@ CommandLine make_command_line() {
       "            3 bad input (grammar or example file), 4 a limit was reached,\n"
       "            5 a file could not be read, 70 internal error\n");
   return cl;
+}
+
+// An error met while checking one example, saying which. A limit of the
+// search has no place of its own ("error: more than ... steps"): the
+// example is its place. An error in the grammar names its own place
+// ("style.grm:3:7: error: ..."), as generate's do: the example goes on a
+// line of its own, before the hint.
+std::string naming_the_example(const std::string& message, const std::string& example) {
+  if (message.rfind("error: ", 0) == 0) return example + ": " + message;
+  const std::size_t hint = message.find("\n  hint: ");
+  const std::string line = "\n  example: " + example;
+  if (hint == std::string::npos) return message + line;
+  return message.substr(0, hint) + line + message.substr(hint);
 }
 
 int run(int argc, char** argv) {
@@ -99,9 +113,8 @@ int run(int argc, char** argv) {
     try {
       r = check_example(grammar, boxes, scope.value_or(example_size(example)), own);
     } catch (const Error& e) {
-      // A limit reached while matching: say on which example.
-      if (e.kind() != ErrorKind::Limit) throw;
-      throw Error(e.kind(), file.string() + ": " + e.what());
+      if (e.kind() != ErrorKind::Limit && e.kind() != ErrorKind::Input) throw;
+      throw Error(e.kind(), naming_the_example(e.what(), file.string()));
     }
     if (r.derivable) {
       ++fits;

@@ -16,6 +16,8 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "forward/derive.hpp"
 #include "forward/evaluate.hpp"
@@ -368,6 +370,85 @@ TEST(CheckOperations, TheStepLimitIsAnError) {
     EXPECT_EQ(err.kind(), ErrorKind::Limit);
     EXPECT_NE(std::string(err.what()).find("max_steps"), std::string::npos);
   }
+}
+
+// ---- limits: what derive() refuses, check refuses at the same place ----
+
+// The error check_text's grammar ("test.grm") gives, with its kind.
+std::pair<ErrorKind, std::string> refusal(const std::string& grammar, const std::vector<LabelledBox>& boxes,
+                                          glm::dvec3 size, std::uint64_t max_steps = 10'000'000) {
+  CheckOptions o;
+  o.max_steps = max_steps;
+  try {
+    const CheckResult r = check_example(parse_grammar(grammar, "test.grm"), boxes, size, o);
+    return {ErrorKind::Internal, "no error; " + (r.derivable ? std::string("derivable") : r.mismatch)};
+  } catch (const Error& e) {
+    return {e.kind(), e.what()};
+  }
+}
+
+const std::vector<LabelledBox> kTwoTiles = {box("t", {0, 0, 0}, {1, 1, 1}), box("t", {1, 0, 0}, {2, 1, 1})};
+
+TEST(CheckLimits, ATileSizeNeverAboveZeroIsAnInputError) {
+  auto [kind, what] = refusal("p --> repeat(x, 0){ I(t) }", kTwoTiles, {2, 1, 1});
+  EXPECT_EQ(kind, ErrorKind::Input) << what;
+  EXPECT_EQ(what.rfind("test.grm:1:17: error: the tile size of repeat is 0", 0), 0u) << what;
+  EXPECT_NE(what.find("\n  rule chain: p\n  hint: "), std::string::npos) << what;
+  std::tie(kind, what) = refusal("p --> repeat(x, rand(-2, -1)){ I(t) }", kTwoTiles, {2, 1, 1});
+  EXPECT_EQ(kind, ErrorKind::Input) << what;
+  EXPECT_EQ(what.rfind("test.grm:1:17: error: the tile size of repeat, rand(-2, -1), is never > 0", 0), 0u) << what;
+}
+
+TEST(CheckLimits, MoreTilesThanMatchingStepsAreRefusedAtTheRepeat) {
+  // Each tile is matched once: a repeat of more tiles than the steps
+  // allowed cannot be checked, and is refused before any tile is laid out.
+  for (const char* g : {"p --> repeat(x, 1e-12){ I(t) }", "p --> repeat(x, 1e-19){ I(t) }",
+                        "p --> repeat(x, 1e-320){ I(t) }", "p --> repeat(x, rand(1e-13, 1e-12)){ I(t) }"}) {
+    const auto [kind, what] = refusal(g, kTwoTiles, {2, 1, 1});
+    EXPECT_EQ(kind, ErrorKind::Limit) << g << "\n" << what;
+    EXPECT_EQ(what.rfind("test.grm:1:7: error: repeat would make ", 0), 0u) << what;
+    EXPECT_NE(what.find("more than check's limit of 10000000 matching steps"), std::string::npos) << what;
+    EXPECT_NE(what.find("--max-steps"), std::string::npos) << what;
+  }
+  for (const char* g : {"p --> repeatN(x, 1e12){ I(t) }", "p --> repeatN(x, 1e19){ I(t) }",
+                        "p --> repeatN(x, rand(1e19, 1.0000000000000002e19)){ I(t) }"}) {
+    const auto [kind, what] = refusal(g, kTwoTiles, {2, 1, 1});
+    EXPECT_EQ(kind, ErrorKind::Limit) << g << "\n" << what;
+    EXPECT_EQ(what.rfind("test.grm:1:18: error: repeatN asks for 1e+", 0), 0u) << what;
+  }
+  // The limit is the step limit, whatever it is set to.
+  const auto [kind, what] = refusal("p --> S(1, 1, 1){ repeatN(x, 150){ I(t) } }", kTwoTiles, {2, 1, 1}, 100);
+  EXPECT_EQ(kind, ErrorKind::Limit) << what;
+  EXPECT_EQ(what.rfind("test.grm:1:30: error: repeatN asks for 150 tiles, more than check's limit of 100", 0), 0u)
+      << what;
+  EXPECT_NE(what.find("\n  rule chain: p\n"), std::string::npos) << what;
+}
+
+TEST(CheckLimits, CountsWithinTheLimitAreTriedFirst) {
+  // Tile sizes down to 0.0019 m give up to 1053 tiles on 2 m, past a limit
+  // of 1000 steps; the two tiles of the example come first and match.
+  const auto [kind, what] = refusal("p --> repeat(x, rand(0.0019, 1)){ I(t) }", kTwoTiles, {2, 1, 1}, 1000);
+  EXPECT_EQ(kind, ErrorKind::Internal);
+  EXPECT_EQ(what, "no error; derivable");
+}
+
+TEST(CheckLimits, ManyTilesWithinTheLimitTakeNoMemoryPerTile) {
+  // 2e12 tiles, allowed by a limit raised to 1e15 steps: the boxes cross
+  // the tiles' boundaries, which is found from the boxes alone.
+  const auto [kind, what] = refusal("p --> repeat(x, 1e-12){ I(t) }", kTwoTiles, {2, 1, 1}, 1'000'000'000'000'000);
+  EXPECT_EQ(kind, ErrorKind::Internal) << what;
+  EXPECT_NE(what.find("boxes cross the tile boundaries of 2e+12 tiles"), std::string::npos) << what;
+}
+
+// A rule chain names the rules a check is inside, with their arguments as
+// far as the example has pinned them down. The place of the count is its
+// expression's operator, the '*', as in generate's message.
+TEST(CheckLimits, TheRuleChainNamesTheCallsAndTheirArguments) {
+  const auto [kind, what] = refusal(
+      "p --> q(2, rand(1, 5))\nq(a, b) --> r(a * 2)\nr(n) --> repeatN(x, 1e12 * n){ I(t) }", kTwoTiles, {2, 1, 1});
+  EXPECT_EQ(kind, ErrorKind::Limit) << what;
+  EXPECT_EQ(what.rfind("test.grm:3:26: error: repeatN asks for 4e+12 tiles", 0), 0u) << what;
+  EXPECT_NE(what.find("\n  rule chain: p > q(2, ?) > r(4)\n"), std::string::npos) << what;
 }
 
 // ---- placements: contents that leave their part's slice ----

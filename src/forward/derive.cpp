@@ -9,6 +9,7 @@
 #include "forward/evaluate.hpp"
 #include "forward/program.hpp"
 #include "forward/random_stream.hpp"
+#include "forward/rule_chain.hpp"
 #include "forward/stack_guard.hpp"
 #include "graph/number_format.hpp"
 
@@ -427,30 +428,12 @@ class Deriver {
   }
 
   std::string describe_chain() const {
-    auto frame_text = [&](const Frame& f) {
-      const Rule& r = g_.rules[f.rule];
-      std::string t = r.label;
-      if (!r.params.empty()) {
-        t += "(";
-        for (std::size_t i = 0; i < r.params.size(); ++i) {
-          t += (i ? ", " : "");
-          t += f.params + i < params_top_ ? params_[f.params + i].describe() : "?";
-        }
-        t += ")";
-      }
-      return t;
-    };
-    std::string text;
-    const std::size_t n = chain_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (n > 12 && i == 4) {
-        text += " > ... (" + std::to_string(n - 10) + " more) ...";
-        i = n - 6;
-        continue;
-      }
-      text += (i ? " > " : "") + frame_text(chain_[i]);
-    }
-    return text.empty() ? "(none)" : text;
+    return rule_chain_text(
+        g_, chain_.size(), [&](std::size_t i) { return chain_[i].rule; },
+        [&](std::size_t i, std::size_t k) {
+          const std::size_t at = chain_[i].params + k;
+          return at < params_top_ ? params_[at].describe() : std::string("?");
+        });
   }
 
   const Program& prog_;

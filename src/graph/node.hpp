@@ -56,9 +56,12 @@ struct Repeat {
 
 // How many tiles repeat makes on a length: ceil, forgiving float noise
 // (0.7 / 0.1 is 7.000000000000001 and means 7). derive(), check and
-// inference must agree on it to the last bit.
+// inference must agree on it to the last bit. A tile so small that the
+// quotient overflows (1e-320) makes infinitely many, which every limit
+// refuses: not the 1 that ceil(inf - inf), NaN, would leave below.
 inline double repeat_tile_count(double length, double tile) {
   const double q = length / tile;
+  if (std::isinf(q)) return q;
   return std::max(1.0, std::ceil(q - 1e-9 * std::max(1.0, q)));
 }
 

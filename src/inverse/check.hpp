@@ -49,6 +49,22 @@
 // quarter turns), never guessed. Not found: a boundary in empty space at
 // the start of a part, or one that moves repeat tiles starting at it, or a
 // comp's faces.
+//
+// The pieces, each a file of src/inverse/ (check_detail, private):
+//   check.cpp             this entry point: the random constants, a Matcher per choice of them
+//   check_matcher.hpp     the Matcher, which walks the grammar; it matches terminals, transforms
+//                         and comp faces in check_matcher.cpp, splits in check_split.cpp, repeats
+//                         in check_repeat.cpp, choices and calls in check_choices.cpp, answers
+//                         length queries in check_lengths.cpp and reports in check_report.cpp
+//   split_search.hpp      the search for one split's placement (split_search.cpp), what the part
+//                         sizes allow (split_sizes.cpp), solving for a random value (split_solve.cpp)
+//   check_cuts.hpp        where boxes may be cut along a scope's axis
+//   check_scale.hpp       the scales a placement leaves possible
+//   check_bindings.hpp    parameters, constants, unknowns and the trail of their bindings
+//   check_emptiness.hpp   where a node may leave empty space
+//   check_free_scope.hpp  a scope whose length along one axis is left open
+//   check_budget.hpp      the matching-step limit
+//   check_witness.hpp     the witness lines; check_text.hpp, how messages spell things
 #pragma once
 
 #include <cstdint>
@@ -117,7 +133,11 @@ struct CheckResult {
 // Checks whether `grammar`, started with its start rule on the axis-aligned
 // scope [0, scope_size], derives exactly `boxes` (already translated so the
 // scope starts at the origin). Throws vern::Error (Limit) when more than
-// options.max_steps steps are needed.
+// options.max_steps steps are needed, or a repeat would make more tiles
+// than that (each tile is matched once); and (Input) where derive() fails
+// whatever it draws and generate says so: a repeat's tile size never > 0.
+// A repeat's error names grammar.source_name:line:column and the rule
+// chain, as generate's does.
 CheckResult check_example(const Grammar& grammar, const std::vector<LabelledBox>& boxes, glm::dvec3 scope_size,
                           const CheckOptions& options = {});
 

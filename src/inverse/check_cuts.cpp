@@ -1,0 +1,141 @@
+#include "inverse/check_cuts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "inverse/check_text.hpp"
+
+namespace vern::check_detail {
+
+std::optional<AxisMap> axis_map(const Scope& s, Axis a) {
+  const glm::dvec3 f = s.frame[static_cast<int>(a)];
+  for (int w = 0; w < 3; ++w) {
+    const bool unit =
+        std::abs(std::abs(f[w]) - 1.0) < 1e-9 && std::abs(f[(w + 1) % 3]) < 1e-9 && std::abs(f[(w + 2) % 3]) < 1e-9;
+    if (unit) return AxisMap{w, f[w] > 0 ? 1.0 : -1.0, s.origin[w]};
+  }
+  return std::nullopt;
+}
+
+Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, const AxisMap& am, double length,
+               double tol) {
+  Cuts c;
+  // Every face and both ends, snapped: a run of positions within the
+  // tolerance becomes one, the scope's end if the run holds one, else
+  // its smallest.
+  struct Face {
+    double t;
+    int tag;  // -1: the scope's start, -2: its end, else 2 * k + (max face)
+  };
+  std::vector<Face> faces;
+  faces.reserve(2 * inside.size() + 2);
+  faces.push_back({0.0, -1});
+  faces.push_back({length, -2});
+  for (std::size_t k = 0; k < inside.size(); ++k) {
+    const LabelledBox& b = boxes[inside[k]];
+    double t0 = am.local(b.min[am.world]), t1 = am.local(b.max[am.world]);
+    if (t0 > t1) std::swap(t0, t1);
+    faces.push_back({t0, static_cast<int>(2 * k)});
+    faces.push_back({t1, static_cast<int>(2 * k + 1)});
+  }
+  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.t < b.t; });
+  std::vector<double> lo(inside.size()), hi(inside.size());
+  std::vector<double> positions;
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i;
+    double rep = faces[i].t;
+    bool has_start = false, has_end = false;
+    while (j < faces.size() && faces[j].t - faces[i].t <= tol) {
+      has_start = has_start || faces[j].tag == -1;
+      has_end = has_end || faces[j].tag == -2;
+      ++j;
+    }
+    if (has_start)
+      rep = 0.0;
+    else if (has_end)
+      rep = length;
+    for (std::size_t k = i; k < j; ++k) {
+      if (faces[k].tag < 0) continue;
+      const auto box = static_cast<std::size_t>(faces[k].tag / 2);
+      (faces[k].tag % 2 ? hi : lo)[box] = rep;
+    }
+    positions.push_back(rep);
+    i = j;
+  }
+  std::sort(positions.begin(), positions.end());
+  positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
+  // Positions strictly inside a box are crossed: no boundary there.
+  std::vector<int> cover(positions.size() + 1, 0);
+  std::vector<bool> flat_at(positions.size(), false);
+  auto index_of = [&](double v) {
+    return static_cast<std::size_t>(std::lower_bound(positions.begin(), positions.end(), v) - positions.begin());
+  };
+  for (std::size_t k = 0; k < inside.size(); ++k) {
+    if (lo[k] < -tol || hi[k] > length + tol) {
+      c.outside.push_back(inside[k]);
+      continue;
+    }
+    const std::size_t a = index_of(lo[k]), b = index_of(hi[k]);
+    if (a == b) {
+      flat_at[a] = true;
+      continue;
+    }
+    cover[a + 1] += 1;
+    cover[b] -= 1;
+  }
+  int running = 0;
+  for (std::size_t k = 0; k < positions.size(); ++k) {
+    running += cover[k];
+    if (running > 0 || positions[k] < 0 || positions[k] > length) continue;
+    c.at.push_back(positions[k]);
+    if (flat_at[k]) c.at.push_back(positions[k]);
+  }
+  const std::size_t segments = c.at.empty() ? 0 : c.at.size() - 1;
+  c.segment.assign(segments, {});
+  for (std::size_t k = 0; k < inside.size(); ++k) {
+    if (lo[k] < -tol || hi[k] > length + tol) continue;
+    if (segments == 0) {
+      c.outside.push_back(inside[k]);
+      continue;
+    }
+    std::size_t seg;
+    const auto first = std::lower_bound(c.at.begin(), c.at.end(), lo[k]);
+    if (lo[k] == hi[k] && first != c.at.end() && *first == lo[k]) {
+      seg = static_cast<std::size_t>(first - c.at.begin());  // the zero-length segment at a flat box's cut
+    } else {
+      const auto after = std::upper_bound(c.at.begin(), c.at.end(), lo[k]);
+      seg = after == c.at.begin() ? 0 : static_cast<std::size_t>(after - c.at.begin()) - 1;
+    }
+    seg = std::min(seg, segments - 1);
+    c.segment[seg].push_back(inside[k]);
+  }
+  c.prefix.assign(segments + 1, 0);
+  for (std::size_t k = 0; k < segments; ++k) c.prefix[k + 1] = c.prefix[k] + c.segment[k].size();
+  return c;
+}
+
+std::shared_ptr<const Cuts> CutsCache::of(const BoxList& inside, const AxisMap& am, double length) {
+  for (const Entry& c : entries_)
+    if (c.world == am.world && c.sign == am.sign && c.origin == am.origin && c.length == length && c.boxes == inside)
+      return c.cuts;
+  auto cuts = std::make_shared<const Cuts>(make_cuts(boxes_, inside, am, length, tol_));
+  Entry entry{inside, am.world, am.sign, am.origin, length, cuts};
+  if (entries_.size() < 8)
+    entries_.push_back(std::move(entry));
+  else
+    entries_[next_++ % entries_.size()] = std::move(entry);
+  return cuts;
+}
+
+std::string cuts_text(const Cuts& c, const AxisMap& am) {
+  std::vector<double> w;
+  for (double t : c.at) w.push_back(am.world_of(t));
+  std::sort(w.begin(), w.end());
+  w.erase(std::unique(w.begin(), w.end()), w.end());
+  std::string t = std::string(1, "xyz"[am.world]) + " = ";
+  for (std::size_t k = 0; k < w.size() && k < 12; ++k) t += (k ? ", " : "") + num(w[k]);
+  if (w.size() > 12) t += ", ... (" + std::to_string(w.size()) + " cuts)";
+  return t;
+}
+
+}  // namespace vern::check_detail

@@ -1,0 +1,88 @@
+// Where a split may cut the example's boxes (check.hpp): along one axis of
+// a scope, the positions no box crosses.
+//
+// Checking a split places its part boundaries only there (the cuts of the
+// ordered-box algorithm), so a placement is a choice of cuts, not of
+// lengths; the boxes between two cuts are the part's contents.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "forward/scope.hpp"
+#include "inverse/example.hpp"
+
+namespace vern::check_detail {
+
+// Boxes, as indices into the example's.
+using BoxList = std::vector<std::uint32_t>;
+
+// A scope's own axis as a world axis: local coordinate t along it is
+// sign * (world - origin). Only scopes whose frame is a signed permutation
+// (quarter turns) can be cut along an axis this way.
+struct AxisMap {
+  int world = 0;
+  double sign = 1;
+  double origin = 0;
+  double local(double w) const { return sign * (w - origin); }
+  double world_of(double t) const { return origin + sign * t; }
+};
+
+// The scope's axis a as a world axis; nothing when the scope is turned
+// by an angle other than a quarter turn.
+std::optional<AxisMap> axis_map(const Scope& s, Axis a);
+
+// The positions along a scope's axis where parts may begin or end: the
+// faces of the boxes that no box crosses, snapped within the tolerance,
+// and the two ends of the scope. A position with flat boxes on it (zero
+// thickness along the axis) appears twice, the flat boxes in the
+// zero-length segment between the two copies, so a boundary there can give
+// them to either side.
+struct Cuts {
+  std::vector<double> at;           // local positions, ascending
+  std::vector<BoxList> segment;     // boxes in [at[k], at[k+1]]
+  std::vector<std::size_t> prefix;  // boxes in segments before k
+  BoxList outside;                  // boxes beyond the scope's ends
+  std::size_t between(std::size_t j, std::size_t e) const { return prefix[e] - prefix[j]; }
+  BoxList boxes(std::size_t j, std::size_t e) const {
+    BoxList out;
+    for (std::size_t k = j; k < e; ++k) out.insert(out.end(), segment[k].begin(), segment[k].end());
+    return out;
+  }
+};
+
+// The cuts of `inside` (indices into `boxes`) along am, on a scope of
+// `length` along it; coordinates within tol are one. Boxes beyond the
+// scope's ends are collected in Cuts::outside.
+Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, const AxisMap& am, double length,
+               double tol);
+
+// The cuts of the same boxes along the same axis, kept for a while: the
+// alternatives of a choice each split the same boxes, mostly along the
+// same axis, and sorting the faces is most of the cost of a failed try.
+class CutsCache {
+ public:
+  CutsCache(const std::vector<LabelledBox>& boxes, double tol) : boxes_(boxes), tol_(tol) {}
+  std::shared_ptr<const Cuts> of(const BoxList& inside, const AxisMap& am, double length);
+
+ private:
+  struct Entry {
+    BoxList boxes;
+    int world;
+    double sign, origin, length;
+    std::shared_ptr<const Cuts> cuts;
+  };
+  const std::vector<LabelledBox>& boxes_;
+  double tol_;
+  std::vector<Entry> entries_;
+  std::size_t next_ = 0;
+};
+
+// "x = 0, 6.5, 10": the cuts in world coordinates, for messages.
+std::string cuts_text(const Cuts& c, const AxisMap& am);
+
+}  // namespace vern::check_detail
