@@ -34,16 +34,23 @@ TEST(SettleRepeats, TheSameCountWhereNoTileGivesItIsThatManyTiles) {
 TEST(SettleRepeats, CountsThatOneTileGivesAreThatTile) {
   // Three windows on 9 m and three on 7.5 m: any tile in [3, 3.75) makes
   // three on both, and a wider plot more: the row follows the plot, its
-  // tile the shortest decimal near the middle, 3.4 (not repeatN(x, 3)).
-  // Three on 9 m and four on 10 m: [3, 3.33), written 3.2 (not a range
-  // that draws counts neither example had).
-  for (const auto& [second, tile] : {std::pair{windows(3, 2.5), 3.4}, std::pair{windows(4, 2.5), 3.2}}) {
+  // tile the shortest decimal there, 3 (not repeatN(x, 3)). Three on 9 m
+  // and four on 10 m: [3, 3.33), 3 again (not a range that draws counts
+  // neither example had). Three on 9.3 m and three on 7.5 m: [3.1, 3.75),
+  // 3.4, the one-decimal size nearest the middle.
+  for (const auto& [second, tile] :
+       {std::pair{windows(3, 2.5), 3.0}, std::pair{windows(4, 2.5), 3.0}}) {
     Grammar g;
     const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3), second}), {1e-9, true});
     const auto* row = std::get_if<Repeat>(&g.op(merged));
     ASSERT_NE(row, nullptr) << second;
     EXPECT_EQ(row->size.literal(), tile) << second;
   }
+  Grammar g;
+  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3.1), windows(3, 2.5)}), {1e-9, true});
+  const auto* row = std::get_if<Repeat>(&g.op(merged));
+  ASSERT_NE(row, nullptr);
+  EXPECT_EQ(row->size.literal(), 3.4);
 }
 
 TEST(SettleRepeats, VaryingCountsNoTileGivesTakeTileSizesFromTheMiddleOfEachCountsRange) {

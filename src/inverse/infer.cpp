@@ -9,6 +9,7 @@
 #include "inverse/joint_sizes.hpp"
 #include "inverse/merge.hpp"
 #include "inverse/orientation.hpp"
+#include "inverse/overflow_splits.hpp"
 #include "inverse/rule_naming.hpp"
 #include "inverse/shared_frames.hpp"
 #include "inverse/split_graph.hpp"
@@ -82,6 +83,9 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   root = share_frames(graph, root);
   for (Rule& rule : graph.rules) rule.body = share_frames(graph, rule.body);
   out.grammar = rules_for(graph, root, NamingOptions{options.start});
+  // A split seen overflowing in short tiles is that split: checked, so
+  // only where the examples are few enough to check quickly.
+  if (parts <= kJoinedPartsLimit) unify_overflows(out.grammar, examples, {smallest, options.threads});
   // Sizes that vary together, drawn once: from the lengths of the
   // derivations that reproduce the examples, so only where they are few
   // enough to check quickly.

@@ -9,9 +9,9 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "graph/parallel_for.hpp"
 #include "inverse/check.hpp"
 #include "inverse/derived_example.hpp"
+#include "inverse/derives_examples.hpp"
 #include "inverse/fit_distribution.hpp"
 #include "inverse/linear_size.hpp"
 #include "inverse/rule_naming.hpp"
@@ -528,15 +528,7 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   check.tolerance = options.tolerance;
   check.witness = false;  // the parts' lengths are all this step reads
   auto check_all = [&](const Grammar& grammar, std::vector<CheckResult>& results) {
-    results.assign(placed.size(), {});
-    parallel_for(placed.size(), options.threads, [&](std::size_t i) {
-      try {
-        results[i] = check_example(grammar, placed[i].boxes, example_size(placed[i]), check);
-      } catch (const Error&) {
-        results[i] = {};  // too many steps: not derivable as far as this step knows
-      }
-    });
-    return std::ranges::all_of(results, [](const CheckResult& r) { return r.derivable; });
+    return derives_examples(grammar, placed, check, options.threads, results);
   };
   std::vector<CheckResult> results;
   if (!check_all(g, results)) return out;

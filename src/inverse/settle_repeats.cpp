@@ -10,26 +10,45 @@
 
 namespace vern {
 
+namespace {
+
+// The shortest decimal in [lo, hi), nearest the middle among those as
+// short: 4 in [3.99, 4.5), 3.5 in [3.47, 3.52).
+std::optional<double> shortest_decimal_in(double lo, double hi) {
+  const double middle = 0.5 * (lo + hi);
+  for (double scale = 1; scale <= 1e9; scale *= 10) {
+    const double first = std::ceil(lo * scale), last = std::ceil(hi * scale) - 1;
+    if (first > last) continue;
+    const double k = std::clamp(std::round(middle * scale), first, last);
+    return k / scale;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tolerance) {
   if (seen.empty()) return std::nullopt;
-  double lo = 0, hi = std::numeric_limits<double>::infinity();
-  for (const TileSeen& t : seen) {
-    if (t.count == 0 || !(t.length > 0)) return std::nullopt;
-    const double n = t.count;
-    // Lengths are known to the tolerance; the tile must give n on all of them.
-    lo = std::max(lo, (t.length + tolerance) / n);
-    if (t.count >= 2) hi = std::min(hi, (t.length - tolerance) / (n - 1));
+  // The sizes that give n tiles on every L seen: [L/n, L/(n-1)). Tried as
+  // the lengths are (a tile of exactly 4 m makes one tile on 4 m), then
+  // with every length known only to the tolerance.
+  for (const double known : {0.0, tolerance}) {
+    double lo = 0, hi = std::numeric_limits<double>::infinity();
+    for (const TileSeen& t : seen) {
+      if (t.count == 0 || !(t.length > 0)) return std::nullopt;
+      const double n = t.count;
+      lo = std::max(lo, (t.length + known) / n);
+      if (t.count >= 2) hi = std::min(hi, (t.length - tolerance) / (n - 1));
+    }
+    if (!std::isfinite(hi)) hi = 2 * lo;  // one tile everywhere: any size from the longest up
+    if (!(hi > lo)) continue;
+    const auto t = shortest_decimal_in(lo, hi);
+    if (!t) continue;
+    const bool gives_every_count = std::ranges::all_of(
+        seen, [&](const TileSeen& s) { return repeat_tile_count(s.length, *t) == static_cast<double>(s.count); });
+    if (gives_every_count) return t;
   }
-  if (!std::isfinite(hi)) hi = 2 * lo;  // one tile everywhere: any size from the longest up
-  if (!(hi > lo)) return std::nullopt;
-  // Strictly inside: a tile exactly at L/(n-1) makes n-1 tiles.
-  const double middle = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
-  const double t = shortest_decimal(middle, 0.999 * half);
-  if (!(t >= lo && t < hi)) return std::nullopt;
-  for (const TileSeen& s : seen) {
-    if (repeat_tile_count(s.length, t) != s.count) return std::nullopt;
-  }
-  return t;
+  return std::nullopt;
 }
 
 NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, SampleBook& book, double tolerance) {

@@ -10,9 +10,10 @@
 namespace vern {
 
 // The shortest decimal tile size that makes, on every length seen, the
-// count seen there (n tiles on L: any size in [L/n, L/(n-1)), lengths
-// known to the tolerance), nearest the middle of what they allow; none
-// when no one size does.
+// count seen there (n tiles on L: any size in [L/n, L/(n-1))), nearest the
+// middle of what they allow among those as short: the lengths as they are
+// first (4 m tiles on 4 and 8 m are 4), else each known only to the
+// tolerance (noisy files); none when no one size does.
 std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tolerance);
 
 // Repeats whose tile sizes vary, once merging has settled (rows that

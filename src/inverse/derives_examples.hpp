@@ -1,0 +1,21 @@
+// Does a grammar still derive every example? The guard of every inference
+// step that rewrites a written grammar (joint_sizes, overflow_splits): a
+// step is kept only where it is.
+#pragma once
+
+#include <vector>
+
+#include "graph/grammar.hpp"
+#include "inverse/check.hpp"
+#include "inverse/example.hpp"
+
+namespace vern {
+
+// Checks each example (at its own origin, on its own extent) on `threads`
+// threads (0: one per core); results gets each example's result, an
+// example that needs more steps than the check allows counting as not
+// derivable. True when every example is derivable.
+bool derives_examples(const Grammar& g, const std::vector<Example>& placed, const CheckOptions& check, unsigned threads,
+                      std::vector<CheckResult>& results);
+
+}  // namespace vern
