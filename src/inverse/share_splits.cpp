@@ -1,6 +1,7 @@
 #include "inverse/share_splits.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <optional>
 #include <unordered_map>
 #include <unordered_set>
@@ -208,16 +209,20 @@ void link_nested_shares(Grammar& g, const std::unordered_map<NodeId, RuleId>& ru
       }
     }
     std::ranges::sort(inner_splits);
-    const std::vector<DrawnAt>& outside = values.at(outer);
+    if (inner_splits.empty()) continue;
+    // The outer split's runs by example and order, for the latest before
+    // each inner run (runs come in derivation order, examples in order).
+    std::vector<DrawnAt> outside = values.at(outer);
+    auto earlier = [](const DrawnAt& a, const DrawnAt& b) {
+      return a.at.example != b.at.example ? a.at.example < b.at.example : a.at.order < b.at.order;
+    };
+    std::ranges::sort(outside, earlier);
     for (const auto& [inner, where] : inner_splits) {
       std::vector<double> x, y;
       for (const DrawnAt& v : values.at(inner)) {
-        const DrawnAt* latest = nullptr;
-        for (const DrawnAt& o : outside)
-          if (o.at.example == v.at.example && o.at.order < v.at.order && (!latest || o.at.order > latest->at.order))
-            latest = &o;
-        if (!latest) break;
-        x.push_back(latest->value);
+        const auto after = std::ranges::lower_bound(outside, v, earlier);
+        if (after == outside.begin() || std::prev(after)->at.example != v.at.example) break;
+        x.push_back(std::prev(after)->value);
         y.push_back(v.value);
       }
       if (x.size() != values.at(inner).size() || x.size() < 2) continue;

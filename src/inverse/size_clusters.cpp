@@ -100,7 +100,9 @@ std::vector<std::size_t> size_clusters(const std::vector<SizedMember>& members) 
     std::vector<std::size_t> kinds = clusters_of_part(members, p, metres);
     const bool all_shares =
         std::all_of(members.begin(), members.end(), [&](const SizedMember& m) { return !m.sizes[p] || m.total > 0; });
-    if (all_shares) {
+    // One kind in metres is one kind however read: nothing to weigh.
+    const bool parted = std::any_of(kinds.begin(), kinds.end(), [](std::size_t k) { return k != 0; });
+    if (all_shares && parted) {
       const std::vector<std::size_t> by_share = clusters_of_part(members, p, shares);
       if (reading_cost(members, p, by_share, shares) < reading_cost(members, p, kinds, metres)) kinds = by_share;
     }
