@@ -14,6 +14,7 @@
 #include "inverse/shared_frames.hpp"
 #include "inverse/split_graph.hpp"
 #include "inverse/tidy_numbers.hpp"
+#include "inverse/turned_examples.hpp"
 
 namespace vern {
 
@@ -30,6 +31,17 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   out.tolerance = options.tolerance;
   if (out.tolerance <= 0)
     for (const auto& e : examples) out.tolerance = std::max(out.tolerance, default_tolerance(e));
+  std::size_t parts = 0;
+  for (const auto& e : examples) parts += e.boxes.size();
+
+  // Whole buildings turned a quarter are turned back to the layout the
+  // others share, and written turned (turned_examples.hpp).
+  const std::vector<int> quarters = parts <= kJoinedPartsLimit ? common_orientation(examples, out.tolerance)
+                                                              : std::vector<int>(examples.size(), 0);
+  std::vector<Example> turned;
+  if (std::ranges::any_of(quarters, [](int q) { return q != 0; }))
+    for (std::size_t i = 0; i < examples.size(); ++i) turned.push_back(turned_example(examples[i], quarters[i]));
+  const std::vector<Example>& laid_out = turned.empty() ? examples : turned;
 
   // Parts whose mesh is their label's turned become R(...){ I(label) }.
   // Orienting and splitting only read the examples, so one runs beside the
@@ -42,13 +54,13 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
       options.threads,
       [&] {
         oriented =
-            orient_parts(examples, options.primitives ? *options.primitives : PrimitiveLibrary::builtin(), out.tolerance);
+            orient_parts(laid_out, options.primitives ? *options.primitives : PrimitiveLibrary::builtin(), out.tolerance);
       },
       [&] {
         parallel_for(
-            examples.size(), options.threads,
+            laid_out.size(), options.threads,
             [&](std::size_t i) {
-              trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{out.tolerance}, examples[i].source);
+              trees[i] = split_boxes(laid_out[i].boxes, BoxSplitOptions{out.tolerance}, laid_out[i].source);
             },
             [&](std::size_t done) {
               if (options.progress) options.progress(done, examples.size());
@@ -58,13 +70,13 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   Grammar graph;
   // About 1.4 graph nodes per part for large examples (1.36 measured at a
   // million parts, through tidying): room for one and a half.
-  std::size_t parts = 0;
-  for (const auto& e : examples) parts += e.boxes.size();
   graph.reserve(parts + parts / 2);
   std::vector<NodeId> roots;
   for (std::size_t i = 0; i < examples.size(); ++i) {
-    roots.push_back(split_graph(graph, trees[i], examples[i].boxes, examples[i].source, oriented.turns[i],
+    roots.push_back(split_graph(graph, trees[i], laid_out[i].boxes, laid_out[i].source, oriented.turns[i],
                                 {out.tolerance, &out.warnings}));
+    // Turned back to be laid out: turned again where it is derived.
+    if (quarters[i] != 0) roots.back() = turned_node(graph, roots.back(), {{Axis::Z, (4 - quarters[i]) % 4}});
     trees[i] = {};  // done with it: large examples hold big trees
   }
   MergeOptions merge;

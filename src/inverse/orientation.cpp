@@ -78,12 +78,15 @@ std::optional<Orientation> find_orientation(const Mesh& canonical, const std::ve
   return std::nullopt;
 }
 
-NodeId turned_primitive(Grammar& g, LabelId label, const Orientation& turns) {
-  NodeId node = g.intern(Node{Primitive{label}, {}});
+NodeId turned_node(Grammar& g, NodeId node, const Orientation& turns) {
   for (auto t = turns.rbegin(); t != turns.rend(); ++t) {
     node = g.intern(Node{Rotate{Expr::axis(t->axis), quarter_angle(t->quarters), node}, {}});
   }
   return node;
+}
+
+NodeId turned_primitive(Grammar& g, LabelId label, const Orientation& turns) {
+  return turned_node(g, g.intern(Node{Primitive{label}, {}}), turns);
 }
 
 namespace {

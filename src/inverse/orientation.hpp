@@ -42,6 +42,9 @@ std::optional<Orientation> find_orientation(const Mesh& canonical, const std::ve
 // multiples of pi ("pi / 2", "pi", "3 * pi / 2").
 NodeId turned_primitive(Grammar& g, LabelId label, const Orientation& turns);
 
+// Any node inside R nodes for `turns`, written the same way.
+NodeId turned_node(Grammar& g, NodeId node, const Orientation& turns);
+
 // Each label's canonical mesh and each part's turns relative to it.
 struct PartOrientations {
   // A label's mesh from `library` (the user's --primitives, else the

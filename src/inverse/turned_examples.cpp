@@ -1,0 +1,128 @@
+#include "inverse/turned_examples.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <string>
+
+#include "inverse/box_split.hpp"
+
+namespace vern {
+
+namespace {
+
+// (x, y) turned counterclockwise q times.
+glm::dvec3 turn(glm::dvec3 p, int q) {
+  for (int i = 0; i < q; ++i) p = {-p.y, p.x, p.z};
+  return p;
+}
+
+// What the splitting makes of an example, without sizes: axes, order,
+// labels, and a run of alike pieces as one (rows of 3 and of 5 windows
+// are one layout).
+void layout(const SplitTree& t, const std::vector<LabelledBox>& boxes, std::string& out) {
+  switch (t.kind) {
+    case SplitTree::Kind::Leaf: out += boxes[t.box].label; return;
+    case SplitTree::Kind::Empty: out += '_'; return;
+    case SplitTree::Kind::Unsplittable: {
+      std::vector<std::string> labels;
+      for (const SplitTree& c : t.children) labels.push_back(boxes[c.box].label);
+      std::ranges::sort(labels);
+      out += "U(";
+      for (const std::string& l : labels) out += l + ",";
+      out += ')';
+      return;
+    }
+    case SplitTree::Kind::Split: break;
+  }
+  out += static_cast<char>('x' + t.axis);
+  out += '(';
+  std::string previous;
+  for (const SplitTree& c : t.children) {
+    std::string child;
+    layout(c, boxes, child);
+    if (child == previous) continue;
+    out += child;
+    out += '|';
+    previous = std::move(child);
+  }
+  out += ')';
+}
+
+std::string layout_of(const Example& e, double tolerance) {
+  const SplitTree tree = split_boxes(e.boxes, BoxSplitOptions{tolerance}, e.source);
+  std::string out;
+  layout(tree, e.boxes, out);
+  return out;
+}
+
+}  // namespace
+
+Example turned_example(const Example& example, int quarters) {
+  quarters = ((quarters % 4) + 4) % 4;
+  if (quarters == 0) return example;
+  Example out = example;
+  for (LabelledBox& b : out.boxes) {
+    const glm::dvec3 a = turn(b.min, quarters), c = turn(b.max, quarters);
+    b.min = glm::min(a, c);
+    b.max = glm::max(a, c);
+  }
+  for (Mesh& m : out.meshes) {
+    for (glm::dvec3& p : m.positions) p = turn(p, quarters);
+    for (glm::dvec3& n : m.normals) n = turn(n, quarters);
+  }
+  if (example.positions.size() == example.boxes.size()) {
+    PartPositions positions;
+    std::vector<glm::dvec3> part;
+    for (std::size_t i = 0; i < example.boxes.size(); ++i) {
+      example.positions.get(i, example.boxes[i].min, example.boxes[i].max, part);
+      for (glm::dvec3& p : part) p = turn(p, quarters);
+      positions.add(part, out.boxes[i].min, out.boxes[i].max);
+    }
+    out.positions = std::move(positions);
+  }
+  update_bounds(out);
+  return out;
+}
+
+std::vector<int> common_orientation(const std::vector<Example>& examples, double tolerance) {
+  const std::size_t n = examples.size();
+  std::vector<int> quarters(n, 0);
+  if (n < 2) return quarters;
+  // Each example's layout turned 0..3 times.
+  std::vector<std::array<std::string, 4>> layouts(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int q = 0; q < 4; ++q) layouts[i][q] = layout_of(turned_example(examples[i], q), tolerance);
+  // How many examples show each layout as they are, and turned.
+  std::map<std::string, std::size_t> as_they_are, reachable;
+  for (std::size_t i = 0; i < n; ++i) {
+    ++as_they_are[layouts[i][0]];
+    std::array<std::string, 4> seen = layouts[i];
+    std::ranges::sort(seen);
+    for (int q = 0; q < 4; ++q)
+      if (q == 0 || seen[q] != seen[q - 1]) ++reachable[seen[q]];
+  }
+  // The common layout: the one most examples can show, then the one most
+  // show as they are (one order every time: the map's).
+  const std::string* common = nullptr;
+  for (const auto& [key, count] : reachable) {
+    if (!common || count > reachable[*common] ||
+        (count == reachable[*common] && as_they_are[key] > as_they_are[*common]))
+      common = &key;
+  }
+  if (!common || reachable[*common] < 2 || reachable[*common] == as_they_are[*common]) return quarters;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (layouts[i][0] == *common) continue;
+    // Quarter turns only: a building turned half round is also its mirror
+    // image for every part symmetric front to back (a garage on the other
+    // side), which is how a person reads it.
+    for (const int q : {1, 3})
+      if (layouts[i][q] == *common) {
+        quarters[i] = q;
+        break;
+      }
+  }
+  return quarters;
+}
+
+}  // namespace vern
