@@ -4,9 +4,11 @@
 
 namespace vern {
 
-std::vector<NodeId> nodes_below(const Grammar& g, NodeId root) {
+namespace {
+
+std::vector<NodeId> reachable(const Grammar& g, std::vector<NodeId> stack) {
   std::vector<bool> visited(g.node_count(), false);
-  std::vector<NodeId> stack{root}, out;
+  std::vector<NodeId> out;
   while (!stack.empty()) {
     const NodeId id = stack.back();
     stack.pop_back();
@@ -17,6 +19,16 @@ std::vector<NodeId> nodes_below(const Grammar& g, NodeId root) {
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+}  // namespace
+
+std::vector<NodeId> nodes_below(const Grammar& g, NodeId root) { return reachable(g, {root}); }
+
+std::vector<NodeId> nodes_of_rules(const Grammar& g) {
+  std::vector<NodeId> bodies;
+  for (const Rule& r : g.rules) bodies.push_back(r.body);
+  return reachable(g, std::move(bodies));
 }
 
 }  // namespace vern

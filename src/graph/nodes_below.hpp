@@ -13,4 +13,7 @@ namespace vern {
 // same list, so the same rewrite, whatever the graph's layout.
 std::vector<NodeId> nodes_below(const Grammar& g, NodeId root);
 
+// The same from every rule's body: all the nodes a grammar's rules hold.
+std::vector<NodeId> nodes_of_rules(const Grammar& g);
+
 }  // namespace vern

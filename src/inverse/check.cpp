@@ -47,6 +47,7 @@ class Checker {
     if (found_) {
       r.witness = witness_;
       r.parts = parts_;
+      r.steps = steps_;
     } else {
       r.mismatch = best_.message.empty() ? "the grammar does not derive the example" : best_.message;
       if (!uncheckable_.empty() && best_.message.find("cannot check") == std::string::npos)
@@ -117,6 +118,7 @@ class Checker {
       // The first line says what was matched, so even a grammar without
       // choices has a witness.
       parts_ = m.matched_parts();
+      steps_ = m.steps();
       if (!text_) return;
       witness_ = {"start: " + g_.rules[g_.start_rule].label + " on " + bounds_text(start_.origin, start_.size) + ", " +
                   std::to_string(boxes_.size()) + " boxes"};
@@ -146,6 +148,7 @@ class Checker {
   bool found_ = false;
   std::vector<std::string> witness_;
   std::vector<MatchedPart> parts_;
+  std::vector<CheckStep> steps_;
   bool text_ = true;  // spell the witness out
   Mismatch best_;
   std::string uncheckable_;

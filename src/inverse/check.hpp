@@ -111,6 +111,18 @@ struct MatchedPart {
   double value = 0;   // the size's value (a relative size: the share, for the scale chosen)
 };
 
+// One step of the derivation that reproduces an example, as data, in
+// derivation order: an alternative taken, a value pinned down, a repeat's
+// tiles (then each tile's steps, tile after tile).
+struct CheckStep {
+  enum class Kind : std::uint8_t { Alternative, Value, Part, Tiles };
+  Kind kind = Kind::Alternative;
+  NodeId node = 0;        // the choose; the split that pinned the value down; the split; the repeat
+  std::size_t index = 0;  // Alternative: the option taken; Part: the part
+  double value = 0;       // Value: the value; Part: its size's value; Tiles: how many tiles
+  double length = 0;      // Tiles: each tile's length; Part: its length
+};
+
 struct CheckResult {
   bool derivable = false;
   // When derivable: what was matched, then the choices and random values
@@ -122,6 +134,8 @@ struct CheckResult {
   std::vector<std::string> witness;
   // When derivable: every random split part of that derivation, in order.
   std::vector<MatchedPart> parts;
+  // When derivable: its choices, values and repeats, in order.
+  std::vector<CheckStep> steps;
   // When not: where the deepest-reaching attempt failed and why, e.g.
   //   "at house (25:1), split(z) at 25:10 on x 0..6.66667, y 0..10, z 0..10: no placement of the
   //    parts on the cuts of the example's boxes fits sizes ~2 : ~1 (cuts at z = 0, 6.5, 10)"

@@ -101,6 +101,7 @@ class Matcher {
 
   // After a successful run: its random split parts and its witness.
   std::vector<MatchedPart> matched_parts() const;
+  std::vector<CheckStep> steps() const;
   std::vector<std::string> witness() const;
   // After a failed one: why, and what could not be checked.
   const Mismatch& mismatch() const { return best_; }

@@ -167,10 +167,14 @@ bool Matcher::match_repeat(NodeId id, const Scope& s, const BoxList& inside) {
   for (const TileCount& c : st->counts) {
     budget_.step();
     const std::size_t mark = witness_.size();
-    if (st->random) {
+    {
+      // Spelled out where a draw chose the count; kept as data always, so
+      // a repeat's tiles can be told apart in CheckResult::steps.
       WitnessLine w = line(WitnessLine::Kind::Tiles, id);
       w.value = c.n;
       w.size = c.size;
+      w.spelled = st->random;
+      w.length = c.n > 0 ? length / c.n : 0.0;
       witness_.push_back(std::move(w));
     }
     if (c.n <= 0) {

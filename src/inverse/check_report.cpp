@@ -22,7 +22,22 @@ std::vector<MatchedPart> Matcher::matched_parts() const {
 std::vector<std::string> Matcher::witness() const {
   std::vector<std::string> out;
   out.reserve(witness_.size());
-  for (const WitnessLine& w : witness_) out.push_back(witness_text(g_, w));
+  for (const WitnessLine& w : witness_)
+    if (w.spelled) out.push_back(witness_text(g_, w));
+  return out;
+}
+
+std::vector<CheckStep> Matcher::steps() const {
+  std::vector<CheckStep> out;
+  for (const WitnessLine& w : witness_) {
+    switch (w.kind) {
+      case WitnessLine::Kind::Alternative: out.push_back({CheckStep::Kind::Alternative, w.node, w.index, 0, 0}); break;
+      case WitnessLine::Kind::Value: out.push_back({CheckStep::Kind::Value, w.node, 0, w.value, 0}); break;
+      case WitnessLine::Kind::Tiles: out.push_back({CheckStep::Kind::Tiles, w.node, 0, w.value, w.length}); break;
+      case WitnessLine::Kind::Part: out.push_back({CheckStep::Kind::Part, w.node, w.index, w.value, w.length}); break;
+      case WitnessLine::Kind::NoAlternative: break;
+    }
+  }
   return out;
 }
 

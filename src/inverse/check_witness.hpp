@@ -33,6 +33,7 @@ struct WitnessLine {
   std::uint64_t path = 0;            // Part: the split's derivation_path
   std::string name;                  // Value: the parameter or constant
   Origin origin;                     // Value: what drew it
+  bool spelled = true;               // false: data only (a repeat whose count no draw chose)
 };
 
 // "plot: alternative 2 of 2 (split(x) at 24:10)",

@@ -4,6 +4,7 @@
 
 #include "graph/error.hpp"
 #include "graph/parallel_for.hpp"
+#include "inverse/derived_example.hpp"
 
 namespace vern {
 
@@ -18,6 +19,16 @@ bool derives_examples(const Grammar& g, const std::vector<Example>& placed, cons
     }
   });
   return std::ranges::all_of(results, [](const CheckResult& r) { return r.derivable; });
+}
+
+bool derives_examples(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
+                      std::vector<CheckResult>& results) {
+  std::vector<Example> placed;
+  for (const Example& e : examples) placed.push_back(at_origin(e));
+  CheckOptions check;
+  check.tolerance = options.tolerance;
+  check.witness = false;
+  return derives_examples(g, placed, check, options.threads, results);
 }
 
 }  // namespace vern

@@ -18,4 +18,15 @@ namespace vern {
 bool derives_examples(const Grammar& g, const std::vector<Example>& placed, const CheckOptions& check, unsigned threads,
                       std::vector<CheckResult>& results);
 
+// How a step that rewrites a written grammar checks it.
+struct RewriteCheck {
+  double tolerance = 1e-6;  // metres, as check uses it
+  unsigned threads = 0;     // 0: one per core
+};
+
+// The same for examples as infer was given (placed here), without the
+// witness's text.
+bool derives_examples(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
+                      std::vector<CheckResult>& results);
+
 }  // namespace vern

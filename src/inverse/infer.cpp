@@ -10,6 +10,7 @@
 #include "inverse/merge.hpp"
 #include "inverse/orientation.hpp"
 #include "inverse/overflow_splits.hpp"
+#include "inverse/progressions.hpp"
 #include "inverse/rule_naming.hpp"
 #include "inverse/shared_frames.hpp"
 #include "inverse/split_graph.hpp"
@@ -108,6 +109,9 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
     joint.threads = options.threads;
     out.joint = join_sizes(out.grammar, examples, joint);
   }
+  // Rows whose tiles step down (or up) as they go: a recursion with the
+  // step, read from the sizes just joined (progressions.hpp).
+  if (parts <= kJoinedPartsLimit) fold_progressions(out.grammar, examples, {smallest, options.threads});
   // Last: it only rewrites what is written, and joining sizes reads the
   // grammar's structure as rules_for left it. Bounded like joining, as its
   // rounds each read the whole grammar.

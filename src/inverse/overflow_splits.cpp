@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <unordered_set>
 
+#include "graph/nodes_below.hpp"
 #include "graph/structural.hpp"
 #include "inverse/derived_example.hpp"
 #include "inverse/derives_examples.hpp"
@@ -74,21 +74,10 @@ bool taken_for(const Grammar& g, const Split& s, const Split& t) {
 
 }  // namespace
 
-std::size_t unify_overflows(Grammar& g, const std::vector<Example>& examples, const OverflowOptions& options) {
-  std::vector<NodeId> splits;
-  {
-    std::unordered_set<NodeId> seen;
-    std::vector<NodeId> stack;
-    for (const Rule& r : g.rules) stack.push_back(r.body);
-    while (!stack.empty()) {
-      const NodeId id = stack.back();
-      stack.pop_back();
-      if (!seen.insert(id).second) continue;
-      if (std::holds_alternative<Split>(g.op(id))) splits.push_back(id);
-      for_each_child(g.op(id), [&](NodeId c) { stack.push_back(c); });
-    }
-  }
-  std::ranges::sort(splits);  // one order every time
+std::size_t unify_overflows(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options) {
+  std::vector<NodeId> splits;  // in id order: one order every time
+  for (const NodeId id : nodes_of_rules(g))
+    if (std::holds_alternative<Split>(g.op(id))) splits.push_back(id);
   std::vector<NodeId> replace(g.node_count(), kNoReplacement);
   std::size_t count = 0;
   for (const NodeId s : splits) {
@@ -117,13 +106,8 @@ std::size_t unify_overflows(Grammar& g, const std::vector<Example>& examples, co
   if (any)
     for (Rule& rule : g.rules) rule.body = substitute_until_settled(g, rule.body, joined);
   drop_unused_rules(g);
-  std::vector<Example> placed;
-  for (const Example& e : examples) placed.push_back(at_origin(e));
-  CheckOptions check;
-  check.tolerance = options.tolerance;
-  check.witness = false;
   std::vector<CheckResult> results;
-  if (!derives_examples(g, placed, check, options.threads, results)) {
+  if (!derives_examples(g, examples, options, results)) {
     g = before;
     return 0;
   }

@@ -21,17 +21,13 @@
 #include <vector>
 
 #include "graph/grammar.hpp"
+#include "inverse/derives_examples.hpp"
 #include "inverse/example.hpp"
 
 namespace vern {
 
-struct OverflowOptions {
-  double tolerance = 1e-6;  // metres, as check uses it
-  unsigned threads = 0;     // for checking the examples (0: one per core)
-};
-
 // Rewrites g in place; returns how many splits were replaced (0: g as it
 // was). examples: as given to infer.
-std::size_t unify_overflows(Grammar& g, const std::vector<Example>& examples, const OverflowOptions& options);
+std::size_t unify_overflows(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options);
 
 }  // namespace vern
