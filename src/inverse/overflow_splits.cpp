@@ -6,7 +6,6 @@
 
 #include "graph/nodes_below.hpp"
 #include "graph/structural.hpp"
-#include "inverse/derived_example.hpp"
 #include "inverse/derives_examples.hpp"
 #include "inverse/equal_options.hpp"
 #include "inverse/substitute.hpp"

@@ -7,7 +7,6 @@
 #include "forward/evaluate.hpp"
 #include "graph/nodes_below.hpp"
 #include "graph/structural.hpp"
-#include "inverse/derived_example.hpp"
 #include "inverse/derives_examples.hpp"
 #include "inverse/linear_size.hpp"
 #include "inverse/rule_naming.hpp"
