@@ -210,6 +210,18 @@ const std::vector<BadInput> kCases = {
   {"gltf_accessor_out_of_range", "infer", {"accessor_out_of_range.gltf", "-o", "style.grm"}, kInput,
    "accessor_out_of_range.gltf: error: ", "node 0 'wall': its POSITION accessor reads past the end",
    {"gltf/accessor_out_of_range.gltf"}},
+  // Offsets and counts near 2^64: the range check's own arithmetic must not
+  // wrap round into a range that fits (a heap read past the buffer, or
+  // coordinates taken from outside the accessor's view with exit 0).
+  {"gltf_accessor_count_overflows", "infer", {"accessor_count_overflows.gltf", "-o", "style.grm"}, kInput,
+   "accessor_count_overflows.gltf: error: ", "node 0 'wall': its POSITION accessor reads past the end of its buffer",
+   {"gltf/accessor_count_overflows.gltf"}},
+  {"gltf_accessor_offset_wraps", "infer", {"accessor_offset_wraps.gltf", "-o", "style.grm"}, kInput,
+   "accessor_offset_wraps.gltf: error: ", "node 0 'wall': its POSITION accessor reads past the end of its buffer",
+   {"gltf/accessor_offset_wraps.gltf"}},
+  {"gltf_index_count_overflows", "infer", {"index_count_overflows.gltf", "-o", "style.grm"}, kInput,
+   "index_count_overflows.gltf: error: ", "node 0 'wall': its index accessor reads past the end of its buffer",
+   {"gltf/index_count_overflows.gltf"}},
   {"gltf_buffer_view_out_of_range", "infer", {"buffer_view_out_of_range.gltf", "-o", "style.grm"}, kInput,
    "buffer_view_out_of_range.gltf: error: ", "node 0 'wall': its POSITION accessor has no buffer view",
    {"gltf/buffer_view_out_of_range.gltf"}},

@@ -16,6 +16,7 @@
 #include <tiny_gltf.h>
 
 #include "forward/obj_reader.hpp"
+#include "graph/checked_size.hpp"
 #include "graph/error.hpp"
 #include "graph/number_format.hpp"
 
@@ -136,13 +137,21 @@ class AccessorReader {
     stride_ = static_cast<std::size_t>(stride);
     component_size_ = static_cast<std::size_t>(component_size);
     count_ = a.count;
-    const std::size_t start = view.byteOffset + a.byteOffset;
+    if (count_ == 0) return;  // nothing is read, whatever the offsets say
+    // Where the last element ends, in the view and in the buffer. Every
+    // number here is the file's to choose: near 2^64 they would wrap round
+    // into a range that fits, so each step is checked.
     const std::size_t element = component_size_ * static_cast<std::size_t>(components_);
-    if (count_ > 0 && (start + stride_ * (count_ - 1) + element > data.size() ||
-                       a.byteOffset + stride_ * (count_ - 1) + element > view.byteLength)) {
+    std::optional<std::size_t> end_in_view = checked_mul(stride_, count_ - 1);
+    if (end_in_view) end_in_view = checked_add(*end_in_view, element);
+    if (end_in_view) end_in_view = checked_add(*end_in_view, a.byteOffset);
+    const std::optional<std::size_t> end_in_buffer =
+        end_in_view ? checked_add(*end_in_view, view.byteOffset) : std::nullopt;
+    if (!end_in_buffer || *end_in_view > view.byteLength || *end_in_buffer > data.size()) {
       broken("reads past the end of its buffer");
     }
-    data_ = data.data() + start;
+    // Neither sum wraps: the start lies below the end.
+    data_ = data.data() + view.byteOffset + a.byteOffset;
   }
 
   std::size_t count() const { return count_; }
