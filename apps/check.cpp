@@ -9,6 +9,7 @@
 #include "inverse/check.hpp"
 #include "inverse/example.hpp"
 #include "support/command_line.hpp"
+#include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
 
 namespace fs = std::filesystem;
@@ -29,7 +30,7 @@ CommandLine make_command_line() {
   cl.add({"--scope", "", 3, "X Y Z", "plot size to derive on (default: each example's own extent)"});
   cl.add({"--brief", "-b", 0, "", "one line per example, without the choices"});
   cl.add({"--max-steps", "", 1, "N", "give up after N matching steps per example (default 10000000)"});
-  cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
+  add_example_options(cl);
   cl.add_standard_options(/*quiet=*/false);
   cl.set_epilog(
       "examples:\n"
@@ -62,9 +63,7 @@ int run(int argc, char** argv) {
   if (args.has("--max-steps"))
     options.max_steps = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-steps", 1, 1LL << 50));
   const bool brief = args.has("--brief");
-  ExampleLimits limits;
-  if (args.has("--max-parts"))
-    limits.max_parts = static_cast<std::size_t>(CommandLine::integer(args, "--max-parts", 1, 100'000'000));
+  const ExampleLimits limits = example_limits(args);
   // A hand-written grammar's plot can be larger than what it built (the
   // city's towers stop below its 80 m plot): --scope names the plot.
   std::optional<glm::dvec3> scope;

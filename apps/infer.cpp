@@ -16,6 +16,7 @@
 #include "graph/writer.hpp"
 #include "inverse/infer.hpp"
 #include "support/command_line.hpp"
+#include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
 #include "support/output_paths.hpp"
 
@@ -51,7 +52,7 @@ CommandLine make_command_line() {
           "joined (default): parts built alike but for some numbers or an axis become one rule\n"
           "called with each part's values; apart: each written out in full"});
   cl.add({"--seed", "-s", 1, "S", "seed of the test derivations run on the result (default 1)"});
-  cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
+  add_example_options(cl);
   cl.add_standard_options();
   cl.set_epilog(
       "examples:\n"
@@ -118,9 +119,7 @@ int run(int argc, char** argv) {
       usage("--start '" + options.start + "' cannot be a rule label",
             "a label is a letter or '_' followed by letters, digits and '_', and not an operation word such as split");
   }
-  ExampleLimits limits;
-  if (args.has("--max-parts"))
-    limits.max_parts = static_cast<std::size_t>(CommandLine::integer(args, "--max-parts", 1, 100'000'000));
+  const ExampleLimits limits = example_limits(args);
   const std::uint64_t seed =
       args.has("--seed") ? static_cast<std::uint64_t>(CommandLine::integer(args, "--seed", 0, 1LL << 53)) : 1;
 

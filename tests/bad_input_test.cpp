@@ -10,6 +10,8 @@
 // binary and large inputs are made there by the case's setup instead.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -43,6 +45,7 @@ struct BadInput {
   const char* precious = nullptr;  // a file pre-created where the output would go
   std::size_t max_memory_mib = 0;  // when set, the run's peak resident memory is bounded
   std::vector<std::string> creates = {};  // for the cases that must succeed
+  std::string unsaid = {};  // what the message must not say (a size of a file it should not read)
 };
 
 // gtest prints a failing case by its name, not as bytes.
@@ -64,6 +67,31 @@ std::string u32(std::uint32_t v) {
   for (int i = 0; i < 4; ++i) s[static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xFF);
   return s;
 }
+
+// two_parts.gltf with its buffer in the file `uri` of `byte_length` bytes.
+std::string gltf_naming(const std::string& uri, std::size_t byte_length) {
+  std::string text = test::read_file(kCorpus / "gltf/two_parts.gltf");
+  const std::size_t start = text.find("data:");
+  text.replace(start, text.find('"', start) - start, uri);
+  const std::string length = "\"byteLength\": 48\n  }\n ]";
+  text.replace(text.rfind(length), length.size(), "\"byteLength\": " + std::to_string(byte_length) + "\n  }\n ]");
+  return text;
+}
+
+// The 48 bytes two_parts.gltf's buffer holds: four corners of a unit box.
+std::string box_bytes() {
+  const float corners[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1};
+  return std::string(reinterpret_cast<const char*>(corners), sizeof corners);
+}
+
+// ex/model.gltf, whose buffer is ../secret.bin.
+void secret_beside_the_folder(const fs::path& d) {
+  fs::create_directory(d / "ex");
+  write_text(d / "ex/model.gltf", gltf_naming("../secret.bin", 48));
+  binary_file(d / "secret.bin", box_bytes());
+}
+
+void fifo(const fs::path& path) { ASSERT_EQ(mkfifo(path.c_str(), 0644), 0) << path; }
 
 // The file that is not there, the folder given for a file, and the valid
 // references the CLI cases start from.
@@ -167,6 +195,11 @@ const std::vector<BadInput> kCases = {
    "", "", {}, [](const fs::path& d) { test::write_commented_obj(d / "huge.obj", std::size_t{200} << 20); },
    nullptr, 100, {"style.grm", "style.prims.obj"}},
   // 64 MB of parts: reading stops at the first part past the limit.
+  {"obj_example_is_a_fifo", "infer", {"pipe.obj", "-o", "style.grm"}, kIo,
+   "pipe.obj: error: ", "is a FIFO (named pipe), not a regular file", {}, [](const fs::path& d) { fifo(d / "pipe.obj"); }},
+  {"obj_example_is_a_device", "check", {"ok.grm", "zero.obj"}, kIo,
+   "zero.obj: error: ", "is a character device, not a regular file", kValidGrammar,
+   [](const fs::path& d) { fs::create_symlink("/dev/zero", d / "zero.obj"); }},
   {"obj_too_many_parts", "infer", {"city.obj", "-o", "style.grm"}, kLimit,
    "city.obj:150010:1: error: ", "more than 10000 objects with faces",
    {}, [](const fs::path& d) { test::write_many_parts_obj(d / "city.obj", 200000); }, "style.grm", 100},
@@ -240,6 +273,56 @@ const std::vector<BadInput> kCases = {
    "no_nodes.gltf: error: ", "has no labelled objects", {"gltf/no_nodes.gltf"}},
   {"gltf_overlapping_nodes", "infer", {"overlapping_nodes.gltf", "-o", "style.grm"}, kInput,
    "overlapping_nodes.gltf: error: ", "objects 'wall' and 'roof' overlap", {"gltf/overlapping_nodes.gltf"}},
+  // Buffer URIs are the file's choice, not the user's: only regular files
+  // in the glTF's folder (or below it) are read, none larger than a cap.
+  {"gltf_buffer_outside_the_folder", "infer", {"ex/model.gltf", "-o", "style.grm"}, kInput,
+   "ex/model.gltf: error: ", "the URI '../secret.bin' names a file outside the glTF's folder",
+   {}, secret_beside_the_folder},
+  {"gltf_buffer_outside_the_folder_allowed", "infer",
+   {"ex/model.gltf", "--allow-outside-files", "-o", "style.grm"}, kOk, "", "",
+   {}, secret_beside_the_folder, nullptr, 0, {"style.grm", "style.prims.obj"}},
+  {"gltf_buffer_absolute_path", "infer", {"model.gltf", "-o", "style.grm"}, kInput,
+   "model.gltf: error: ", "names a file outside the glTF's folder",
+   {}, [](const fs::path& d) {
+     fs::create_directory(d / "elsewhere");
+     binary_file(d / "elsewhere/secret.bin", box_bytes());
+     write_text(d / "model.gltf", gltf_naming((d / "elsewhere/secret.bin").string(), 48)); }},
+  {"gltf_buffer_symlink_out_of_the_folder", "infer", {"ex/model.gltf", "-o", "style.grm"}, kInput,
+   "ex/model.gltf: error: ", "the URI 'link.bin' names a file outside the glTF's folder",
+   {}, [](const fs::path& d) {
+     fs::create_directory(d / "ex");
+     write_text(d / "ex/model.gltf", gltf_naming("link.bin", 48));
+     binary_file(d / "secret.bin", box_bytes());
+     fs::create_symlink("../secret.bin", d / "ex/link.bin"); }},
+  {"gltf_buffer_in_a_subfolder_works", "infer", {"model.gltf", "-o", "style.grm"}, kOk, "", "",
+   {}, [](const fs::path& d) {
+     fs::create_directory(d / "buffers");
+     write_text(d / "model.gltf", gltf_naming("buffers/box.bin", 48));
+     binary_file(d / "buffers/box.bin", box_bytes()); }, nullptr, 0, {"style.grm", "style.prims.obj"}},
+  {"gltf_buffer_size_is_not_told", "infer", {"model.gltf", "-o", "style.grm"}, kInput,
+   "model.gltf: error: ", "the buffer file 'data.bin' does not hold the byteLength its buffer declares",
+   {}, [](const fs::path& d) {
+     write_text(d / "model.gltf", gltf_naming("data.bin", 48));
+     binary_file(d / "data.bin", std::string(12345, 'x')); }, nullptr, 0, {}, "12345"},
+  // A sparse file: 1 GiB long, nothing on the disk; never read whole.
+  {"gltf_buffer_of_1gib", "infer", {"model.gltf", "-o", "style.grm"}, kLimit,
+   "model.gltf: error: ", "the URI 'data.bin' names a file that is larger than 256 MiB",
+   {}, [](const fs::path& d) {
+     write_text(d / "model.gltf", gltf_naming("data.bin", std::size_t{1} << 30));
+     binary_file(d / "data.bin", "");
+     fs::resize_file(d / "data.bin", std::uintmax_t{1} << 30); },
+   nullptr, 100},
+  {"gltf_file_over_the_limit", "infer", {"big.gltf", "--max-gltf-mib", "1", "-o", "style.grm"}, kLimit,
+   "big.gltf: error: ", "is larger than 1 MiB\n  hint: glTF files and the files they name are read whole: raise the "
+   "limit with --max-gltf-mib (now 1)",
+   {}, [](const fs::path& d) {
+     binary_file(d / "big.gltf", "");
+     fs::resize_file(d / "big.gltf", std::uintmax_t{2} << 20); }},
+  {"gltf_buffer_is_a_fifo", "infer", {"model.gltf", "-o", "style.grm"}, kIo,
+   "model.gltf: error: ", "the URI 'data.bin' names a file that is a FIFO (named pipe), not a regular file",
+   {}, [](const fs::path& d) { write_text(d / "model.gltf", gltf_naming("data.bin", 48)); fifo(d / "data.bin"); }},
+  {"gltf_example_is_a_fifo", "infer", {"pipe.glb", "-o", "style.grm"}, kIo,
+   "pipe.glb: error: ", "is a FIFO (named pipe), not a regular file", {}, [](const fs::path& d) { fifo(d / "pipe.glb"); }},
   {"gltf_too_many_parts", "infer", {"two_parts.gltf", "--max-parts", "1", "-o", "style.grm"}, kLimit,
    "two_parts.gltf: error: ", "more than 1 labelled parts: reading stopped at node 1 'roof'", {"gltf/two_parts.gltf"}},
 
@@ -248,6 +331,12 @@ const std::vector<BadInput> kCases = {
    "missing.grm: error: ", "cannot open the grammar file"},
   {"grammar_a_folder", "generate", {"style.grm", "-o", "out.obj"}, kIo,
    "style.grm: error: ", "is a folder", {}, [](const fs::path& d) { fs::create_directory(d / "style.grm"); }},
+  {"grammar_is_a_fifo", "generate", {"pipe.grm", "-o", "out.obj"}, kIo,
+   "pipe.grm: error: ", "is a FIFO (named pipe), not a regular file", {}, [](const fs::path& d) { fifo(d / "pipe.grm"); }},
+  // Read whole, /dev/zero would never end.
+  {"grammar_is_a_device", "check", {"zero.grm", "two_parts.obj"}, kIo,
+   "zero.grm: error: ", "is a character device, not a regular file", kValidObj,
+   [](const fs::path& d) { fs::create_symlink("/dev/zero", d / "zero.grm"); }},
   {"grammar_binary", "generate", {"binary.grm", "-o", "out.obj"}, kInput,
    "binary.grm:1:1: error: ", "unexpected character byte 0x7F",
    {}, [](const fs::path& d) { binary_file(d / "binary.grm", std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10)); }, "out.obj"},
@@ -455,6 +544,12 @@ const std::vector<BadInput> kCases = {
    "no_rule_applies.grm:2:1: error: ", "no rule of 'q' applies", {"grammar/no_rule_applies.grm"}},
   {"derive_primitives_file_missing", "generate", {"with_primitives_file.grm", "-o", "out.obj"}, kIo,
    "prims.obj: error: ", "no such file or folder", {"grammar/with_primitives_file.grm"}},
+  {"derive_primitives_file_is_a_fifo", "generate", {"with_primitives_file.grm", "-o", "out.obj"}, kIo,
+   "prims.obj: error: ", "is a FIFO (named pipe), not a regular file", {"grammar/with_primitives_file.grm"},
+   [](const fs::path& d) { fifo(d / "prims.obj"); }},
+  {"generate_primitives_is_a_fifo", "generate", {"ok.grm", "--primitives", "pipe.obj", "-o", "out.obj"}, kIo,
+   "pipe.obj: error: ", "is a FIFO (named pipe), not a regular file", kValidGrammar,
+   [](const fs::path& d) { fifo(d / "pipe.obj"); }},
   // Limits: each names the flag that raises it.
   {"limit_repeatN_1e12", "generate", {"repeatN_1e12.grm", "-o", "out.obj"}, kLimit,
    "repeatN_1e12.grm:1:18: error: ", "repeatN asks for 1e+12 tiles", {"grammar/repeatN_1e12.grm"}, nullptr, "out.obj"},
@@ -605,6 +700,9 @@ TEST_P(BadInputCorpus, Runs) {
   }
   EXPECT_NE(r.err.find(c.where), std::string::npos) << "where: " << c.where << "\n" << r.err;
   EXPECT_NE(r.err.find(c.what), std::string::npos) << "what: " << c.what << "\n" << r.err;
+  if (!c.unsaid.empty()) {
+    EXPECT_EQ(r.err.find(c.unsaid), std::string::npos) << "says " << c.unsaid << ":\n" << r.err;
+  }
   EXPECT_NE(r.err.find("\n  hint: "), std::string::npos) << "no hint:\n" << r.err;
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
   // Nothing created, changed or removed: not the output, not a temporary.

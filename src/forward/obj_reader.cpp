@@ -14,6 +14,7 @@
 #include "forward/obj_lines.hpp"
 #include "forward/obj_plain_line.hpp"
 #include "graph/error.hpp"
+#include "graph/input_file.hpp"
 #include "graph/utf8.hpp"
 
 namespace vern {
@@ -480,6 +481,7 @@ void read_obj_file(const std::filesystem::path& path, const ObjLimits& limits, c
   if (fs::is_directory(path, ec)) {
     fail(ErrorKind::Io, path.string(), {}, "is a folder, not an OBJ file", "name an .obj file");
   }
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int err = errno;

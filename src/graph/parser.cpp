@@ -36,6 +36,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "graph/input_file.hpp"
 #include "graph/lexer.hpp"
 #include "graph/reserved_words.hpp"
 #include "graph/suggest.hpp"
@@ -783,6 +784,7 @@ Grammar read_grammar_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     fail(ErrorKind::Io, path.string(), {}, "is a folder, not a grammar file", "name a .grm file");
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(ErrorKind::Io, path.string(), {}, "cannot open the grammar file", "check the path");
   std::ostringstream buf;

@@ -16,7 +16,9 @@
 #include <tiny_gltf.h>
 
 #include "forward/obj_reader.hpp"
+#include "inverse/gltf_files.hpp"
 #include "graph/checked_size.hpp"
+#include "graph/input_file.hpp"
 #include "graph/error.hpp"
 #include "graph/number_format.hpp"
 
@@ -412,17 +414,45 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
   }
 }
 
+// tinygltf's file system: every file it opens is one GltfFiles allows.
+bool gltf_file_exists(const std::string& path, void* files) { return static_cast<GltfFiles*>(files)->may_read(path); }
+std::string gltf_path_as_is(const std::string& path, void*) { return path; }
+bool gltf_read_file(std::vector<unsigned char>* out, std::string*, const std::string& path, void* files) {
+  return static_cast<GltfFiles*>(files)->read(path, *out);
+}
+bool gltf_write_nothing(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+
 Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits& limits) {
   Example ex;
   ex.source = path.string();
   PartAdder adder(ex);
+  std::vector<unsigned char> bytes;
+  if (const auto refused = read_regular_file(path, limits.gltf.max_bytes, bytes)) {
+    fail(refused->kind, ex.source, {}, refused->problem,
+         refused->kind == ErrorKind::Limit ? gltf_size_hint(limits.gltf) : "check the path and the file's permissions");
+  }
+  GltfFiles files(path, limits.gltf);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skip_image, nullptr);
+  loader.SetFsCallbacks({gltf_file_exists, gltf_path_as_is, gltf_read_file, gltf_write_nothing, &files});
   tinygltf::Model model;
   std::string err, warn;
-  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, ex.source)
-                         : loader.LoadASCIIFromFile(&model, &err, &warn, ex.source);
+  // tinygltf takes the length as an unsigned int: the cap keeps it below 4 GiB.
+  const auto length = static_cast<unsigned int>(bytes.size());
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, files.folder())
+                         : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                                      length, files.folder());
+  bytes = {};
   if (!ok) {
+    // A file the glTF names that was refused is the reason, said our way.
+    if (const auto& refused = files.refusal()) fail(refused->kind, ex.source, {}, refused->message, refused->hint);
+    // tinygltf would say how long the file is, which may not be the
+    // user's to know (a file allowed outside the folder): said without.
+    if (err.find("File size mismatch") != std::string::npos) {
+      fail(ErrorKind::Input, ex.source, {},
+           "the buffer file '" + files.last_read() + "' does not hold the byteLength its buffer declares",
+           "export the glTF and its .bin file again, together");
+    }
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
     fail(ErrorKind::Input, ex.source, {}, std::string("is not a valid ") + (binary ? "GLB" : "glTF") + " file: " + err,
          "export the file again, or check it with scripts/validate-gltf");
@@ -559,6 +589,7 @@ Example load_example(const fs::path& path, const ExampleLimits& limits, unsigned
     fail(ErrorKind::Io, path.string(), {}, "is a folder, not an example file",
          "name an .obj, .glb or .gltf file (the command line accepts folders)");
   }
+  require_regular_file(path);
   Example ex;
   switch (format_of(path)) {
     case Format::Obj: ex = load_obj_example(path, limits, threads != 1); break;
