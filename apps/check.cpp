@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "graph/atomic_file.hpp"
+#include "graph/out_of_memory.hpp"
 #include "graph/parser.hpp"
 #include "inverse/check.hpp"
 #include "inverse/example.hpp"
@@ -96,7 +97,8 @@ int run(int argc, char** argv) {
     CheckOptions own = options;
     if (!(own.tolerance > 0)) own.tolerance = default_tolerance(example);
     try {
-      r = check_example(grammar, boxes, scope.value_or(example_size(example)), own);
+      r = naming_out_of_memory(file.string(), "while checking this example", "check it alone, or lower --max-steps",
+                               [&] { return check_example(grammar, boxes, scope.value_or(example_size(example)), own); });
     } catch (const Error& e) {
       // A limit reached while matching: say on which example.
       if (e.kind() != ErrorKind::Limit) throw;

@@ -11,6 +11,7 @@
 #include "forward/primitive_check.hpp"
 #include "forward/variants.hpp"
 #include "graph/atomic_file.hpp"
+#include "graph/out_of_memory.hpp"
 #include "graph/parser.hpp"
 #include "graph/suggest.hpp"
 #include "support/command_line.hpp"
@@ -70,10 +71,13 @@ const char* extension(Format f) { return f == Format::Obj ? ".obj" : f == Format
 
 void write_scene(const Scene& scene, const PrimitiveLibrary& library, const fs::path& path, Format format,
                  GltfOptions gltf) {
-  if (format == Format::Obj)
-    write_obj(scene, library, path);
-  else
-    write_gltf(scene, library, path, gltf);
+  naming_out_of_memory(path.string(), "while writing the buildings",
+                       "write fewer buildings into one file, or a folder of one file per building", [&] {
+                         if (format == Format::Obj)
+                           write_obj(scene, library, path);
+                         else
+                           write_gltf(scene, library, path, gltf);
+                       });
 }
 
 [[noreturn]] void usage(const std::string& message, const std::string& hint = {}) {
@@ -200,7 +204,10 @@ int run(int argc, char** argv) {
       if (done % 10 == 0 || done == total) std::fprintf(stderr, "\rderiving %u/%u buildings", done, total);
     };
   }
-  std::vector<Derivation> derivations = derive_variants(grammar, options);
+  std::vector<Derivation> derivations = naming_out_of_memory(
+      grammar_path.string(), "deriving " + std::to_string(options.count) + " building" + (options.count == 1 ? "" : "s"),
+      "derive fewer buildings at once (-n), lower --max-terminals, or use fewer threads (-j)",
+      [&] { return derive_variants(grammar, options); });
   if (show_progress) std::fprintf(stderr, "\n");
 
   std::size_t terminals = 0;

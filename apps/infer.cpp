@@ -11,6 +11,7 @@
 #include "graph/alongside.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/description_length.hpp"
+#include "graph/out_of_memory.hpp"
 #include "graph/parallel_for.hpp"
 #include "graph/reserved_words.hpp"
 #include "graph/writer.hpp"
@@ -152,7 +153,13 @@ int run(int argc, char** argv) {
   PrimitiveLibrary library = PrimitiveLibrary::builtin();
   if (args.has("--primitives")) library.load(args.value("--primitives"));
   options.primitives = &library;
-  Inference result = infer(examples, options);
+  // Out of memory, the examples are named: the one, or the first and last.
+  const std::string named = files.size() == 1 ? "this example"
+                                              : std::to_string(files.size()) + " examples (" + files.front().string() +
+                                                    " ... " + files.back().string() + ")";
+  Inference result = naming_out_of_memory(files.size() == 1 ? files.front().string() : "infer",
+                                          "inferring a grammar from " + named,
+                                          "infer from fewer or smaller examples at once", [&] { return infer(examples, options); });
   if (!quiet)
     for (const std::string& w : result.warnings) std::fprintf(stderr, "%s\n", w.c_str());
   if (result.unturned_parts > 0 && !quiet)

@@ -46,7 +46,22 @@ struct BadInput {
   std::size_t max_memory_mib = 0;  // when set, the run's peak resident memory is bounded
   std::vector<std::string> creates = {};  // for the cases that must succeed
   std::string unsaid = {};  // what the message must not say (a size of a file it should not read)
+  std::size_t address_space_mib = 0;  // when set, the run's memory is capped (setrlimit), to run out of it
 };
+
+// AddressSanitizer reserves terabytes of address space: a capped run
+// cannot start under it.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
 
 // gtest prints a failing case by its name, not as bytes.
 void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
@@ -82,6 +97,23 @@ std::string gltf_naming(const std::string& uri, std::size_t byte_length) {
 std::string box_bytes() {
   const float corners[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1};
   return std::string(reinterpret_cast<const char*>(corners), sizeof corners);
+}
+
+// A wall drawn 4 million times (EXT_mesh_gpu_instancing), every copy at
+// the origin: its buffer is 48 MB of zeros after the wall's corners, a
+// sparse file.
+void four_million_instances(const fs::path& d) {
+  const std::string count = "4000000", length = "48000000";
+  write_text(d / "model.gltf", R"({"asset": {"version": "2.0"}, "extensionsUsed": ["EXT_mesh_gpu_instancing"],
+ "buffers": [{"uri": "instances.bin", "byteLength": 48000048}],
+ "bufferViews": [{"buffer": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": )" + length + R"(}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+               {"bufferView": 1, "componentType": 5126, "count": )" + count + R"(, "type": "VEC3"}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+ "nodes": [{"name": "wall", "mesh": 0, "extensions": {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": 1}}}}],
+ "scenes": [{"nodes": [0]}], "scene": 0})");
+  binary_file(d / "instances.bin", box_bytes());
+  fs::resize_file(d / "instances.bin", 48000048);
 }
 
 // ex/model.gltf, whose buffer is ../secret.bin.
@@ -203,6 +235,9 @@ const std::vector<BadInput> kCases = {
   {"obj_too_many_parts", "infer", {"city.obj", "-o", "style.grm"}, kLimit,
    "city.obj:150010:1: error: ", "more than 10000 objects with faces",
    {}, [](const fs::path& d) { test::write_many_parts_obj(d / "city.obj", 200000); }, "style.grm", 100},
+  {"obj_out_of_memory_names_the_example", "infer", {"city.obj", "--max-parts", "1000000", "-j", "1", "-o", "style.grm"},
+   kLimit, "city.obj: error: ", "out of memory",
+   {}, [](const fs::path& d) { test::write_many_parts_obj(d / "city.obj", 200000); }, "style.grm", 0, {}, {}, 150},
   {"obj_too_many_parts_in_check", "check", {"ok.grm", "two_parts.obj", "--max-parts", "1"}, kLimit,
    "two_parts.obj:", "more than 1 objects with faces", kGrammarAndObj},
 
@@ -273,6 +308,11 @@ const std::vector<BadInput> kCases = {
    "no_nodes.gltf: error: ", "has no labelled objects", {"gltf/no_nodes.gltf"}},
   {"gltf_overlapping_nodes", "infer", {"overlapping_nodes.gltf", "-o", "style.grm"}, kInput,
    "overlapping_nodes.gltf: error: ", "objects 'wall' and 'roof' overlap", {"gltf/overlapping_nodes.gltf"}},
+  // Each instance is a part: reading stops at --max-parts before the
+  // instances' transforms are made (4 million of 128 bytes: 512 MB).
+  {"gltf_instances_past_max_parts", "infer", {"model.gltf", "-o", "style.grm"}, kLimit,
+   "model.gltf: error: ", "node 0 'wall' has 4000000 instances, more than 10000 labelled parts",
+   {}, four_million_instances, nullptr, 200},
   // Buffer URIs are the file's choice, not the user's: only regular files
   // in the glTF's folder (or below it) are read, none larger than a cap.
   {"gltf_buffer_outside_the_folder", "infer", {"ex/model.gltf", "-o", "style.grm"}, kInput,
@@ -568,6 +608,11 @@ const std::vector<BadInput> kCases = {
   {"limit_terminals_default_bounds_memory", "generate", {"terminal_explosion.grm", "-o", "out.obj"}, kLimit,
    "terminal_explosion.grm:1:61: error: ", "more than 1000000 terminals", {"grammar/terminal_explosion.grm"}, nullptr,
    nullptr, 600},
+  // Out of memory (the address space capped): the message names the input.
+  {"limit_memory_deriving_names_the_grammar", "generate",
+   {"terminal_explosion.grm", "--max-terminals", "100000000000", "-j", "1", "-o", "out.obj"}, kLimit,
+   "terminal_explosion.grm: error: ", "out of memory deriving 1 building", {"grammar/terminal_explosion.grm"},
+   nullptr, "out.obj", 0, {}, {}, 300},
   {"limit_operations", "generate", {"ok.grm", "--max-operations", "2", "-o", "out.obj"}, kLimit,
    "ok.grm:1:", "more than 2 operations in one derivation", kValidGrammar},
 
@@ -582,6 +627,13 @@ const std::vector<BadInput> kCases = {
    "generate: error: ", "--max-depth must be between 1 and 1000000, got 0", kValidGrammar},
   {"generate_value_to_a_flag", "generate", {"ok.grm", "--strict=yes"}, kUsage,
    "generate: error: ", "--strict takes 0 values", kValidGrammar},
+  // An empty path names no file: said as such, before any work.
+  {"generate_output_empty", "generate", {"ok.grm", "-o", ""}, kUsage,
+   "generate: error: ", "--output is given an empty value", kValidGrammar},
+  {"generate_primitives_empty", "generate", {"ok.grm", "--primitives", "", "-o", "out.obj"}, kUsage,
+   "generate: error: ", "--primitives is given an empty value", kValidGrammar},
+  {"generate_grammar_empty", "generate", {"", "-o", "out.obj"}, kUsage,
+   "generate: error: ", "an empty argument names no file"},
   {"generate_no_grammar", "generate", {}, kUsage, "generate: error: ", "no grammar file given"},
   {"generate_unknown_start", "generate", {"ok.grm", "--start", "pp", "-o", "out.obj"}, kUsage,
    "generate: error: ", "--start names 'pp'", kValidGrammar},
@@ -620,6 +672,12 @@ const std::vector<BadInput> kCases = {
   {"infer_max_parts_zero", "infer", {"two_parts.obj", "-o", "style.grm", "--max-parts", "0"}, kUsage,
    "infer: error: ", "--max-parts must be between 1 and", kValidObj},
   {"infer_no_output", "infer", {"two_parts.obj"}, kUsage, "infer: error: ", "no output grammar given", kValidObj},
+  {"infer_output_empty", "infer", {"two_parts.obj", "-o", ""}, kUsage,
+   "infer: error: ", "--output is given an empty value", kValidObj},
+  {"infer_primitives_out_empty", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out=", }, kUsage,
+   "infer: error: ", "--primitives-out is given an empty value", kValidObj},
+  {"infer_example_empty", "infer", {"two_parts.obj", "", "-o", "style.grm"}, kUsage,
+   "infer: error: ", "an empty argument names no file", kValidObj},
   {"infer_no_examples", "infer", {"-o", "style.grm"}, kUsage, "infer: error: ", "no examples given"},
   {"infer_start_not_a_label", "infer", {"two_parts.obj", "-o", "style.grm", "--start", "1st"}, kUsage,
    "infer: error: ", "--start '1st' cannot be a rule label", kValidObj},
@@ -655,6 +713,8 @@ const std::vector<BadInput> kCases = {
    "generate: error: ", "--scope sizes must be >= 0, got -2", kValidGrammar},
   {"check_too_many_steps", "check", {"ok.grm", "two_parts.obj", "--max-steps", "1"}, kLimit,
    "two_parts.obj: error: ", "more than 1 matching steps", kGrammarAndObj},
+  {"check_grammar_empty", "check", {"", "two_parts.obj"}, kUsage,
+   "check: error: ", "an empty argument names no file", kValidObj},
   {"check_grammar_only", "check", {"ok.grm"}, kUsage, "check: error: ", "give a grammar and at least one example",
    kValidGrammar},
   {"check_missing_grammar", "check", {"missing.grm", "two_parts.obj"}, kIo,
@@ -679,13 +739,16 @@ TEST_P(BadInputCorpus, Runs) {
   if (c.precious) write_text(dir / c.precious, "precious: must survive a failed run\n");
   const FolderSnapshot before = test::snapshot(dir.path());
 
+  if (c.address_space_mib != 0 && kAddressSanitizer) GTEST_SKIP() << "a capped address space and ASan do not mix";
   test::CommandResult r;
-  if (c.max_memory_mib != 0) {
-    const test::MeasuredResult m = test::run_program_measured(c.tool, c.args, dir.path());
+  if (c.max_memory_mib != 0 || c.address_space_mib != 0) {
+    const test::MeasuredResult m = test::run_program_measured(c.tool, c.args, dir.path(), c.address_space_mib);
     r = m.result;
     RecordProperty("peak_kib", std::to_string(m.peak_kib));
     // Far below what holding the input (or its geometry) whole would take.
-    EXPECT_LT(m.peak_kib, static_cast<long>(c.max_memory_mib) * 1024) << "peak memory in KiB";
+    if (c.max_memory_mib != 0) {
+      EXPECT_LT(m.peak_kib, static_cast<long>(c.max_memory_mib) * 1024) << "peak memory in KiB";
+    }
   } else {
     r = run_program(c.tool, c.args, dir.path());
   }

@@ -21,6 +21,7 @@
 #include "graph/input_file.hpp"
 #include "graph/error.hpp"
 #include "graph/number_format.hpp"
+#include "graph/out_of_memory.hpp"
 
 namespace vern {
 
@@ -247,9 +248,13 @@ glm::dmat4 local_matrix(const tinygltf::Node& n) {
 // EXT_mesh_gpu_instancing (what `generate --instancing` writes): the node's
 // mesh is drawn once per instance, each placed by its own translation,
 // rotation and scale before the node's own world matrix. Returns each
-// instance's matrix, or nothing when the node is not instanced.
+// instance's matrix, or nothing when the node is not instanced. Each
+// instance is a part: more than the limit leaves (after `parts` already
+// read) fail before their matrices are made (a small file can hold
+// millions, 128 bytes each).
 std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& model, const tinygltf::Node& node,
-                                                         const std::string& source, const std::string& who) {
+                                                         const std::string& source, const std::string& who,
+                                                         const ExampleLimits& limits, std::size_t parts) {
   const auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
   if (ext == node.extensions.end()) return std::nullopt;
   auto broken = [&](const std::string& problem) {
@@ -277,6 +282,12 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
     count = a.reader->count();
   }
   if (!count) broken("extension names none of TRANSLATION, ROTATION and SCALE");
+  if (*count > limits.max_parts - std::min(parts, limits.max_parts)) {
+    fail(ErrorKind::Limit, source, {},
+         who + " has " + std::to_string(*count) + " instances, more than " + std::to_string(limits.max_parts) +
+             " labelled parts" + (parts == 0 ? "" : " with the " + std::to_string(parts) + " before them"),
+         too_many_parts_hint(limits));
+  }
   std::vector<glm::dmat4> matrices;
   matrices.reserve(*count);
   for (std::size_t i = 0; i < *count; ++i) {
@@ -509,7 +520,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     // An instanced node is one part per instance. Its name is the mesh's,
     // "label" or "label colour_xxxxxx" (gltf_writer.hpp): the label is the
     // first word.
-    const auto instances = instance_matrices(model, node, ex.source, who);
+    const auto instances = instance_matrices(model, node, ex.source, who, limits, ex.boxes.size());
     const std::size_t parts = instances ? instances->size() : 1;
     const std::string name = instances ? node.name.substr(0, node.name.find(' ')) : node.name;
     for (std::size_t i = 0; i < parts; ++i) {
@@ -590,13 +601,17 @@ Example load_example(const fs::path& path, const ExampleLimits& limits, unsigned
          "name an .obj, .glb or .gltf file (the command line accepts folders)");
   }
   require_regular_file(path);
-  Example ex;
-  switch (format_of(path)) {
-    case Format::Obj: ex = load_obj_example(path, limits, threads != 1); break;
-    case Format::Glb: ex = load_gltf_example(path, true, limits); break;
-    case Format::Gltf: ex = load_gltf_example(path, false, limits); break;
-    case Format::Other: not_an_example(path);
-  }
+  Example ex = naming_out_of_memory(
+      path.string(), "while reading this example",
+      "read fewer or smaller examples at once (one example's parts: --max-parts), or free memory", [&] {
+        switch (format_of(path)) {
+          case Format::Obj: return load_obj_example(path, limits, threads != 1);
+          case Format::Glb: return load_gltf_example(path, true, limits);
+          case Format::Gltf: return load_gltf_example(path, false, limits);
+          case Format::Other: break;
+        }
+        not_an_example(path);
+      });
   update_bounds(ex);
 
   // A part may be flat (a facade panel has no thickness), but a part with

@@ -46,7 +46,7 @@ FolderSnapshot snapshot(const fs::path& folder) {
 }
 
 MeasuredResult run_program_measured(const std::string& program, const std::vector<std::string>& args,
-                                    const fs::path& folder) {
+                                    const fs::path& folder, std::size_t address_space_mib) {
   TempFolder capture;
   const std::string out = (capture / "out").string(), err = (capture / "err").string();
   const std::string binary = std::string(VERN_BIN_DIR) + "/" + program;
@@ -67,6 +67,10 @@ MeasuredResult run_program_measured(const std::string& program, const std::vecto
     dup2(o, 1);
     dup2(e, 2);
     dup2(in, 0);
+    if (address_space_mib != 0) {
+      const rlimit cap{address_space_mib << 20, address_space_mib << 20};
+      if (setrlimit(RLIMIT_AS, &cap) != 0) _exit(127);
+    }
     alarm(kHangSeconds);  // kept across exec: a hang fails the test, not the suite
     execv(binary.c_str(), argv.data());
     _exit(127);

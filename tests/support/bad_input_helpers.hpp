@@ -20,13 +20,15 @@ using FolderSnapshot = std::map<std::string, std::string>;
 FolderSnapshot snapshot(const std::filesystem::path& folder);
 
 // run_program, without a shell, reporting the peak resident memory of the
-// program (getrusage of the waited child, in KiB).
+// program (getrusage of the waited child, in KiB). With address_space_mib,
+// the program's address space is capped there (RLIMIT_AS), so that it runs
+// out of memory.
 struct MeasuredResult {
   CommandResult result;
   long peak_kib = 0;
 };
 MeasuredResult run_program_measured(const std::string& program, const std::vector<std::string>& args,
-                                    const std::filesystem::path& folder);
+                                    const std::filesystem::path& folder, std::size_t address_space_mib = 0);
 
 // Two labelled boxes (a wall with a roof on it), then comment lines up to
 // `bytes`: a valid example that must be read to its end.
