@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "forward/primitive_check.hpp"
 #include "forward/variants.hpp"
 #include "graph/atomic_file.hpp"
+#include "graph/number_format.hpp"
 #include "graph/out_of_memory.hpp"
 #include "graph/parser.hpp"
 #include "graph/suggest.hpp"
@@ -114,10 +116,19 @@ int run(int argc, char** argv) {
       size[i] = CommandLine::number(args, "--scope", static_cast<std::size_t>(i));
       if (size[i] < 0) usage("--scope sizes must be >= 0, got " + args.value("--scope", static_cast<std::size_t>(i)),
                              "for example --scope 12 8 9 (metres along x, y, z)");
+      // Beyond it the outputs could not hold the coordinates (forward/scope.hpp).
+      if (size[i] > kMaxDerivedCoordinate)
+        usage("--scope sizes must be at most " + format_number(kMaxDerivedCoordinate) + ", got " +
+                  args.value("--scope", static_cast<std::size_t>(i)),
+              "for example --scope 12 8 9 (metres along x, y, z)");
     }
     options.derive.size = size;
   }
   const double spacing = args.has("--spacing") ? CommandLine::number(args, "--spacing") : 5.0;
+  if (std::abs(spacing) > kMaxDerivedCoordinate)
+    usage("--spacing must be between -" + format_number(kMaxDerivedCoordinate) + " and " +
+              format_number(kMaxDerivedCoordinate) + ", got " + args.value("--spacing"),
+          "the gap between buildings in metres, for example --spacing 5");
 
   const fs::path output = args.has("--output") ? fs::path(args.value("--output")) : fs::path("variants/");
   std::optional<Format> folder_format;
