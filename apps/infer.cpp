@@ -127,7 +127,7 @@ int run(int argc, char** argv) {
   const auto started = std::chrono::steady_clock::now();
   const std::vector<fs::path> files = example_files(args.positional);
   // Three files are written: the grammar, the meshes and their materials.
-  const fs::path prims_mtl = fs::path(prims).replace_extension(".mtl");
+  const fs::path prims_mtl = mtl_path_for(prims);
   for (const fs::path& out : {output, prims, prims_mtl}) {
     check_output_file("infer", out, files, "an example");
     if (args.has("--primitives")) {
@@ -212,10 +212,14 @@ int run(int argc, char** argv) {
                              (example_count == 1 ? "" : "s") + " (tolerance " + std::to_string(result.tolerance) +
                              " m).\n# Regenerate buildings with: generate " + output.filename().string() +
                              " -n 10 -o out/\n";
-  write_obj(meshes, result.primitives, prims);
+  // The meshes, their materials and the grammar are replaced together, or
+  // (a full disk at the grammar) none of them.
+  OutputFiles outputs;
+  write_obj(meshes, result.primitives, prims, outputs);
   // Two pieces: the grammar's text (124 MB at a million parts) is not copied.
   const std::string_view text[] = {header, grammar_text};
-  write_file_atomically(output, text);
+  outputs.stage(output, text);
+  outputs.commit();
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!quiet) {

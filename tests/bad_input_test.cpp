@@ -47,6 +47,7 @@ struct BadInput {
   std::vector<std::string> creates = {};  // for the cases that must succeed
   std::string unsaid = {};  // what the message must not say (a size of a file it should not read)
   std::size_t address_space_mib = 0;  // when set, the run's memory is capped (setrlimit), to run out of it
+  std::size_t max_file_bytes = 0;     // when set, files the run writes are capped there (a full disk)
 };
 
 // AddressSanitizer reserves terabytes of address space: a capped run
@@ -114,6 +115,14 @@ void four_million_instances(const fs::path& d) {
  "scenes": [{"nodes": [0]}], "scene": 0})");
   binary_file(d / "instances.bin", box_bytes());
   fs::resize_file(d / "instances.bin", 48000048);
+}
+
+// Files a failed run must leave as they were: the outputs of an earlier run.
+void earlier_outputs(const fs::path& d, const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    fs::create_directories((d / name).parent_path());
+    write_text(d / name, "an earlier run's " + name + ": must survive a failed run\n");
+  }
 }
 
 // ex/model.gltf, whose buffer is ../secret.bin.
@@ -672,6 +681,31 @@ const std::vector<BadInput> kCases = {
    "generate: error: ", "the output prims.obj is a primitives file itself",
    {"grammar/with_primitives_file.grm"}, [](const fs::path& d) { fs::copy_file(kCorpus / "obj/two_parts.obj", d / "prims.obj"); }},
 
+  // A run's outputs are replaced together or not at all, and none of them
+  // may be an input: not the grammar, not through the .mtl an .obj brings.
+  {"generate_obj_fails_after_its_mtl", "generate", {"ok.grm", "-o", "out.obj"}, kIo,
+   "out.obj: error: ", "cannot write", kValidGrammar,
+   [](const fs::path& d) { earlier_outputs(d, {"out.obj", "out.mtl"}); }, nullptr, 0, {}, {}, 0, 1000},
+  {"generate_mtl_is_the_grammar", "generate", {"style.mtl", "-o", "style.obj"}, kUsage,
+   "generate: error: ", "the output style.mtl is the grammar file itself",
+   {}, [](const fs::path& d) { fs::copy_file(kCorpus / "grammar/ok.grm", d / "style.mtl"); }},
+  {"generate_folder_mtl_is_the_grammar", "generate", {"out/variant_001.mtl", "-n", "3", "-o", "out/"}, kUsage,
+   "generate: error: ", "the output out/variant_001.mtl is the grammar file itself",
+   {}, [](const fs::path& d) {
+     fs::create_directory(d / "out");
+     fs::copy_file(kCorpus / "grammar/ok.grm", d / "out/variant_001.mtl"); }},
+  {"generate_folder_fails_at_the_second_variant", "generate", {"ok.grm", "-n", "3", "-o", "out/"}, kIo,
+   "out/variant_001.obj: error: ", "it is an existing folder", kValidGrammar,
+   [](const fs::path& d) {
+     earlier_outputs(d, {"out/variant_000.obj", "out/variant_000.mtl", "out/variant_002.obj", "out/variant_002.mtl"});
+     fs::create_directory(d / "out/variant_001.obj"); }},
+  // Variant 0 has one tile (443 bytes), variant 1 seven (2946 bytes).
+  {"generate_folder_fails_part_way", "generate", {"rows.grm", "-n", "3", "-o", "out/"}, kIo,
+   "out/variant_001.obj: error: ", "cannot write", {},
+   [](const fs::path& d) {
+     write_text(d / "rows.grm", "p --> repeatN(x, randint(1, 12)){ I(rect) }\n");
+     earlier_outputs(d, {"out/variant_000.obj", "out/variant_000.mtl", "out/variant_001.obj", "out/variant_001.mtl"}); },
+   nullptr, 0, {}, {}, 0, 2000},
   {"generate_output_folder_holds_the_primitives", "generate",
    {"ok.grm", "--primitives", "out/variant_000.obj", "-o", "out/"}, kUsage,
    "generate: error: ", "the output out/variant_000.obj is a primitives file itself", kValidGrammar,
@@ -707,6 +741,15 @@ const std::vector<BadInput> kCases = {
    "infer: error: ", "two outputs of this run are the same file: style.obj and style.obj", kValidObj},
   {"infer_grammar_is_the_primitives_materials", "infer", {"two_parts.obj", "-o", "style.mtl", "--primitives-out", "style.obj"},
    kUsage, "infer: error: ", "two outputs of this run are the same file: style.mtl and style.mtl", kValidObj},
+  // The meshes are 1620 bytes, the grammar 4267.
+  {"infer_grammar_fails_after_the_meshes", "infer", {"examples", "-o", "style.grm"}, kIo,
+   "style.grm: error: ", "cannot write", {},
+   [](const fs::path& d) {
+     fs::create_directory(d / "examples");
+     for (const auto& e : fs::directory_iterator(VERN_SOURCE_DIR "/data/examples/better_roofs"))
+       if (e.path().extension() == ".obj") fs::copy_file(e.path(), d / "examples" / e.path().filename());
+     earlier_outputs(d, {"style.grm", "style.prims.obj", "style.prims.mtl"}); },
+   nullptr, 0, {}, {}, 0, 3000},
   {"infer_primitives_out_not_obj", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out", "style.glb"}, kUsage,
    "infer: error: ", "--primitives-out must name an .obj file", kValidObj},
   {"infer_output_is_a_folder", "infer", {"two_parts.obj", "-o", "style.grm"}, kIo,
@@ -763,8 +806,9 @@ TEST_P(BadInputCorpus, Runs) {
 
   if (c.address_space_mib != 0 && kAddressSanitizer) GTEST_SKIP() << "a capped address space and ASan do not mix";
   test::CommandResult r;
-  if (c.max_memory_mib != 0 || c.address_space_mib != 0) {
-    const test::MeasuredResult m = test::run_program_measured(c.tool, c.args, dir.path(), c.address_space_mib);
+  if (c.max_memory_mib != 0 || c.address_space_mib != 0 || c.max_file_bytes != 0) {
+    const test::MeasuredResult m =
+        test::run_program_measured(c.tool, c.args, dir.path(), {c.address_space_mib, c.max_file_bytes});
     r = m.result;
     RecordProperty("peak_kib", std::to_string(m.peak_kib));
     // Far below what holding the input (or its geometry) whole would take.

@@ -1,6 +1,7 @@
 #include "support/bad_input_helpers.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -46,7 +47,7 @@ FolderSnapshot snapshot(const fs::path& folder) {
 }
 
 MeasuredResult run_program_measured(const std::string& program, const std::vector<std::string>& args,
-                                    const fs::path& folder, std::size_t address_space_mib) {
+                                    const fs::path& folder, ChildLimits limits) {
   TempFolder capture;
   const std::string out = (capture / "out").string(), err = (capture / "err").string();
   const std::string binary = std::string(VERN_BIN_DIR) + "/" + program;
@@ -67,9 +68,14 @@ MeasuredResult run_program_measured(const std::string& program, const std::vecto
     dup2(o, 1);
     dup2(e, 2);
     dup2(in, 0);
-    if (address_space_mib != 0) {
-      const rlimit cap{address_space_mib << 20, address_space_mib << 20};
+    if (limits.address_space_mib != 0) {
+      const rlimit cap{limits.address_space_mib << 20, limits.address_space_mib << 20};
       if (setrlimit(RLIMIT_AS, &cap) != 0) _exit(127);
+    }
+    if (limits.file_bytes != 0) {
+      const rlimit cap{limits.file_bytes, limits.file_bytes};
+      if (setrlimit(RLIMIT_FSIZE, &cap) != 0) _exit(127);
+      signal(SIGXFSZ, SIG_IGN);  // inherited: the write fails instead of killing the program
     }
     alarm(kHangSeconds);  // kept across exec: a hang fails the test, not the suite
     execv(binary.c_str(), argv.data());

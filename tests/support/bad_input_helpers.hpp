@@ -19,16 +19,23 @@ namespace vern::test {
 using FolderSnapshot = std::map<std::string, std::string>;
 FolderSnapshot snapshot(const std::filesystem::path& folder);
 
+// Limits a program is run under, to make it fail where it would not:
+// address_space_mib caps its memory (RLIMIT_AS: it runs out), file_bytes
+// the files it writes (RLIMIT_FSIZE with SIGXFSZ ignored: a write past it
+// fails with EFBIG, as on a full disk). 0: no limit.
+struct ChildLimits {
+  std::size_t address_space_mib = 0;
+  std::size_t file_bytes = 0;
+};
+
 // run_program, without a shell, reporting the peak resident memory of the
-// program (getrusage of the waited child, in KiB). With address_space_mib,
-// the program's address space is capped there (RLIMIT_AS), so that it runs
-// out of memory.
+// program (getrusage of the waited child, in KiB), under `limits`.
 struct MeasuredResult {
   CommandResult result;
   long peak_kib = 0;
 };
 MeasuredResult run_program_measured(const std::string& program, const std::vector<std::string>& args,
-                                    const std::filesystem::path& folder, std::size_t address_space_mib = 0);
+                                    const std::filesystem::path& folder, ChildLimits limits = {});
 
 // Two labelled boxes (a wall with a roof on it), then comment lines up to
 // `bytes`: a valid example that must be read to its end.
