@@ -19,6 +19,22 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The umask, read once before any thread could create files while it is
+// changed (umask() can only be read by setting it).
+const mode_t g_umask = [] {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  return mask;
+}();
+
+// The mode an output gets: that of the file it replaces, else what any
+// new file gets under the umask. (mkstemp creates 0600.)
+mode_t output_mode(const fs::path& destination) {
+  struct stat st {};
+  if (::stat(destination.c_str(), &st) == 0 && S_ISREG(st.st_mode)) return st.st_mode & 07777;
+  return 0666 & ~g_umask;
+}
+
 [[noreturn]] void io_error(const fs::path& path, const std::string& what, int err) {
   fail(ErrorKind::Io, path.string(), {}, what + ": " + std::strerror(err), "check that the folder exists and is writable");
 }
@@ -100,8 +116,7 @@ void OutputFiles::stage(const fs::path& path, std::span<const std::string_view> 
       written += static_cast<std::size_t>(n);
     }
   }
-  // mkstemp creates 0600; outputs are ordinary files.
-  ::fchmod(fd, 0644);
+  ::fchmod(fd, output_mode(path));
   if (::close(fd) != 0) io_error(path, "cannot write", errno);
 }
 

@@ -5,9 +5,11 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstring>
 #include <mutex>
+#include <string_view>
 
 namespace vern {
 
@@ -75,8 +77,41 @@ void on_signal(int sig) {
   const std::size_t count = g_folder_count.load();
   for (std::size_t i = 0; i < count && i < kMaxFolders; ++i)
     if (g_folders[i].ready.load()) remove_own_temporaries(g_folders[i].path, g_own_tag);
+  // Ends the process as the signal would have: the raised signal waits
+  // (it is blocked in its own handler) and ends it when this returns.
   std::signal(sig, SIG_DFL);
   std::raise(sig);
+}
+
+constexpr int kEndingSignals[] = {SIGHUP,    SIGINT,  SIGQUIT,   SIGTERM, SIGPIPE, SIGALRM, SIGUSR1,
+                                  SIGUSR2,   SIGXCPU, SIGXFSZ,   SIGVTALRM, SIGPROF, SIGABRT};
+
+// The process id in a temporary's name ".NAME.vern-<pid>-XXXXXX" (and the
+// backup ".NAME.vern-<pid>-XXXXXX.old" a commit keeps), or 0.
+pid_t owner_of(const std::string& name) {
+  if (!name.starts_with('.')) return 0;
+  const std::size_t tag = name.rfind(".vern-");
+  if (tag == std::string::npos) return 0;
+  std::size_t at = tag + 6;
+  long long pid = 0;
+  const std::size_t digits = at;
+  while (at < name.size() && name[at] >= '0' && name[at] <= '9' && at - digits < 10) pid = pid * 10 + (name[at++] - '0');
+  if (at == digits || at >= name.size() || name[at] != '-') return 0;
+  const std::string_view rest = std::string_view(name).substr(at + 1);
+  if (rest.size() != 6 && !(rest.size() == 10 && rest.ends_with(".old"))) return 0;
+  return static_cast<pid_t>(pid);
+}
+
+// Removes the temporaries in `folder` whose process no longer runs.
+void sweep_dead(const std::string& folder) {
+  std::error_code ec;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    const pid_t pid = owner_of(name);
+    if (pid <= 0 || pid == ::getpid()) continue;
+    // ESRCH: no such process. EPERM: running, under another user.
+    if (::kill(pid, 0) != 0 && errno == ESRCH) ::unlink(it->path().c_str());
+  }
 }
 
 }  // namespace
@@ -96,6 +131,7 @@ void watch_folder(const fs::path& folder) {
   for (std::size_t i = 0; i < count; ++i)
     if (path == g_folders[i].path) return;
   if (count == kMaxFolders) return;
+  sweep_dead(path);
   std::memcpy(g_folders[count].path, path.c_str(), path.size() + 1);
   g_folders[count].ready.store(true);
   g_folder_count.store(count + 1);
@@ -103,8 +139,17 @@ void watch_folder(const fs::path& folder) {
 
 void install_interrupt_cleanup() {
   own_tag();
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  struct sigaction handler {};
+  handler.sa_handler = on_signal;
+  // One handler at a time: a second signal waits for the first to end the process.
+  sigemptyset(&handler.sa_mask);
+  for (const int sig : kEndingSignals) sigaddset(&handler.sa_mask, sig);
+  for (const int sig : kEndingSignals) {
+    struct sigaction current {};
+    if (::sigaction(sig, nullptr, &current) != 0) continue;
+    const bool by_default = !(current.sa_flags & SA_SIGINFO) && current.sa_handler == SIG_DFL;
+    if (by_default) ::sigaction(sig, &handler, nullptr);
+  }
 }
 
 }  // namespace vern

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "support/child_process.hpp"
 #include "support/run_command.hpp"
 
 namespace vern::test {
@@ -18,15 +19,6 @@ namespace vern::test {
 // nothing was created, changed or removed.
 using FolderSnapshot = std::map<std::string, std::string>;
 FolderSnapshot snapshot(const std::filesystem::path& folder);
-
-// Limits a program is run under, to make it fail where it would not:
-// address_space_mib caps its memory (RLIMIT_AS: it runs out), file_bytes
-// the files it writes (RLIMIT_FSIZE with SIGXFSZ ignored: a write past it
-// fails with EFBIG, as on a full disk). 0: no limit.
-struct ChildLimits {
-  std::size_t address_space_mib = 0;
-  std::size_t file_bytes = 0;
-};
 
 // run_program, without a shell, reporting the peak resident memory of the
 // program (getrusage of the waited child, in KiB), under `limits`.
