@@ -247,6 +247,12 @@ const std::vector<BadInput> kCases = {
   {"obj_out_of_memory_names_the_example", "infer", {"city.obj", "--max-parts", "1000000", "-j", "1", "-o", "style.grm"},
    kLimit, "city.obj: error: ", "out of memory",
    {}, [](const fs::path& d) { test::write_many_parts_obj(d / "city.obj", 200000); }, "style.grm", 0, {}, {}, 150},
+  // A part's faces are bounded too: matching its mesh grows with them.
+  {"obj_too_many_faces", "infer", {"two_parts.obj", "--max-faces", "5", "-o", "style.grm"}, kLimit,
+   "two_parts.obj:16:1: error: ", "'wall' (line 2) has more than 5 faces: reading stopped here\n  hint: raise the "
+   "limit with --max-faces (now 5)", kValidObj},
+  {"obj_too_many_faces_in_check", "check", {"ok.grm", "two_parts.obj", "--max-faces", "5"}, kLimit,
+   "two_parts.obj:16:1: error: ", "has more than 5 faces", kGrammarAndObj},
   {"obj_too_many_parts_in_check", "check", {"ok.grm", "two_parts.obj", "--max-parts", "1"}, kLimit,
    "two_parts.obj:", "more than 1 objects with faces", kGrammarAndObj},
 
@@ -322,6 +328,9 @@ const std::vector<BadInput> kCases = {
   {"gltf_instances_past_max_parts", "infer", {"model.gltf", "-o", "style.grm"}, kLimit,
    "model.gltf: error: ", "node 0 'wall' has 4000000 instances, more than 10000 labelled parts",
    {}, four_million_instances, nullptr, 200},
+  {"glb_too_many_faces", "infer", {"parts.glb", "--max-faces", "5", "-o", "style.grm"}, kLimit,
+   "parts.glb: error: ", "node 1 'rect' has more than 5 faces\n  hint: raise the limit with --max-faces (now 5)",
+   {}, [](const fs::path& d) { test::write_generated_glb(d, "parts.glb"); }},
   // Buffer URIs are the file's choice, not the user's: only regular files
   // in the glTF's folder (or below it) are read, none larger than a cap.
   {"gltf_buffer_outside_the_folder", "infer", {"ex/model.gltf", "-o", "style.grm"}, kInput,

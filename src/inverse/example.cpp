@@ -82,6 +82,11 @@ std::string too_many_parts_hint(const ExampleLimits& limits) {
          "), or split the example into smaller buildings";
 }
 
+std::string too_many_faces_hint(const ExampleLimits& limits) {
+  return "raise the limit with --max-faces (now " + std::to_string(limits.max_faces) +
+         "), or simplify the part's mesh (a decimate modifier)";
+}
+
 Example load_obj_example(const fs::path& path, const ExampleLimits& limits, bool read_ahead) {
   Example ex;
   ex.source = path.string();
@@ -89,7 +94,8 @@ Example load_obj_example(const fs::path& path, const ExampleLimits& limits, bool
   // Objects arrive while the file is read: an unnamed one is reported once
   // the whole file has been read, so that errors further on come first.
   std::optional<std::uint32_t> unnamed;
-  read_obj_file(path, {limits.max_parts, too_many_parts_hint(limits)}, [&](const ObjObject& o) {
+  const ObjLimits obj_limits{limits.max_parts, too_many_parts_hint(limits), limits.max_faces, too_many_faces_hint(limits)};
+  read_obj_file(path, obj_limits, [&](const ObjObject& o) {
     if (o.name.empty()) {
       if (!unnamed) unnamed = o.line;
     } else if (!unnamed) {
@@ -311,9 +317,17 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
        "export the file again, or check it with scripts/validate-gltf");
 }
 
-// Appends one glTF mesh, transformed to world space, to `out`.
+// The triangles a primitive of n indices makes (points and lines: none).
+std::size_t triangle_count(int mode, std::size_t n) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) return n / 3;
+  if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) return n > 2 ? n - 2 : 0;
+  return 0;
+}
+
+// Appends one glTF mesh, transformed to world space, to `out`; more than
+// limits.max_faces faces fail before they are made.
 void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, const glm::dmat4& world,
-                 const std::string& source, const std::string& who, Mesh& out) {
+                 const std::string& source, const std::string& who, const ExampleLimits& limits, Mesh& out) {
   const glm::dmat3 linear(world);
   const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
   const bool mirrored = glm::determinant(linear) < 0.0;  // keep faces turned outwards
@@ -411,6 +425,10 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
     };
     const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
     const std::size_t n = indices.size();
+    if (out.face_sizes.size() + triangle_count(mode, n) > limits.max_faces) {
+      fail(ErrorKind::Limit, source, {}, who + " has more than " + std::to_string(limits.max_faces) + " faces",
+           too_many_faces_hint(limits));
+    }
     if (mode == TINYGLTF_MODE_TRIANGLES) {
       for (std::size_t i = 0; i + 2 < n; i += 3) triangle(indices[i], indices[i + 1], indices[i + 2]);
     } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
@@ -531,7 +549,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
              too_many_parts_hint(limits));
       }
       Mesh mesh;
-      append_mesh(model, gmesh, instances ? world * (*instances)[i] : world, ex.source, part, mesh);
+      append_mesh(model, gmesh, instances ? world * (*instances)[i] : world, ex.source, part, limits, mesh);
       if (mesh.positions.empty()) {
         fail(ErrorKind::Input, ex.source, {}, part + " has a mesh without vertex positions",
              "export the file again with geometry for every named part");
