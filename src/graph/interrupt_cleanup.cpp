@@ -123,10 +123,18 @@ std::string temporary_template(const fs::path& destination) {
 
 void watch_folder(const fs::path& folder) {
   own_tag();  // ready before any handler reads it
+  // A folder of a million variants asks a million times: the same folder
+  // as last time costs no system call.
+  static fs::path last;
+  {
+    std::lock_guard lock(g_watch_mutex);
+    if (folder == last) return;
+  }
   std::error_code ec;
   const std::string path = fs::absolute(folder.empty() ? fs::path(".") : folder, ec).lexically_normal().string();
   if (ec || path.size() >= kMaxPath) return;
   std::lock_guard lock(g_watch_mutex);
+  last = folder;
   const std::size_t count = g_folder_count.load();
   for (std::size_t i = 0; i < count; ++i)
     if (path == g_folders[i].path) return;

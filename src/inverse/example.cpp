@@ -16,12 +16,12 @@
 #include <tiny_gltf.h>
 
 #include "forward/obj_reader.hpp"
-#include "inverse/gltf_files.hpp"
 #include "graph/checked_size.hpp"
-#include "graph/input_file.hpp"
 #include "graph/error.hpp"
+#include "graph/input_file.hpp"
 #include "graph/number_format.hpp"
 #include "graph/out_of_memory.hpp"
+#include "inverse/gltf_files.hpp"
 
 namespace vern {
 
