@@ -6,10 +6,12 @@
 #include <string>
 
 #include "graph/atomic_file.hpp"
+#include "graph/out_of_memory.hpp"
 #include "graph/parser.hpp"
 #include "inverse/check.hpp"
 #include "inverse/example.hpp"
 #include "support/command_line.hpp"
+#include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
 
 namespace fs = std::filesystem;
@@ -30,7 +32,7 @@ CommandLine make_command_line() {
   cl.add({"--scope", "", 3, "X Y Z", "plot size to derive on (default: each example's own extent)"});
   cl.add({"--brief", "-b", 0, "", "one line per example, without the choices"});
   cl.add({"--max-steps", "", 1, "N", "give up after N matching steps per example (default 10000000); a repeat of more tiles is refused"});
-  cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
+  add_example_options(cl);
   cl.add_standard_options(/*quiet=*/false);
   cl.set_epilog(
       "examples:\n"
@@ -76,9 +78,7 @@ int run(int argc, char** argv) {
   if (args.has("--max-steps"))
     options.max_steps = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-steps", 1, 1LL << 50));
   const bool brief = args.has("--brief");
-  ExampleLimits limits;
-  if (args.has("--max-parts"))
-    limits.max_parts = static_cast<std::size_t>(CommandLine::integer(args, "--max-parts", 1, 100'000'000));
+  const ExampleLimits limits = example_limits(args);
   // A hand-written grammar's plot can be larger than what it built (the
   // city's towers stop below its 80 m plot): --scope names the plot.
   std::optional<glm::dvec3> scope;
@@ -111,7 +111,8 @@ int run(int argc, char** argv) {
     CheckOptions own = options;
     if (!(own.tolerance > 0)) own.tolerance = default_tolerance(example);
     try {
-      r = check_example(grammar, boxes, scope.value_or(example_size(example)), own);
+      r = naming_out_of_memory(file.string(), "while checking this example", "check it alone, or lower --max-steps",
+                               [&] { return check_example(grammar, boxes, scope.value_or(example_size(example)), own); });
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::Limit && e.kind() != ErrorKind::Input) throw;
       throw Error(e.kind(), naming_the_example(e.what(), file.string()));

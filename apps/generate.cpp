@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -11,6 +12,8 @@
 #include "forward/primitive_check.hpp"
 #include "forward/variants.hpp"
 #include "graph/atomic_file.hpp"
+#include "graph/number_format.hpp"
+#include "graph/out_of_memory.hpp"
 #include "graph/parser.hpp"
 #include "graph/suggest.hpp"
 #include "support/command_line.hpp"
@@ -68,13 +71,51 @@ std::optional<Format> format_of_extension(const fs::path& p) {
 
 const char* extension(Format f) { return f == Format::Obj ? ".obj" : f == Format::Gltf ? ".gltf" : ".glb"; }
 
+// Stages the scene among the run's outputs, committed together at the end.
 void write_scene(const Scene& scene, const PrimitiveLibrary& library, const fs::path& path, Format format,
-                 GltfOptions gltf) {
-  if (format == Format::Obj)
-    write_obj(scene, library, path);
-  else
-    write_gltf(scene, library, path, gltf);
+                 GltfOptions gltf, OutputFiles& outputs) {
+  naming_out_of_memory(path.string(), "while writing the buildings",
+                       "write fewer buildings into one file, or a folder of one file per building", [&] {
+                         if (format == Format::Obj)
+                           write_obj(scene, library, path, outputs);
+                         else
+                           write_gltf(scene, library, path, gltf, outputs);
+                       });
 }
+
+// The files a run writes for one output file: an OBJ brings its MTL.
+std::vector<fs::path> files_written(const fs::path& output, Format format) {
+  if (format == Format::Obj) return {output, mtl_path_for(output)};
+  return {output};
+}
+
+// Whether `name` is a file this run writes into its folder: variant_NNN
+// with the format's extension (or an OBJ's .mtl), N below count.
+bool is_variant_output(const std::string& name, std::uint32_t count, Format format) {
+  const std::string prefix = "variant_";
+  const std::size_t dot = name.rfind('.');
+  if (!name.starts_with(prefix) || dot == std::string::npos || dot - prefix.size() > 9) return false;
+  const std::string ext = name.substr(dot);
+  if (ext != extension(format) && !(format == Format::Obj && ext == ".mtl")) return false;
+  std::uint32_t index = 0;
+  for (std::size_t i = prefix.size(); i < dot; ++i) {
+    if (name[i] < '0' || name[i] > '9') return false;
+    index = index * 10 + static_cast<std::uint32_t>(name[i] - '0');
+  }
+  return index < count && variant_name(index) + ext == name;
+}
+
+// A folder this run made for its outputs goes again when the run fails
+// (once the outputs' temporary files are gone: declare it before them).
+struct MadeFolder {
+  fs::path path;
+  bool made = false;
+  bool done = false;
+  ~MadeFolder() {
+    std::error_code ec;
+    if (made && !done) fs::remove(path, ec);  // only when empty
+  }
+};
 
 [[noreturn]] void usage(const std::string& message, const std::string& hint = {}) {
   throw Error(ErrorKind::Usage, "generate: error: " + message + (hint.empty() ? "" : "\n  hint: " + hint));
@@ -110,10 +151,19 @@ int run(int argc, char** argv) {
       size[i] = CommandLine::number(args, "--scope", static_cast<std::size_t>(i));
       if (size[i] < 0) usage("--scope sizes must be >= 0, got " + args.value("--scope", static_cast<std::size_t>(i)),
                              "for example --scope 12 8 9 (metres along x, y, z)");
+      // Beyond it the outputs could not hold the coordinates (forward/scope.hpp).
+      if (size[i] > kMaxDerivedCoordinate)
+        usage("--scope sizes must be at most " + format_number(kMaxDerivedCoordinate) + ", got " +
+                  args.value("--scope", static_cast<std::size_t>(i)),
+              "for example --scope 12 8 9 (metres along x, y, z)");
     }
     options.derive.size = size;
   }
   const double spacing = args.has("--spacing") ? CommandLine::number(args, "--spacing") : 5.0;
+  if (std::abs(spacing) > kMaxDerivedCoordinate)
+    usage("--spacing must be between -" + format_number(kMaxDerivedCoordinate) + " and " +
+              format_number(kMaxDerivedCoordinate) + ", got " + args.value("--spacing"),
+          "the gap between buildings in metres, for example --spacing 5");
 
   const fs::path output = args.has("--output") ? fs::path(args.value("--output")) : fs::path("variants/");
   std::optional<Format> folder_format;
@@ -140,7 +190,9 @@ int run(int argc, char** argv) {
     usage("cannot tell what to write to '" + output.string() + "'",
           "name a folder (ending in /) or a file ending in .obj, .gltf or .glb");
   // Say so now, naming the path as given, rather than after deriving.
-  if (one_file) check_output_file("generate", output, {grammar_path}, "the grammar file");
+  if (one_file)
+    for (const fs::path& file : files_written(output, *file_format))
+      check_output_file("generate", file, {grammar_path}, "the grammar file");
   if (!one_file && fs::exists(output, ec) && !fs::is_directory(output, ec))
     throw Error(ErrorKind::Io, output.string() + ": error: cannot write the buildings into this folder: it is a file" +
                                    "\n  hint: name a folder (ending in /) or a file ending in .obj, .gltf or .glb");
@@ -167,18 +219,17 @@ int run(int argc, char** argv) {
   if (!grammar.primitives.empty()) primitive_inputs.push_back(grammar_path.parent_path() / grammar.primitives);
   if (primitives_path) primitive_inputs.push_back(*primitives_path);
   if (one_file) {
-    check_output_file("generate", output, primitive_inputs, "a primitives file");
-  } else {
-    const std::string ext = extension(folder_format.value_or(Format::Obj));
-    for (const fs::path& input : primitive_inputs) {
-      // Only variant_NNN files are written into the folder.
-      const std::string name = input.filename().string();
-      const fs::path folder = input.parent_path().empty() ? fs::path(".") : input.parent_path();
-      if (!name.starts_with("variant_") || !name.ends_with(ext) || !same_file(folder, output)) continue;
-      for (std::uint32_t i = 0; i < options.count; ++i)
-        if (name == variant_name(i) + ext)
-          usage("the output " + (output / name).string() + " is a primitives file itself",
-                "choose another output folder; inputs are never overwritten");
+    for (const fs::path& file : files_written(output, *file_format))
+      check_output_file("generate", file, primitive_inputs, "a primitives file");
+  } else if (fs::is_directory(output, ec)) {
+    // Of what the folder holds, only this run's variant files are written:
+    // none may be an input, or a folder.
+    const Format format = folder_format.value_or(Format::Obj);
+    for (const fs::directory_entry& entry : fs::directory_iterator(output, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (!is_variant_output(name, options.count, format)) continue;
+      check_output_file("generate", output / name, {grammar_path}, "the grammar file");
+      check_output_file("generate", output / name, primitive_inputs, "a primitives file");
     }
   }
   const PrimitiveLibrary library = primitives_for(grammar, grammar_path, primitives_path);
@@ -200,7 +251,10 @@ int run(int argc, char** argv) {
       if (done % 10 == 0 || done == total) std::fprintf(stderr, "\rderiving %u/%u buildings", done, total);
     };
   }
-  std::vector<Derivation> derivations = derive_variants(grammar, options);
+  std::vector<Derivation> derivations = naming_out_of_memory(
+      grammar_path.string(), "deriving " + std::to_string(options.count) + " building" + (options.count == 1 ? "" : "s"),
+      "derive fewer buildings at once (-n), lower --max-terminals, or use fewer threads (-j)",
+      [&] { return derive_variants(grammar, options); });
   if (show_progress) std::fprintf(stderr, "\n");
 
   std::size_t terminals = 0;
@@ -213,22 +267,28 @@ int run(int argc, char** argv) {
   if (!quiet)
     for (const auto& w : warnings) std::cerr << w << "\n";
 
+  // Every file is written before any replaces what was there: a run that
+  // fails half way through a folder leaves the earlier run's variants.
   std::string where;
+  MadeFolder made{output};
+  OutputFiles outputs;
   if (one_file) {
-    write_scene(lay_out(std::move(derivations), spacing), library, output, *file_format, gltf);
+    write_scene(lay_out(std::move(derivations), spacing), library, output, *file_format, gltf, outputs);
     where = output.string();
   } else {
     const Format format = folder_format.value_or(Format::Obj);
-    fs::create_directories(output, ec);
+    made.made = fs::create_directories(output, ec);
     if (ec)
       throw Error(ErrorKind::Io, output.string() + ": error: cannot create the folder: " + ec.message() +
                                      "\n  hint: check that its parent folder exists and is writable, or choose another path");
     for (std::uint32_t i = 0; i < derivations.size(); ++i)
       write_scene(single(std::move(derivations[i]), i), library, output / (variant_name(i) + extension(format)), format,
-                  gltf);
+                  gltf, outputs);
     where = (output / ("variant_000" + std::string(extension(format)))).string();
     if (options.count > 1) where += " ... " + variant_name(options.count - 1) + extension(format);
   }
+  outputs.commit();
+  made.done = true;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!quiet)
     std::fprintf(stderr, "generate: %u building%s, %zu terminals -> %s (%.2f s)\n", options.count,

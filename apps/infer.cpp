@@ -11,11 +11,13 @@
 #include "graph/alongside.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/description_length.hpp"
+#include "graph/out_of_memory.hpp"
 #include "graph/parallel_for.hpp"
 #include "graph/reserved_words.hpp"
 #include "graph/writer.hpp"
 #include "inverse/infer.hpp"
 #include "support/command_line.hpp"
+#include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
 #include "support/output_paths.hpp"
 
@@ -51,7 +53,7 @@ CommandLine make_command_line() {
           "joined (default): parts built alike but for some numbers or an axis become one rule\n"
           "called with each part's values; apart: each written out in full"});
   cl.add({"--seed", "-s", 1, "S", "seed of the test derivations run on the result (default 1)"});
-  cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
+  add_example_options(cl);
   cl.add_standard_options();
   cl.set_epilog(
       "examples:\n"
@@ -118,16 +120,14 @@ int run(int argc, char** argv) {
       usage("--start '" + options.start + "' cannot be a rule label",
             "a label is a letter or '_' followed by letters, digits and '_', and not an operation word such as split");
   }
-  ExampleLimits limits;
-  if (args.has("--max-parts"))
-    limits.max_parts = static_cast<std::size_t>(CommandLine::integer(args, "--max-parts", 1, 100'000'000));
+  const ExampleLimits limits = example_limits(args);
   const std::uint64_t seed =
       args.has("--seed") ? static_cast<std::uint64_t>(CommandLine::integer(args, "--seed", 0, 1LL << 53)) : 1;
 
   const auto started = std::chrono::steady_clock::now();
   const std::vector<fs::path> files = example_files(args.positional);
   // Three files are written: the grammar, the meshes and their materials.
-  const fs::path prims_mtl = fs::path(prims).replace_extension(".mtl");
+  const fs::path prims_mtl = mtl_path_for(prims);
   for (const fs::path& out : {output, prims, prims_mtl}) {
     check_output_file("infer", out, files, "an example");
     if (args.has("--primitives")) {
@@ -153,7 +153,13 @@ int run(int argc, char** argv) {
   PrimitiveLibrary library = PrimitiveLibrary::builtin();
   if (args.has("--primitives")) library.load(args.value("--primitives"));
   options.primitives = &library;
-  Inference result = infer(examples, options);
+  // Out of memory, the examples are named: the one, or the first and last.
+  const std::string named = files.size() == 1 ? "this example"
+                                              : std::to_string(files.size()) + " examples (" + files.front().string() +
+                                                    " ... " + files.back().string() + ")";
+  Inference result = naming_out_of_memory(files.size() == 1 ? files.front().string() : "infer",
+                                          "inferring a grammar from " + named,
+                                          "infer from fewer or smaller examples at once", [&] { return infer(examples, options); });
   if (!quiet)
     for (const std::string& w : result.warnings) std::fprintf(stderr, "%s\n", w.c_str());
   if (result.unturned_parts > 0 && !quiet)
@@ -206,10 +212,14 @@ int run(int argc, char** argv) {
                              (example_count == 1 ? "" : "s") + " (tolerance " + std::to_string(result.tolerance) +
                              " m).\n# Regenerate buildings with: generate " + output.filename().string() +
                              " -n 10 -o out/\n";
-  write_obj(meshes, result.primitives, prims);
+  // The meshes, their materials and the grammar are replaced together, or
+  // (a full disk at the grammar) none of them.
+  OutputFiles outputs;
+  write_obj(meshes, result.primitives, prims, outputs);
   // Two pieces: the grammar's text (124 MB at a million parts) is not copied.
   const std::string_view text[] = {header, grammar_text};
-  write_file_atomically(output, text);
+  outputs.stage(output, text);
+  outputs.commit();
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!quiet) {

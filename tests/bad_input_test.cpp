@@ -10,6 +10,8 @@
 // binary and large inputs are made there by the case's setup instead.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -43,7 +45,24 @@ struct BadInput {
   const char* precious = nullptr;  // a file pre-created where the output would go
   std::size_t max_memory_mib = 0;  // when set, the run's peak resident memory is bounded
   std::vector<std::string> creates = {};  // for the cases that must succeed
+  std::string unsaid = {};  // what the message must not say (a size of a file it should not read)
+  std::size_t address_space_mib = 0;  // when set, the run's memory is capped (setrlimit), to run out of it
+  std::size_t max_file_bytes = 0;     // when set, files the run writes are capped there (a full disk)
 };
+
+// AddressSanitizer reserves terabytes of address space: a capped run
+// cannot start under it.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
 
 // gtest prints a failing case by its name, not as bytes.
 void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
@@ -64,6 +83,56 @@ std::string u32(std::uint32_t v) {
   for (int i = 0; i < 4; ++i) s[static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xFF);
   return s;
 }
+
+// two_parts.gltf with its buffer in the file `uri` of `byte_length` bytes.
+std::string gltf_naming(const std::string& uri, std::size_t byte_length) {
+  std::string text = test::read_file(kCorpus / "gltf/two_parts.gltf");
+  const std::size_t start = text.find("data:");
+  text.replace(start, text.find('"', start) - start, uri);
+  const std::string length = "\"byteLength\": 48\n  }\n ]";
+  text.replace(text.rfind(length), length.size(), "\"byteLength\": " + std::to_string(byte_length) + "\n  }\n ]");
+  return text;
+}
+
+// The 48 bytes two_parts.gltf's buffer holds: four corners of a unit box.
+std::string box_bytes() {
+  const float corners[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1};
+  return std::string(reinterpret_cast<const char*>(corners), sizeof corners);
+}
+
+// A wall drawn 4 million times (EXT_mesh_gpu_instancing), every copy at
+// the origin: its buffer is 48 MB of zeros after the wall's corners, a
+// sparse file.
+void four_million_instances(const fs::path& d) {
+  const std::string count = "4000000", length = "48000000";
+  write_text(d / "model.gltf", R"({"asset": {"version": "2.0"}, "extensionsUsed": ["EXT_mesh_gpu_instancing"],
+ "buffers": [{"uri": "instances.bin", "byteLength": 48000048}],
+ "bufferViews": [{"buffer": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": )" + length + R"(}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+               {"bufferView": 1, "componentType": 5126, "count": )" + count + R"(, "type": "VEC3"}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+ "nodes": [{"name": "wall", "mesh": 0, "extensions": {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": 1}}}}],
+ "scenes": [{"nodes": [0]}], "scene": 0})");
+  binary_file(d / "instances.bin", box_bytes());
+  fs::resize_file(d / "instances.bin", 48000048);
+}
+
+// Files a failed run must leave as they were: the outputs of an earlier run.
+void earlier_outputs(const fs::path& d, const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    fs::create_directories((d / name).parent_path());
+    write_text(d / name, "an earlier run's " + name + ": must survive a failed run\n");
+  }
+}
+
+// ex/model.gltf, whose buffer is ../secret.bin.
+void secret_beside_the_folder(const fs::path& d) {
+  fs::create_directory(d / "ex");
+  write_text(d / "ex/model.gltf", gltf_naming("../secret.bin", 48));
+  binary_file(d / "secret.bin", box_bytes());
+}
+
+void fifo(const fs::path& path) { ASSERT_EQ(mkfifo(path.c_str(), 0644), 0) << path; }
 
 // The file that is not there, the folder given for a file, and the valid
 // references the CLI cases start from.
@@ -167,9 +236,23 @@ const std::vector<BadInput> kCases = {
    "", "", {}, [](const fs::path& d) { test::write_commented_obj(d / "huge.obj", std::size_t{200} << 20); },
    nullptr, 100, {"style.grm", "style.prims.obj"}},
   // 64 MB of parts: reading stops at the first part past the limit.
+  {"obj_example_is_a_fifo", "infer", {"pipe.obj", "-o", "style.grm"}, kIo,
+   "pipe.obj: error: ", "is a FIFO (named pipe), not a regular file", {}, [](const fs::path& d) { fifo(d / "pipe.obj"); }},
+  {"obj_example_is_a_device", "check", {"ok.grm", "zero.obj"}, kIo,
+   "zero.obj: error: ", "is a character device, not a regular file", kValidGrammar,
+   [](const fs::path& d) { fs::create_symlink("/dev/zero", d / "zero.obj"); }},
   {"obj_too_many_parts", "infer", {"city.obj", "-o", "style.grm"}, kLimit,
    "city.obj:150010:1: error: ", "more than 10000 objects with faces",
    {}, [](const fs::path& d) { test::write_many_parts_obj(d / "city.obj", 200000); }, "style.grm", 100},
+  {"obj_out_of_memory_names_the_example", "infer", {"city.obj", "--max-parts", "1000000", "-j", "1", "-o", "style.grm"},
+   kLimit, "city.obj: error: ", "out of memory",
+   {}, [](const fs::path& d) { test::write_many_parts_obj(d / "city.obj", 200000); }, "style.grm", 0, {}, {}, 150},
+  // A part's faces are bounded too: matching its mesh grows with them.
+  {"obj_too_many_faces", "infer", {"two_parts.obj", "--max-faces", "5", "-o", "style.grm"}, kLimit,
+   "two_parts.obj:16:1: error: ", "'wall' (line 2) has more than 5 faces: reading stopped here\n  hint: raise the "
+   "limit with --max-faces (now 5)", kValidObj},
+  {"obj_too_many_faces_in_check", "check", {"ok.grm", "two_parts.obj", "--max-faces", "5"}, kLimit,
+   "two_parts.obj:16:1: error: ", "has more than 5 faces", kGrammarAndObj},
   {"obj_too_many_parts_in_check", "check", {"ok.grm", "two_parts.obj", "--max-parts", "1"}, kLimit,
    "two_parts.obj:", "more than 1 objects with faces", kGrammarAndObj},
 
@@ -210,6 +293,18 @@ const std::vector<BadInput> kCases = {
   {"gltf_accessor_out_of_range", "infer", {"accessor_out_of_range.gltf", "-o", "style.grm"}, kInput,
    "accessor_out_of_range.gltf: error: ", "node 0 'wall': its POSITION accessor reads past the end",
    {"gltf/accessor_out_of_range.gltf"}},
+  // Offsets and counts near 2^64: the range check's own arithmetic must not
+  // wrap round into a range that fits (a heap read past the buffer, or
+  // coordinates taken from outside the accessor's view with exit 0).
+  {"gltf_accessor_count_overflows", "infer", {"accessor_count_overflows.gltf", "-o", "style.grm"}, kInput,
+   "accessor_count_overflows.gltf: error: ", "node 0 'wall': its POSITION accessor reads past the end of its buffer",
+   {"gltf/accessor_count_overflows.gltf"}},
+  {"gltf_accessor_offset_wraps", "infer", {"accessor_offset_wraps.gltf", "-o", "style.grm"}, kInput,
+   "accessor_offset_wraps.gltf: error: ", "node 0 'wall': its POSITION accessor reads past the end of its buffer",
+   {"gltf/accessor_offset_wraps.gltf"}},
+  {"gltf_index_count_overflows", "infer", {"index_count_overflows.gltf", "-o", "style.grm"}, kInput,
+   "index_count_overflows.gltf: error: ", "node 0 'wall': its index accessor reads past the end of its buffer",
+   {"gltf/index_count_overflows.gltf"}},
   {"gltf_buffer_view_out_of_range", "infer", {"buffer_view_out_of_range.gltf", "-o", "style.grm"}, kInput,
    "buffer_view_out_of_range.gltf: error: ", "node 0 'wall': its POSITION accessor has no buffer view",
    {"gltf/buffer_view_out_of_range.gltf"}},
@@ -228,6 +323,64 @@ const std::vector<BadInput> kCases = {
    "no_nodes.gltf: error: ", "has no labelled objects", {"gltf/no_nodes.gltf"}},
   {"gltf_overlapping_nodes", "infer", {"overlapping_nodes.gltf", "-o", "style.grm"}, kInput,
    "overlapping_nodes.gltf: error: ", "objects 'wall' and 'roof' overlap", {"gltf/overlapping_nodes.gltf"}},
+  // Each instance is a part: reading stops at --max-parts before the
+  // instances' transforms are made (4 million of 128 bytes: 512 MB).
+  {"gltf_instances_past_max_parts", "infer", {"model.gltf", "-o", "style.grm"}, kLimit,
+   "model.gltf: error: ", "node 0 'wall' has 4000000 instances, more than 10000 labelled parts",
+   {}, four_million_instances, nullptr, 200},
+  {"glb_too_many_faces", "infer", {"parts.glb", "--max-faces", "5", "-o", "style.grm"}, kLimit,
+   "parts.glb: error: ", "node 1 'rect' has more than 5 faces\n  hint: raise the limit with --max-faces (now 5)",
+   {}, [](const fs::path& d) { test::write_generated_glb(d, "parts.glb"); }},
+  // Buffer URIs are the file's choice, not the user's: only regular files
+  // in the glTF's folder (or below it) are read, none larger than a cap.
+  {"gltf_buffer_outside_the_folder", "infer", {"ex/model.gltf", "-o", "style.grm"}, kInput,
+   "ex/model.gltf: error: ", "the URI '../secret.bin' names a file outside the glTF's folder",
+   {}, secret_beside_the_folder},
+  {"gltf_buffer_outside_the_folder_allowed", "infer",
+   {"ex/model.gltf", "--allow-outside-files", "-o", "style.grm"}, kOk, "", "",
+   {}, secret_beside_the_folder, nullptr, 0, {"style.grm", "style.prims.obj"}},
+  {"gltf_buffer_absolute_path", "infer", {"model.gltf", "-o", "style.grm"}, kInput,
+   "model.gltf: error: ", "names a file outside the glTF's folder",
+   {}, [](const fs::path& d) {
+     fs::create_directory(d / "elsewhere");
+     binary_file(d / "elsewhere/secret.bin", box_bytes());
+     write_text(d / "model.gltf", gltf_naming((d / "elsewhere/secret.bin").string(), 48)); }},
+  {"gltf_buffer_symlink_out_of_the_folder", "infer", {"ex/model.gltf", "-o", "style.grm"}, kInput,
+   "ex/model.gltf: error: ", "the URI 'link.bin' names a file outside the glTF's folder",
+   {}, [](const fs::path& d) {
+     fs::create_directory(d / "ex");
+     write_text(d / "ex/model.gltf", gltf_naming("link.bin", 48));
+     binary_file(d / "secret.bin", box_bytes());
+     fs::create_symlink("../secret.bin", d / "ex/link.bin"); }},
+  {"gltf_buffer_in_a_subfolder_works", "infer", {"model.gltf", "-o", "style.grm"}, kOk, "", "",
+   {}, [](const fs::path& d) {
+     fs::create_directory(d / "buffers");
+     write_text(d / "model.gltf", gltf_naming("buffers/box.bin", 48));
+     binary_file(d / "buffers/box.bin", box_bytes()); }, nullptr, 0, {"style.grm", "style.prims.obj"}},
+  {"gltf_buffer_size_is_not_told", "infer", {"model.gltf", "-o", "style.grm"}, kInput,
+   "model.gltf: error: ", "the buffer file 'data.bin' does not hold the byteLength its buffer declares",
+   {}, [](const fs::path& d) {
+     write_text(d / "model.gltf", gltf_naming("data.bin", 48));
+     binary_file(d / "data.bin", std::string(12345, 'x')); }, nullptr, 0, {}, "12345"},
+  // A sparse file: 1 GiB long, nothing on the disk; never read whole.
+  {"gltf_buffer_of_1gib", "infer", {"model.gltf", "-o", "style.grm"}, kLimit,
+   "model.gltf: error: ", "the URI 'data.bin' names a file that is larger than 256 MiB",
+   {}, [](const fs::path& d) {
+     write_text(d / "model.gltf", gltf_naming("data.bin", std::size_t{1} << 30));
+     binary_file(d / "data.bin", "");
+     fs::resize_file(d / "data.bin", std::uintmax_t{1} << 30); },
+   nullptr, 100},
+  {"gltf_file_over_the_limit", "infer", {"big.gltf", "--max-gltf-mib", "1", "-o", "style.grm"}, kLimit,
+   "big.gltf: error: ", "is larger than 1 MiB\n  hint: glTF files and the files they name are read whole: raise the "
+   "limit with --max-gltf-mib (now 1)",
+   {}, [](const fs::path& d) {
+     binary_file(d / "big.gltf", "");
+     fs::resize_file(d / "big.gltf", std::uintmax_t{2} << 20); }},
+  {"gltf_buffer_is_a_fifo", "infer", {"model.gltf", "-o", "style.grm"}, kIo,
+   "model.gltf: error: ", "the URI 'data.bin' names a file that is a FIFO (named pipe), not a regular file",
+   {}, [](const fs::path& d) { write_text(d / "model.gltf", gltf_naming("data.bin", 48)); fifo(d / "data.bin"); }},
+  {"gltf_example_is_a_fifo", "infer", {"pipe.glb", "-o", "style.grm"}, kIo,
+   "pipe.glb: error: ", "is a FIFO (named pipe), not a regular file", {}, [](const fs::path& d) { fifo(d / "pipe.glb"); }},
   {"gltf_too_many_parts", "infer", {"two_parts.gltf", "--max-parts", "1", "-o", "style.grm"}, kLimit,
    "two_parts.gltf: error: ", "more than 1 labelled parts: reading stopped at node 1 'roof'", {"gltf/two_parts.gltf"}},
 
@@ -236,6 +389,12 @@ const std::vector<BadInput> kCases = {
    "missing.grm: error: ", "cannot open the grammar file"},
   {"grammar_a_folder", "generate", {"style.grm", "-o", "out.obj"}, kIo,
    "style.grm: error: ", "is a folder", {}, [](const fs::path& d) { fs::create_directory(d / "style.grm"); }},
+  {"grammar_is_a_fifo", "generate", {"pipe.grm", "-o", "out.obj"}, kIo,
+   "pipe.grm: error: ", "is a FIFO (named pipe), not a regular file", {}, [](const fs::path& d) { fifo(d / "pipe.grm"); }},
+  // Read whole, /dev/zero would never end.
+  {"grammar_is_a_device", "check", {"zero.grm", "two_parts.obj"}, kIo,
+   "zero.grm: error: ", "is a character device, not a regular file", kValidObj,
+   [](const fs::path& d) { fs::create_symlink("/dev/zero", d / "zero.grm"); }},
   {"grammar_binary", "generate", {"binary.grm", "-o", "out.obj"}, kInput,
    "binary.grm:1:1: error: ", "unexpected character byte 0x7F",
    {}, [](const fs::path& d) { binary_file(d / "binary.grm", std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10)); }, "out.obj"},
@@ -418,6 +577,24 @@ const std::vector<BadInput> kCases = {
    "nan_size.grm:2:21: error: ", "a split size is NaN, not a finite number", {"grammar/nan_size.grm"}},
   {"derive_inf_offset", "generate", {"inf_offset.grm", "-o", "out.obj"}, kInput,
    "inf_offset.grm:1:15: error: ", "a T offset is inf, not a finite number", {"grammar/inf_offset.grm"}},
+  // Numbers each finite whose results are not (sums, products, moves) or
+  // do not fit the outputs (32-bit floats end at 3.4e38): said where.
+  {"derive_translate_twice_1e308", "generate", {"translate_twice_1e308.grm", "-o", "out.obj"}, kInput,
+   "translate_twice_1e308.grm:1:7: error: ", "T moves the scope beyond 1e+38 m from the origin",
+   {"grammar/translate_twice_1e308.grm"}},
+  {"derive_scale_1e39_instanced", "generate", {"scale_1e39.grm", "--instancing", "-o", "out.glb"}, kInput,
+   "scale_1e39.grm:1:7: error: ", "S makes the scope reach beyond 1e+38 m from the origin", {"grammar/scale_1e39.grm"}},
+  {"derive_split_sizes_overflow", "generate", {"split_sizes_overflow.grm", "-o", "out.obj"}, kInput,
+   "split_sizes_overflow.grm:1:7: error: ", "the sizes of this split add up to more than 1.8e+308",
+   {"grammar/split_sizes_overflow.grm"}},
+  {"derive_split_shares_overflow", "generate", {"split_shares_overflow.grm", "-o", "out.glb"}, kInput,
+   "split_shares_overflow.grm:1:7: error: ", "the sizes of this split add up to more than 1.8e+308",
+   {"grammar/split_shares_overflow.grm"}},
+  {"derive_priorities_overflow", "generate", {"priorities_overflow.grm", "-o", "out.obj"}, kInput,
+   "priorities_overflow.grm:1:1: error: ", "the priorities of the rules of 'p' add up to more than 1.8e+308",
+   {"grammar/priorities_overflow.grm"}},
+  {"derive_scope_1e308_instanced", "generate", {"scope_1e308.grm", "--instancing", "-o", "out.glb"}, kInput,
+   "scope_1e308.grm:1:8: error: ", "the @scope reaches beyond 1e+38 m from the origin", {"grammar/scope_1e308.grm"}},
   {"derive_negative_size", "generate", {"negative_size.grm", "-o", "out.obj"}, kInput,
    "negative_size.grm:1:17: error: ", "a split size is negative (-1)", {"grammar/negative_size.grm"}},
   {"derive_negative_scale", "generate", {"negative_scale.grm", "-o", "out.obj"}, kInput,
@@ -443,6 +620,12 @@ const std::vector<BadInput> kCases = {
    "no_rule_applies.grm:2:1: error: ", "no rule of 'q' applies", {"grammar/no_rule_applies.grm"}},
   {"derive_primitives_file_missing", "generate", {"with_primitives_file.grm", "-o", "out.obj"}, kIo,
    "prims.obj: error: ", "no such file or folder", {"grammar/with_primitives_file.grm"}},
+  {"derive_primitives_file_is_a_fifo", "generate", {"with_primitives_file.grm", "-o", "out.obj"}, kIo,
+   "prims.obj: error: ", "is a FIFO (named pipe), not a regular file", {"grammar/with_primitives_file.grm"},
+   [](const fs::path& d) { fifo(d / "prims.obj"); }},
+  {"generate_primitives_is_a_fifo", "generate", {"ok.grm", "--primitives", "pipe.obj", "-o", "out.obj"}, kIo,
+   "pipe.obj: error: ", "is a FIFO (named pipe), not a regular file", kValidGrammar,
+   [](const fs::path& d) { fifo(d / "pipe.obj"); }},
   // Limits: each names the flag that raises it.
   {"limit_repeatN_1e12", "generate", {"repeatN_1e12.grm", "-o", "out.obj"}, kLimit,
    "repeatN_1e12.grm:1:18: error: ", "repeatN asks for 1e+12 tiles", {"grammar/repeatN_1e12.grm"}, nullptr, "out.obj"},
@@ -461,6 +644,11 @@ const std::vector<BadInput> kCases = {
   {"limit_terminals_default_bounds_memory", "generate", {"terminal_explosion.grm", "-o", "out.obj"}, kLimit,
    "terminal_explosion.grm:1:61: error: ", "more than 1000000 terminals", {"grammar/terminal_explosion.grm"}, nullptr,
    nullptr, 600},
+  // Out of memory (the address space capped): the message names the input.
+  {"limit_memory_deriving_names_the_grammar", "generate",
+   {"terminal_explosion.grm", "--max-terminals", "100000000000", "-j", "1", "-o", "out.obj"}, kLimit,
+   "terminal_explosion.grm: error: ", "out of memory deriving 1 building", {"grammar/terminal_explosion.grm"},
+   nullptr, "out.obj", 0, {}, {}, 300},
   {"limit_operations", "generate", {"ok.grm", "--max-operations", "2", "-o", "out.obj"}, kLimit,
    "ok.grm:1:", "more than 2 operations in one derivation", kValidGrammar},
   {"limit_repeat_subnormal_tile", "generate", {"repeat_subnormal_tile.grm", "-o", "out.obj"}, kLimit,
@@ -498,6 +686,13 @@ const std::vector<BadInput> kCases = {
    "generate: error: ", "--max-depth must be between 1 and 1000000, got 0", kValidGrammar},
   {"generate_value_to_a_flag", "generate", {"ok.grm", "--strict=yes"}, kUsage,
    "generate: error: ", "--strict takes 0 values", kValidGrammar},
+  // An empty path names no file: said as such, before any work.
+  {"generate_output_empty", "generate", {"ok.grm", "-o", ""}, kUsage,
+   "generate: error: ", "--output is given an empty value", kValidGrammar},
+  {"generate_primitives_empty", "generate", {"ok.grm", "--primitives", "", "-o", "out.obj"}, kUsage,
+   "generate: error: ", "--primitives is given an empty value", kValidGrammar},
+  {"generate_grammar_empty", "generate", {"", "-o", "out.obj"}, kUsage,
+   "generate: error: ", "an empty argument names no file"},
   {"generate_no_grammar", "generate", {}, kUsage, "generate: error: ", "no grammar file given"},
   {"generate_unknown_start", "generate", {"ok.grm", "--start", "pp", "-o", "out.obj"}, kUsage,
    "generate: error: ", "--start names 'pp'", kValidGrammar},
@@ -518,6 +713,31 @@ const std::vector<BadInput> kCases = {
    "generate: error: ", "the output prims.obj is a primitives file itself",
    {"grammar/with_primitives_file.grm"}, [](const fs::path& d) { fs::copy_file(kCorpus / "obj/two_parts.obj", d / "prims.obj"); }},
 
+  // A run's outputs are replaced together or not at all, and none of them
+  // may be an input: not the grammar, not through the .mtl an .obj brings.
+  {"generate_obj_fails_after_its_mtl", "generate", {"ok.grm", "-o", "out.obj"}, kIo,
+   "out.obj: error: ", "cannot write", kValidGrammar,
+   [](const fs::path& d) { earlier_outputs(d, {"out.obj", "out.mtl"}); }, nullptr, 0, {}, {}, 0, 1000},
+  {"generate_mtl_is_the_grammar", "generate", {"style.mtl", "-o", "style.obj"}, kUsage,
+   "generate: error: ", "the output style.mtl is the grammar file itself",
+   {}, [](const fs::path& d) { fs::copy_file(kCorpus / "grammar/ok.grm", d / "style.mtl"); }},
+  {"generate_folder_mtl_is_the_grammar", "generate", {"out/variant_001.mtl", "-n", "3", "-o", "out/"}, kUsage,
+   "generate: error: ", "the output out/variant_001.mtl is the grammar file itself",
+   {}, [](const fs::path& d) {
+     fs::create_directory(d / "out");
+     fs::copy_file(kCorpus / "grammar/ok.grm", d / "out/variant_001.mtl"); }},
+  {"generate_folder_fails_at_the_second_variant", "generate", {"ok.grm", "-n", "3", "-o", "out/"}, kIo,
+   "out/variant_001.obj: error: ", "it is an existing folder", kValidGrammar,
+   [](const fs::path& d) {
+     earlier_outputs(d, {"out/variant_000.obj", "out/variant_000.mtl", "out/variant_002.obj", "out/variant_002.mtl"});
+     fs::create_directory(d / "out/variant_001.obj"); }},
+  // Variant 0 has one tile (443 bytes), variant 1 seven (2946 bytes).
+  {"generate_folder_fails_part_way", "generate", {"rows.grm", "-n", "3", "-o", "out/"}, kIo,
+   "out/variant_001.obj: error: ", "cannot write", {},
+   [](const fs::path& d) {
+     write_text(d / "rows.grm", "p --> repeatN(x, randint(1, 12)){ I(rect) }\n");
+     earlier_outputs(d, {"out/variant_000.obj", "out/variant_000.mtl", "out/variant_001.obj", "out/variant_001.mtl"}); },
+   nullptr, 0, {}, {}, 0, 2000},
   {"generate_output_folder_holds_the_primitives", "generate",
    {"ok.grm", "--primitives", "out/variant_000.obj", "-o", "out/"}, kUsage,
    "generate: error: ", "the output out/variant_000.obj is a primitives file itself", kValidGrammar,
@@ -536,6 +756,12 @@ const std::vector<BadInput> kCases = {
   {"infer_max_parts_zero", "infer", {"two_parts.obj", "-o", "style.grm", "--max-parts", "0"}, kUsage,
    "infer: error: ", "--max-parts must be between 1 and", kValidObj},
   {"infer_no_output", "infer", {"two_parts.obj"}, kUsage, "infer: error: ", "no output grammar given", kValidObj},
+  {"infer_output_empty", "infer", {"two_parts.obj", "-o", ""}, kUsage,
+   "infer: error: ", "--output is given an empty value", kValidObj},
+  {"infer_primitives_out_empty", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out=", }, kUsage,
+   "infer: error: ", "--primitives-out is given an empty value", kValidObj},
+  {"infer_example_empty", "infer", {"two_parts.obj", "", "-o", "style.grm"}, kUsage,
+   "infer: error: ", "an empty argument names no file", kValidObj},
   {"infer_no_examples", "infer", {"-o", "style.grm"}, kUsage, "infer: error: ", "no examples given"},
   {"infer_start_not_a_label", "infer", {"two_parts.obj", "-o", "style.grm", "--start", "1st"}, kUsage,
    "infer: error: ", "--start '1st' cannot be a rule label", kValidObj},
@@ -547,6 +773,15 @@ const std::vector<BadInput> kCases = {
    "infer: error: ", "two outputs of this run are the same file: style.obj and style.obj", kValidObj},
   {"infer_grammar_is_the_primitives_materials", "infer", {"two_parts.obj", "-o", "style.mtl", "--primitives-out", "style.obj"},
    kUsage, "infer: error: ", "two outputs of this run are the same file: style.mtl and style.mtl", kValidObj},
+  // The meshes are 1620 bytes, the grammar 4267.
+  {"infer_grammar_fails_after_the_meshes", "infer", {"examples", "-o", "style.grm"}, kIo,
+   "style.grm: error: ", "cannot write", {},
+   [](const fs::path& d) {
+     fs::create_directory(d / "examples");
+     for (const auto& e : fs::directory_iterator(VERN_SOURCE_DIR "/data/examples/better_roofs"))
+       if (e.path().extension() == ".obj") fs::copy_file(e.path(), d / "examples" / e.path().filename());
+     earlier_outputs(d, {"style.grm", "style.prims.obj", "style.prims.mtl"}); },
+   nullptr, 0, {}, {}, 0, 3000},
   {"infer_primitives_out_not_obj", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out", "style.glb"}, kUsage,
    "infer: error: ", "--primitives-out must name an .obj file", kValidObj},
   {"infer_output_is_a_folder", "infer", {"two_parts.obj", "-o", "style.grm"}, kIo,
@@ -567,10 +802,16 @@ const std::vector<BadInput> kCases = {
    "check: error: ", "--tolerance must be > 0, got 0", kGrammarAndObj},
   {"check_negative_scope", "check", {"ok.grm", "two_parts.obj", "--scope", "1", "-2", "3"}, kUsage,
    "check: error: ", "--scope sizes must be >= 0, got -2", kGrammarAndObj},
+  {"generate_scope_too_large", "generate", {"ok.grm", "--scope", "1e300", "1", "1", "-o", "out.glb"}, kUsage,
+   "generate: error: ", "--scope sizes must be at most 1e+38, got 1e300", kValidGrammar},
+  {"generate_spacing_too_large", "generate", {"ok.grm", "-n", "3", "--spacing", "1e308", "-o", "out.glb"}, kUsage,
+   "generate: error: ", "--spacing must be between -1e+38 and 1e+38, got 1e308", kValidGrammar},
   {"generate_negative_scope", "generate", {"ok.grm", "--scope", "1", "-2", "3"}, kUsage,
    "generate: error: ", "--scope sizes must be >= 0, got -2", kValidGrammar},
   {"check_too_many_steps", "check", {"ok.grm", "two_parts.obj", "--max-steps", "1"}, kLimit,
    "two_parts.obj: error: ", "more than 1 matching steps", kGrammarAndObj},
+  {"check_grammar_empty", "check", {"", "two_parts.obj"}, kUsage,
+   "check: error: ", "an empty argument names no file", kValidObj},
   {"check_grammar_only", "check", {"ok.grm"}, kUsage, "check: error: ", "give a grammar and at least one example",
    kValidGrammar},
   {"check_missing_grammar", "check", {"missing.grm", "two_parts.obj"}, kIo,
@@ -595,13 +836,17 @@ TEST_P(BadInputCorpus, Runs) {
   if (c.precious) write_text(dir / c.precious, "precious: must survive a failed run\n");
   const FolderSnapshot before = test::snapshot(dir.path());
 
+  if (c.address_space_mib != 0 && kAddressSanitizer) GTEST_SKIP() << "a capped address space and ASan do not mix";
   test::CommandResult r;
-  if (c.max_memory_mib != 0) {
-    const test::MeasuredResult m = test::run_program_measured(c.tool, c.args, dir.path());
+  if (c.max_memory_mib != 0 || c.address_space_mib != 0 || c.max_file_bytes != 0) {
+    const test::MeasuredResult m =
+        test::run_program_measured(c.tool, c.args, dir.path(), {c.address_space_mib, c.max_file_bytes});
     r = m.result;
     RecordProperty("peak_kib", std::to_string(m.peak_kib));
     // Far below what holding the input (or its geometry) whole would take.
-    EXPECT_LT(m.peak_kib, static_cast<long>(c.max_memory_mib) * 1024) << "peak memory in KiB";
+    if (c.max_memory_mib != 0) {
+      EXPECT_LT(m.peak_kib, static_cast<long>(c.max_memory_mib) * 1024) << "peak memory in KiB";
+    }
   } else {
     r = run_program(c.tool, c.args, dir.path());
   }
@@ -616,6 +861,9 @@ TEST_P(BadInputCorpus, Runs) {
   }
   EXPECT_NE(r.err.find(c.where), std::string::npos) << "where: " << c.where << "\n" << r.err;
   EXPECT_NE(r.err.find(c.what), std::string::npos) << "what: " << c.what << "\n" << r.err;
+  if (!c.unsaid.empty()) {
+    EXPECT_EQ(r.err.find(c.unsaid), std::string::npos) << "says " << c.unsaid << ":\n" << r.err;
+  }
   EXPECT_NE(r.err.find("\n  hint: "), std::string::npos) << "no hint:\n" << r.err;
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
   // Nothing created, changed or removed: not the output, not a temporary.

@@ -280,20 +280,26 @@ TEST(ObjReader, ReadAheadAgreesOnLargeTexts) {
   for (const std::string& bad : {text + "f 1 2 999999999\n", text.substr(0, middle) + "v 1 x 2\n" + text}) {
     EXPECT_NE(error_of(bad).find("test.obj:"), std::string::npos);
   }
-  std::string limited, ahead;
-  try {
-    std::istringstream again(text);
-    read_obj(again, "test.obj", {30000, "fewer"});
-  } catch (const Error& e) {
-    limited = e.what();
+  ObjLimits few_objects, few_faces;
+  few_objects.max_objects = 30000;
+  few_faces.max_faces = 5;
+  for (const ObjLimits& limits : {few_objects, few_faces}) {
+    std::string limited, ahead;
+    try {
+      std::istringstream again(text);
+      read_obj(again, "test.obj", limits);
+    } catch (const Error& e) {
+      limited = e.what();
+    }
+    try {
+      parse_ahead(text, limits);
+    } catch (const Error& e) {
+      ahead = e.what();
+    }
+    EXPECT_NE(limited.find(limits.max_faces ? "has more than 5 faces" : "more than 30000 objects"), std::string::npos)
+        << limited;
+    EXPECT_EQ(limited, ahead);
   }
-  try {
-    parse_ahead(text, {30000, "fewer"});
-  } catch (const Error& e) {
-    ahead = e.what();
-  }
-  EXPECT_NE(limited.find("more than 30000 objects"), std::string::npos) << limited;
-  EXPECT_EQ(limited, ahead);
 }
 
 }  // namespace

@@ -38,6 +38,10 @@ ParsedCommandLine CommandLine::parse(int argc, const char* const* argv) const {
   for (int i = 1; i < argc; ++i) {
     std::string arg = argv[i];
     if (only_positional || arg.size() < 2 || arg[0] != '-' || (arg[1] >= '0' && arg[1] <= '9')) {
+      // Every positional argument is a file or folder; "" names none (a
+      // shell variable left unset), and would become the current folder.
+      if (arg.empty())
+        usage_error(program_, "an empty argument names no file", "run '" + program_ + " --help' for what to give");
       out.positional.push_back(arg);
       continue;
     }
@@ -69,15 +73,20 @@ ParsedCommandLine CommandLine::parse(int argc, const char* const* argv) const {
                     "write " + spec->name + (spec->value_names.empty() ? "" : " " + spec->value_names) +
                         " with spaces, without '='");
       values.push_back(inline_value);
-      continue;
+    } else {
+      for (int k = 0; k < spec->values; ++k) {
+        if (i + 1 >= argc)
+          usage_error(program_, spec->name + " needs " + std::to_string(spec->values) + " value" +
+                                    (spec->values > 1 ? "s" : "") + " (" + spec->value_names + ")",
+                      "for example: " + spec->name + " " + spec->value_names);
+        values.emplace_back(argv[++i]);
+      }
     }
-    for (int k = 0; k < spec->values; ++k) {
-      if (i + 1 >= argc)
-        usage_error(program_, spec->name + " needs " + std::to_string(spec->values) + " value" +
-                                  (spec->values > 1 ? "s" : "") + " (" + spec->value_names + ")",
-                    "for example: " + spec->name + " " + spec->value_names);
-      values.emplace_back(argv[++i]);
-    }
+    // No option means anything by "": `-o ''` would write ".prims.obj".
+    for (const std::string& v : values)
+      if (v.empty())
+        usage_error(program_, spec->name + " is given an empty value",
+                    "give " + spec->name + " " + spec->value_names + " (an unset shell variable gives '')");
   }
   return out;
 }

@@ -34,8 +34,9 @@ class CommandLine {
   // Free text printed after the options in --help (examples, exit codes).
   void set_epilog(std::string text) { epilog_ = std::move(text); }
 
-  // Throws vern::Error (Usage) for unknown options or missing values, with a
-  // suggestion when a known option is close.
+  // Throws vern::Error (Usage) for unknown options, missing or empty values
+  // and empty positional arguments, with a suggestion when a known option
+  // is close.
   ParsedCommandLine parse(int argc, const char* const* argv) const;
   std::string help() const;
 

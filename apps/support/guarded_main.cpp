@@ -3,7 +3,7 @@
 #include <iostream>
 #include <new>
 
-#include "graph/atomic_file.hpp"
+#include "graph/interrupt_cleanup.hpp"
 #include "graph/error.hpp"
 
 namespace vern {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "forward/evaluate.hpp"
 #include "forward/program.hpp"
@@ -67,6 +68,11 @@ class Deriver {
       fail(ErrorKind::Input, g_.source_name, start.loc, "the start rule '" + start.label + "' takes parameters",
            "the start rule runs with no arguments: name another with @start or --start, or add a rule such as "
            "'plot --> " + start.label + "(...)'");
+    if (!within_reach(out_.start))
+      fail(ErrorKind::Input, g_.source_name, {},
+           "the start scope " + describe_size(out_.start.size) + " reaches beyond " +
+               format_number(kMaxDerivedCoordinate) + " m from the origin",
+           "give a smaller plot (--scope)");
     chain_.push_back({g_.start_rule, 0});
     node(prog_.nodes[start.body], out_.start, 0, child_key(root, 3));
     chain_.pop_back();
@@ -119,6 +125,11 @@ class Deriver {
       if (size[i] < 0)
         fail(ErrorKind::Input, g_.source_name, g_.scope[i].loc(), "@scope size " + format_number(size[i]) + " is negative",
              "sizes are lengths in metres and must be >= 0");
+      if (!within_reach(Scope{glm::dvec3(0.0), glm::dmat3(1.0), size}))
+        fail(ErrorKind::Input, g_.source_name, g_.scope[i].loc(),
+             "the @scope reaches beyond " + format_number(kMaxDerivedCoordinate) + " m from the origin (size " +
+                 format_number(size[i]) + ")",
+             kBeyondReachHint);
     }
     return size;
   }
@@ -213,6 +224,35 @@ class Deriver {
     return v;
   }
 
+  // T, S and R are where a scope can leave kMaxDerivedCoordinate's reach
+  // (scope.hpp); the parts of a scope in reach are in reach.
+  void check_reach(const Scope& s, NodeId id, const char* what) {
+    if (!within_reach(s)) beyond_reach(s, id, what);
+  }
+
+  [[noreturn, gnu::cold, gnu::noinline]] void beyond_reach(const Scope& s, NodeId id, const char* what) {
+    fail_here(ErrorKind::Input, loc(id),
+              std::string(what) + " beyond " + format_number(kMaxDerivedCoordinate) + " m from the origin (origin " +
+                  describe_size(s.origin) + ", size " + describe_size(s.size) + ")",
+              kBeyondReachHint);
+  }
+
+  static std::string describe_size(const glm::dvec3& v) {
+    return "(" + format_number(v.x) + ", " + format_number(v.y) + ", " + format_number(v.z) + ")";
+  }
+
+  static constexpr const char* kBeyondReachHint =
+      "outputs hold coordinates as 32-bit floats, which end at 3.4e38: check the offsets and sizes in the rule "
+      "chain";
+
+  // Sums of finite sizes or priorities can still overflow to inf, which
+  // would silently give every part nothing or pick the last option.
+  [[noreturn, gnu::cold, gnu::noinline]] void sum_overflows(NodeId id, const std::string& what) {
+    fail_here(ErrorKind::Input, loc(id), what + " add up to more than 1.8e+308, the largest number",
+              "shares (~) and priorities count only by their ratios: divide them all by the same number "
+              "(absolute sizes this large fit no plot)");
+  }
+
   [[noreturn, gnu::cold, gnu::noinline]] void negative_size(const CompiledExpr& e, double v, const char* what) {
     fail_here(ErrorKind::Input, e.source->loc(), std::string(what) + " is negative (" + format_number(v) + ")",
               "sizes are lengths (or shares, with ~) and must be >= 0");
@@ -260,7 +300,7 @@ class Deriver {
     node(t, s.slice(a, from, length), slot, key);
   }
 
-  void split(const SplitOp& op, const Scope& s, std::uint64_t key, RandomStream& rng) {
+  void split(const SplitOp& op, NodeId id, const Scope& s, std::uint64_t key, RandomStream& rng) {
     const Axis a = axis(op.axis, rng, "the axis of split");
     const double length = s.extent(a);
     const PartOp* parts = prog_.parts.data() + op.first;
@@ -272,6 +312,7 @@ class Deriver {
         (parts[i].relative ? relative : absolute) += share[i];
       }
     }
+    if (!(absolute + relative < std::numeric_limits<double>::infinity())) sum_overflows(id, "the sizes of this split");
     // Absolute parts take what they ask for; relative parts share the rest.
     // When the absolute parts alone exceed the scope, they shrink in
     // proportion and the relative parts get nothing (GRAMMAR.md, Sizes).
@@ -331,6 +372,7 @@ class Deriver {
       weight[i] = w;
       total += w;
     }
+    if (total == std::numeric_limits<double>::infinity()) priorities_overflow(id);
     if (total <= 0) {
       no_rule_applies(id);
       return;
@@ -347,11 +389,22 @@ class Deriver {
     node(options[pick].child, s, pick, key);
   }
 
+  // How messages name a choose: the rules of the running rule's label when
+  // it is that rule's body, else a choice inside it.
+  std::string who_chooses(NodeId id) const {
+    const RuleId rule = chain_.back().rule;
+    return g_.rules[rule].body == id ? "'" + g_.rules[rule].label + "'" : "the choice";
+  }
+
+  [[noreturn, gnu::cold, gnu::noinline]] void priorities_overflow(NodeId id) {
+    sum_overflows(id, "the priorities of the rules of " + who_chooses(id));
+  }
+
   [[gnu::cold, gnu::noinline]] void no_rule_applies(NodeId id) {
     // The choose is a rule's body when it is the running rule's.
     const RuleId rule = chain_.back().rule;
     const bool is_body = g_.rules[rule].body == id;
-    std::string who = is_body ? "'" + g_.rules[rule].label + "'" : "the choice";
+    std::string who = who_chooses(id);
     if (opt_.strict)
       fail_here(ErrorKind::Input, loc(id), "no rule of " + who + " applies (every condition is false or priority <= 0)",
                 "add a rule without a condition, or run without --strict to derive nothing there");
@@ -397,7 +450,7 @@ class Deriver {
               "check for recursion that never stops; a grammar this deep needs a larger stack (ulimit -s)");
   }
 
-  void translate(const TransformOp& op, const Scope& s, std::uint64_t key, RandomStream& rng) {
+  void translate(const TransformOp& op, NodeId id, const Scope& s, std::uint64_t key, RandomStream& rng) {
     glm::dvec3 d;
     for (int i = 0; i < 3; ++i) {
       const double v = number(op.amount[i], rng, "a T offset");
@@ -405,15 +458,17 @@ class Deriver {
     }
     Scope moved = s;
     moved.origin += s.frame * d;
+    check_reach(moved, id, "T moves the scope");
     node(op.child, moved, 0, key);
   }
 
-  void scale(const TransformOp& op, const Scope& s, std::uint64_t key, RandomStream& rng) {
+  void scale(const TransformOp& op, NodeId id, const Scope& s, std::uint64_t key, RandomStream& rng) {
     Scope resized = s;
     for (int i = 0; i < 3; ++i) {
       const double v = size_value(op.amount[i], rng, "an S size");
       resized.size[i] = op.relative[i] ? v * s.size[i] : v;
     }
+    check_reach(resized, id, "S makes the scope reach");
     node(op.child, resized, 0, key);
   }
 
@@ -464,18 +519,20 @@ void Deriver::node(const Target& t, const Scope& s, std::uint64_t slot, std::uin
   const std::uint64_t key = child_key(parent_key, slot);
   RandomStream rng(key);
   switch (t.kind) {
-    case OpKind::Split: return split(prog_.splits[t.index], s, key, rng);
+    case OpKind::Split: return split(prog_.splits[t.index], t.node, s, key, rng);
     case OpKind::Repeat: return repeat(prog_.repeats[t.index], t.node, s, key, rng);
     case OpKind::RepeatN: return repeat_n(prog_.repeats[t.index], t.node, s, key, rng);
     case OpKind::Choose: return choose(prog_.chooses[t.index], t.node, s, key, rng);
     case OpKind::Call: return call(prog_.calls[t.index], t.node, s, key, rng);
-    case OpKind::Translate: return translate(prog_.transforms[t.index], s, key, rng);
-    case OpKind::Scale: return scale(prog_.transforms[t.index], s, key, rng);
+    case OpKind::Translate: return translate(prog_.transforms[t.index], t.node, s, key, rng);
+    case OpKind::Scale: return scale(prog_.transforms[t.index], t.node, s, key, rng);
     case OpKind::Rotate: {
       const RotateOp& op = prog_.rotates[t.index];
       const Axis a = axis(op.axis, rng, "the axis of R");
       const double angle = number(op.angle, rng, "the angle of R");
-      return node(op.child, rotated(s, a, angle), 0, key);
+      const Scope turned = rotated(s, a, angle);
+      check_reach(turned, t.node, "R turns the scope to reach");
+      return node(op.child, turned, 0, key);
     }
     case OpKind::Comp: {
       const CompOp& op = prog_.comps[t.index];

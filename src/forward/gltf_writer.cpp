@@ -489,6 +489,13 @@ std::string gltf_text(const Scene& scene, const PrimitiveLibrary& library, GltfO
 
 void write_gltf(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& path,
                 GltfOptions options) {
+  OutputFiles outputs;
+  write_gltf(scene, library, path, options, outputs);
+  outputs.commit();
+}
+
+void write_gltf(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& path,
+                GltfOptions options, OutputFiles& outputs) {
   const std::string ext = path.extension().string();
   if (ext == ".glb" || ext == ".GLB") {
     // Head and binary chunk written one after the other: a thousand city
@@ -497,9 +504,9 @@ void write_gltf(const Scene& scene, const PrimitiveLibrary& library, const std::
     const std::string& bin = document.binary();
     const std::string head = glb_head(document.json(nullptr, kGlbJsonOffset), bin);
     const std::string_view pieces[] = {head, bin};
-    write_file_atomically(path, pieces);
+    outputs.stage(path, pieces);
   } else if (ext == ".gltf" || ext == ".GLTF") {
-    write_file_atomically(path, gltf_text(scene, library, options));
+    outputs.stage(path, gltf_text(scene, library, options));
   } else {
     fail(ErrorKind::Usage, path.string(), {}, "a glTF file ends in .glb (binary) or .gltf (text)",
          "name the output file.glb or file.gltf");

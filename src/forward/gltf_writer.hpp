@@ -22,6 +22,7 @@
 
 #include "forward/primitive_library.hpp"
 #include "forward/terminal.hpp"
+#include "graph/atomic_file.hpp"
 
 namespace vern {
 
@@ -35,9 +36,14 @@ std::string glb_bytes(const Scene& scene, const PrimitiveLibrary& library, GltfO
 // The scene as glTF JSON text with the buffer embedded as a base64 data URI.
 std::string gltf_text(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options = {});
 
-// Writes a .glb (binary) or .gltf (text) file, chosen by the extension,
-// atomically. Throws vern::Error: Usage for another extension, Io when the
-// file cannot be written, Limit when a GLB would pass 4 GiB.
+// Stages a .glb (binary) or .gltf (text) file, chosen by the extension,
+// among a run's outputs (graph/atomic_file.hpp). Throws vern::Error: Usage
+// for another extension, Io when the file cannot be written, Limit when a
+// GLB would pass 4 GiB.
+void write_gltf(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& path,
+                GltfOptions options, OutputFiles& outputs);
+
+// The same as a run of its own: written, then replaced.
 void write_gltf(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& path,
                 GltfOptions options = {});
 

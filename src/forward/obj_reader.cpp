@@ -14,6 +14,7 @@
 #include "forward/obj_lines.hpp"
 #include "forward/obj_plain_line.hpp"
 #include "graph/error.hpp"
+#include "graph/input_file.hpp"
 #include "graph/utf8.hpp"
 
 namespace vern {
@@ -174,6 +175,7 @@ class Reader {
     any_object_ = true;
     object_ = {std::move(name), number};
     object_has_faces_ = false;
+    part_faces_ = 0;
   }
 
   // The object of pending faces [begin, end), its vertices re-indexed from
@@ -351,8 +353,12 @@ class Reader {
     // A segment's faces are consecutive, so a new segment shows as a change.
     if (!object_has_faces_) ++objects_with_faces_;
     object_has_faces_ = true;
-    if (last_group_with_faces_ != groups_seen_) ++groups_with_faces_;
+    if (last_group_with_faces_ != groups_seen_) {
+      ++groups_with_faces_;
+      if (!any_object_) part_faces_ = 0;  // groups are the parts
+    }
     last_group_with_faces_ = groups_seen_;
+    if (++part_faces_ > limits_.max_faces && limits_.max_faces != 0) too_many_faces();
     face_corner_.push_back(static_cast<std::uint32_t>(corners_.size() - n));
     face_sizes_.push_back(static_cast<std::uint32_t>(n));
     if (!any_object_) face_group_.push_back(static_cast<std::uint32_t>(groups_.size() - 1));
@@ -363,6 +369,15 @@ class Reader {
            "more than " + std::to_string(limits_.max_objects) + " objects with faces: reading stopped here",
            limits_.too_many_hint.empty() ? "split the file into smaller ones" : limits_.too_many_hint);
     }
+  }
+
+  [[noreturn, gnu::cold, gnu::noinline]] void too_many_faces() const {
+    const Segment& part = any_object_ ? object_ : groups_.back();
+    fail(ErrorKind::Limit, source_, {line_, 1},
+         (part.name.empty() ? std::string("an unnamed object") : "'" + part.name + "'") +
+             (part.line != 0 ? " (line " + std::to_string(part.line) + ")" : "") + " has more than " +
+             std::to_string(limits_.max_faces) + " faces: reading stopped here",
+         limits_.too_many_faces_hint.empty() ? "simplify the mesh" : limits_.too_many_faces_hint);
   }
 
   void add_plain_vertex(const glm::dvec3& v) {
@@ -405,6 +420,7 @@ class Reader {
   bool recognised_ = false;
   bool any_object_ = false;
   bool object_has_faces_ = false;  // the current `o` segment, or the faces before any `o`
+  std::size_t part_faces_ = 0;      // faces of the current object (or group, without `o`)
   std::size_t objects_with_faces_ = 0;
   std::size_t groups_with_faces_ = 0;
   std::size_t groups_seen_ = 0;  // `g` statements so far
@@ -480,6 +496,7 @@ void read_obj_file(const std::filesystem::path& path, const ObjLimits& limits, c
   if (fs::is_directory(path, ec)) {
     fail(ErrorKind::Io, path.string(), {}, "is a folder, not an OBJ file", "name an .obj file");
   }
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     const int err = errno;

@@ -53,6 +53,9 @@ struct ObjLimits {
   std::size_t max_objects = 0;
   // ...and what that error tells the user to do (the caller's flag).
   std::string too_many_hint;
+  // The same for the faces of one object (or group, in a file without `o`).
+  std::size_t max_faces = 0;
+  std::string too_many_faces_hint;
 };
 
 // The objects of an OBJ text in file order, one per `o` (or `g`) statement
@@ -62,7 +65,7 @@ struct ObjLimits {
 // beyond kMaxObjCoordinate, a face with fewer than 3 corners, a name that
 // is not UTF-8, or text that is not OBJ (a NUL byte, an unknown statement
 // before any OBJ statement, a line longer than kMaxObjLine); (Limit) past
-// limits.max_objects.
+// limits.max_objects or limits.max_faces.
 std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits = {});
 
 // The same for a file; throws vern::Error (Io) when it is missing, a folder

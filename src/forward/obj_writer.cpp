@@ -150,16 +150,25 @@ std::string mtl_text(const Scene& scene) {
   return out;
 }
 
-void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path) {
-  std::filesystem::path mtl_path = obj_path;
-  mtl_path.replace_extension(".mtl");
+std::filesystem::path mtl_path_for(const std::filesystem::path& obj_path) {
+  return std::filesystem::path(obj_path).replace_extension(".mtl");
+}
+
+void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path,
+               OutputFiles& outputs) {
+  const std::filesystem::path mtl_path = mtl_path_for(obj_path);
   if (mtl_path == obj_path) {
     fail(ErrorKind::Usage, obj_path.string(), {}, "the OBJ file would overwrite its own MTL file",
          "give the output an .obj extension");
   }
-  const std::string obj = obj_text(scene, library, mtl_path.filename().string());
-  write_file_atomically(mtl_path, mtl_text(scene));
-  write_file_atomically(obj_path, obj);
+  outputs.stage(mtl_path, mtl_text(scene));
+  outputs.stage(obj_path, obj_text(scene, library, mtl_path.filename().string()));
+}
+
+void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path) {
+  OutputFiles outputs;
+  write_obj(scene, library, obj_path, outputs);
+  outputs.commit();
 }
 
 }  // namespace vern

@@ -13,6 +13,7 @@
 
 #include "forward/primitive_library.hpp"
 #include "forward/terminal.hpp"
+#include "graph/atomic_file.hpp"
 
 namespace vern {
 
@@ -23,9 +24,17 @@ std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const 
 // The MTL text defining the materials obj_text uses.
 std::string mtl_text(const Scene& scene);
 
-// Writes obj_path and, beside it, the MTL file of the same stem, each
-// atomically (the MTL first, so the OBJ never names a missing file).
-// Throws vern::Error (Io) when a file cannot be written.
+// The path of the MTL file write_obj writes beside obj_path: the same stem.
+std::filesystem::path mtl_path_for(const std::filesystem::path& obj_path);
+
+// Stages obj_path and, beside it, mtl_path_for(obj_path) among a run's
+// outputs (graph/atomic_file.hpp): both are replaced together or neither.
+// Throws vern::Error: Io when a file cannot be written, Usage when the
+// path does not end in .obj (its MTL file would be itself).
+void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path,
+               OutputFiles& outputs);
+
+// The same as a run of its own: both files written, then both replaced.
 void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path);
 
 }  // namespace vern

@@ -5,6 +5,17 @@
 
 namespace vern {
 
+bool within_reach(const Scope& s) {
+  // A corner's coordinate k is origin[k] + sum of frame[i][k] * u_i * size[i]
+  // with u_i in [0, 1]: at most this far from 0.
+  for (int k = 0; k < 3; ++k) {
+    double reach = std::abs(s.origin[k]);
+    for (int i = 0; i < 3; ++i) reach += std::abs(s.frame[i][k]) * s.size[i];
+    if (!(reach <= kMaxDerivedCoordinate)) return false;
+  }
+  return true;
+}
+
 Bounds world_bounds(const Scope& s) {
   Bounds b{s.origin, s.origin};
   for (int corner = 1; corner < 8; ++corner) {

@@ -43,6 +43,18 @@ struct Scope {
   friend bool operator==(const Scope&, const Scope&) = default;
 };
 
+// How far from the origin a derived scope may reach on any axis, in
+// metres. Outputs hold coordinates as finite numbers, some as 32-bit floats
+// (glTF instancing), which end at 3.4e38; a box within +-1e38 has sizes up
+// to 2e38. A grammar that moves, scales or turns a scope past it fails
+// there (derive.cpp) rather than writing inf.
+inline constexpr double kMaxDerivedCoordinate = 1e38;
+
+// Whether every corner of s lies within +-kMaxDerivedCoordinate (a NaN
+// does not). Splits, repeats and comp cut a scope into parts inside it, so
+// only the operations that move or grow one need to ask.
+bool within_reach(const Scope& s);
+
 // The world-space axis-aligned bounds of a scope (min and max corners).
 struct Bounds {
   glm::dvec3 min{0.0};

@@ -1,77 +1,108 @@
 #include "graph/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
-#include <string>
 
 #include "graph/error.hpp"
+#include "graph/interrupt_cleanup.hpp"
 
 namespace vern {
 
+namespace fs = std::filesystem;
+
 namespace {
 
-// The temporary file being written right now, for the signal handler. Only
-// async-signal-safe calls touch it there (unlink, _exit).
-constexpr std::size_t kMaxPending = 16;
-std::atomic<const char*> g_pending[kMaxPending];
+// The umask, read once before any thread could create files while it is
+// changed (umask() can only be read by setting it).
+const mode_t g_umask = [] {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  return mask;
+}();
 
-void on_signal(int sig) {
-  for (auto& p : g_pending) {
-    if (const char* path = p.load()) unlink(path);
-  }
-  signal(sig, SIG_DFL);
-  raise(sig);
+// The mode an output gets: that of the file it replaces, else what any
+// new file gets under the umask. (mkstemp creates 0600.)
+mode_t output_mode(const fs::path& destination) {
+  struct stat st {};
+  if (::stat(destination.c_str(), &st) == 0 && S_ISREG(st.st_mode)) return st.st_mode & 07777;
+  return 0666 & ~g_umask;
 }
 
-struct PendingGuard {
-  std::size_t slot = kMaxPending;
-  explicit PendingGuard(const char* path) {
-    for (std::size_t i = 0; i < kMaxPending; ++i) {
-      const char* expected = nullptr;
-      if (g_pending[i].compare_exchange_strong(expected, path)) {
-        slot = i;
-        break;
-      }
-    }
+[[noreturn]] void io_error(const fs::path& path, const std::string& what, int err) {
+  fail(ErrorKind::Io, path.string(), {}, what + ": " + std::strerror(err), "check that the folder exists and is writable");
+}
+
+// Signals that end a run wait while the renames run: a run is then either
+// all renamed or (the handler removing the temporaries) not at all.
+class SignalsHeld {
+ public:
+  SignalsHeld() {
+    sigset_t all;
+    sigfillset(&all);
+    pthread_sigmask(SIG_BLOCK, &all, &saved_);
   }
-  ~PendingGuard() {
-    if (slot < kMaxPending) g_pending[slot].store(nullptr);
-  }
+  ~SignalsHeld() { pthread_sigmask(SIG_SETMASK, &saved_, nullptr); }
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  sigset_t saved_;
 };
 
-[[noreturn]] void io_error(const std::filesystem::path& path, const std::string& what, int err) {
-  fail(ErrorKind::Io, path.string(), {}, what + ": " + std::strerror(err),
-       "check that the folder exists and is writable");
+// A destination's earlier file, kept under another name while the run's
+// files are renamed, so that a failed rename can put it back.
+struct Replaced {
+  const fs::path* destination;
+  std::string backup;  // empty: the destination was new
+};
+
+// Keeps the destination's current file as `backup`: a second name for it
+// (nobody sees the destination missing), or, where the file system has
+// no hard links, the file moved aside. False when there is nothing to keep.
+bool keep_earlier(const fs::path& destination, const std::string& backup) {
+  if (::link(destination.c_str(), backup.c_str()) == 0) return true;
+  if (errno == ENOENT) return false;
+  // A folder is never moved aside: the rename over it fails, as it must.
+  struct stat st {};
+  if (::lstat(destination.c_str(), &st) != 0 || S_ISDIR(st.st_mode)) return false;
+  return std::rename(destination.c_str(), backup.c_str()) == 0;
+}
+
+void put_back(const std::vector<Replaced>& replaced) {
+  for (auto it = replaced.rbegin(); it != replaced.rend(); ++it) {
+    if (it->backup.empty())
+      ::unlink(it->destination->c_str());
+    else
+      std::rename(it->backup.c_str(), it->destination->c_str());
+  }
 }
 
 }  // namespace
 
-void install_interrupt_cleanup() {
-  signal(SIGINT, on_signal);
-  signal(SIGTERM, on_signal);
+OutputFiles::~OutputFiles() {
+  for (const Staged& s : staged_) ::unlink(s.temporary.c_str());
 }
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
-  write_file_atomically(path, std::span<const std::string_view>(&content, 1));
+void OutputFiles::stage(const fs::path& path, std::string_view content) {
+  stage(path, std::span<const std::string_view>(&content, 1));
 }
 
-void write_file_atomically(const std::filesystem::path& path, std::span<const std::string_view> pieces) {
-  namespace fs = std::filesystem;
+void OutputFiles::stage(const fs::path& path, std::span<const std::string_view> pieces) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) {
-    fail(ErrorKind::Io, path.string(), {}, "is a folder, not a file", "name a file to write");
-  }
+  if (fs::is_directory(path, ec)) fail(ErrorKind::Io, path.string(), {}, "is a folder, not a file", "name a file to write");
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::string temp = (folder / ("." + path.filename().string() + ".tmpXXXXXX")).string();
-  const int fd = mkstemp(temp.data());
+  watch_folder(folder);
+  std::string temp = temporary_template(path);
+  const int fd = ::mkstemp(temp.data());
   if (fd < 0) io_error(path, "cannot create a temporary file in " + folder.string(), errno);
-  PendingGuard guard(temp.c_str());
+  staged_.push_back({path, temp});  // removed by the destructor unless committed
   for (const std::string_view content : pieces) {
     std::size_t written = 0;
     while (written < content.size()) {
@@ -80,24 +111,47 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const st
         if (errno == EINTR) continue;
         const int err = errno;
         ::close(fd);
-        ::unlink(temp.c_str());
         io_error(path, "cannot write", err);
       }
       written += static_cast<std::size_t>(n);
     }
   }
-  // mkstemp creates 0600; outputs are ordinary files.
-  fchmod(fd, 0644);
-  if (::close(fd) != 0) {
-    const int err = errno;
-    ::unlink(temp.c_str());
-    io_error(path, "cannot write", err);
+  ::fchmod(fd, output_mode(path));
+  if (::close(fd) != 0) io_error(path, "cannot write", errno);
+}
+
+void OutputFiles::commit() {
+  const SignalsHeld held;
+  std::vector<Replaced> replaced;
+  replaced.reserve(staged_.size());
+  for (const Staged& s : staged_) {
+    std::string backup = s.temporary + ".old";
+    if (!keep_earlier(s.destination, backup)) backup.clear();
+    replaced.push_back({&s.destination, backup});
+    if (std::rename(s.temporary.c_str(), s.destination.c_str()) != 0) {
+      const int err = errno;
+      // The file at hand is as it was, or moved aside: back it goes.
+      std::error_code ec;
+      if (!backup.empty() && !fs::exists(s.destination, ec)) std::rename(backup.c_str(), s.destination.c_str());
+      else if (!backup.empty()) ::unlink(backup.c_str());
+      replaced.pop_back();
+      put_back(replaced);
+      io_error(s.destination, "cannot replace", err);
+    }
   }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(temp.c_str());
-    io_error(path, "cannot replace", err);
-  }
+  for (const Replaced& r : replaced)
+    if (!r.backup.empty()) ::unlink(r.backup.c_str());
+  staged_.clear();
+}
+
+void write_file_atomically(const fs::path& path, std::string_view content) {
+  write_file_atomically(path, std::span<const std::string_view>(&content, 1));
+}
+
+void write_file_atomically(const fs::path& path, std::span<const std::string_view> pieces) {
+  OutputFiles files;
+  files.stage(path, pieces);
+  files.commit();
 }
 
 }  // namespace vern

@@ -1,27 +1,54 @@
-// Output files that are either complete or absent.
+// Output files that are either complete or absent: one file, or all the
+// files of one run together.
 //
 // Everything the toolkit writes goes through here: the bytes go to a
-// temporary file in the destination's folder, which is renamed over the
-// destination only once it is complete. A failure (or Ctrl-C, see
-// install_interrupt_cleanup) leaves whatever was there before untouched.
+// temporary file in the destination's folder (interrupt_cleanup.hpp names
+// and watches it), and every file of a run is written before any is
+// renamed over its destination. A failure while writing (a full disk, a
+// signal) leaves whatever was there before untouched; a rename that fails
+// at the end puts back what the renames before it replaced.
 #pragma once
 
 #include <filesystem>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace vern {
 
-// Writes content to path atomically; throws vern::Error (Io) naming the path
-// and the reason when the folder is missing or not writable.
+// The outputs of one run, staged until commit().
+class OutputFiles {
+ public:
+  OutputFiles() = default;
+  OutputFiles(const OutputFiles&) = delete;
+  OutputFiles& operator=(const OutputFiles&) = delete;
+  // Removes the temporary files of a run that was not committed.
+  ~OutputFiles();
+
+  // Writes the pieces, one after another (a large file need not be joined
+  // in memory first), to a temporary file beside `path`. Throws
+  // vern::Error (Io) naming path when it is a folder, or its folder is
+  // missing or not writable, or the disk is full.
+  void stage(const std::filesystem::path& path, std::span<const std::string_view> pieces);
+  void stage(const std::filesystem::path& path, std::string_view content);
+
+  // Renames every staged file over its destination, in the order staged.
+  // Signals wait until it is done. When a rename fails, the destinations
+  // replaced before it get their earlier files back (those that were new
+  // are removed) and vern::Error (Io) names the one that failed.
+  void commit();
+
+ private:
+  struct Staged {
+    std::filesystem::path destination;
+    std::string temporary;
+  };
+  std::vector<Staged> staged_;
+};
+
+// One file alone: staged and committed. Throws vern::Error (Io) as stage.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
-
-// The same for content in pieces, written one after another: a large file
-// need not be joined in memory first.
 void write_file_atomically(const std::filesystem::path& path, std::span<const std::string_view> pieces);
-
-// Installs SIGINT/SIGTERM handlers that delete temporary files still being
-// written, then exit with the signal's status. Call once from main().
-void install_interrupt_cleanup();
 
 }  // namespace vern

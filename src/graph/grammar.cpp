@@ -48,15 +48,13 @@ void Grammar::rehash(std::size_t slots) {
 
 LabelId Grammar::label_id(std::string_view name) {
   if (auto found = find_label(name)) return *found;
+  const auto id = static_cast<LabelId>(labels_.size());
   labels_.emplace_back(name);
-  return static_cast<LabelId>(labels_.size() - 1);
+  label_ids_.add(name, id);
+  return id;
 }
 
-std::optional<LabelId> Grammar::find_label(std::string_view name) const {
-  for (std::size_t i = 0; i < labels_.size(); ++i)
-    if (labels_[i] == name) return static_cast<LabelId>(i);
-  return std::nullopt;
-}
+std::optional<LabelId> Grammar::find_label(std::string_view name) const { return label_ids_.find(name); }
 
 std::optional<RuleId> Grammar::find_rule(std::string_view label) const {
   for (std::size_t i = 0; i < rules.size(); ++i)

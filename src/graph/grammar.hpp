@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "graph/name_index.hpp"
 #include "graph/node.hpp"
 
 namespace vern {
@@ -69,6 +70,8 @@ class Grammar {
   const std::string& label(LabelId id) const { return labels_[id]; }
   const std::vector<std::string>& labels() const { return labels_; }
 
+  // Both read every rule or constant: for one look-up, not one per name
+  // in a text (the parser keeps its own index, name_index.hpp).
   std::optional<RuleId> find_rule(std::string_view label) const;
   std::optional<std::uint32_t> find_constant(std::string_view name) const;
 
@@ -86,6 +89,7 @@ class Grammar {
 
   std::vector<Node> nodes_;
   std::vector<std::string> labels_;
+  NameIndex<LabelId> label_ids_;  // labels_ by name
   std::vector<InternSlot> interned_;  // size a power of two, at most half full
   std::size_t interned_count_ = 0;
 };

@@ -36,7 +36,9 @@
 #include <numbers>
 #include <sstream>
 
+#include "graph/input_file.hpp"
 #include "graph/lexer.hpp"
+#include "graph/name_index.hpp"
 #include "graph/reserved_words.hpp"
 #include "graph/suggest.hpp"
 
@@ -235,12 +237,14 @@ class Parser {
     const Token& name = next();
     const std::string n(name.text);
     check_free_name(name, "a constant");
-    if (g_.find_constant(n))
+    if (constant_ids_.find(n))
       error(name.loc, "the constant '" + n + "' is defined twice", "a constant has one value: rename or delete one of them");
     next();  // '='
     skip_newlines();
     params_ = nullptr;
     Expr value = expression();
+    // Added once its value is read: a constant uses only those above it.
+    constant_ids_.add(n, static_cast<std::uint32_t>(g_.constants.size()));
     g_.constants.push_back({n, std::move(value), name.loc});
   }
 
@@ -546,7 +550,7 @@ class Parser {
     if (params_)
       for (const auto& p : *params_)
         if (p == n) return true;
-    return g_.find_constant(n).has_value();
+    return constant_ids_.find(n).has_value();
   }
 
   NodeId call(const Token& name, SourceLoc loc) {
@@ -705,7 +709,7 @@ class Parser {
       for (std::size_t i = 0; i < params_->size(); ++i)
         if ((*params_)[i] == n) return Expr::param(static_cast<std::uint32_t>(i), t.loc);
     }
-    if (auto c = g_.find_constant(n)) return Expr::constant(*c, t.loc);
+    if (auto c = constant_ids_.find(n)) return Expr::constant(*c, t.loc);
     if (n == "x") return Expr::axis(Axis::X, t.loc);
     if (n == "y") return Expr::axis(Axis::Y, t.loc);
     if (n == "z") return Expr::axis(Axis::Z, t.loc);
@@ -752,6 +756,7 @@ class Parser {
   std::size_t pos_ = 0;
   Grammar g_;
   std::map<std::string, RuleId> labels_;
+  NameIndex<std::uint32_t> constant_ids_;  // g_.constants by name
   std::vector<std::string> rule_names_;
   std::vector<int> declared_params_;
   std::vector<std::vector<Alternative>> alternatives_;
@@ -783,6 +788,7 @@ Grammar read_grammar_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     fail(ErrorKind::Io, path.string(), {}, "is a folder, not a grammar file", "name a .grm file");
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(ErrorKind::Io, path.string(), {}, "cannot open the grammar file", "check the path");
   std::ostringstream buf;

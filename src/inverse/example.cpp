@@ -16,8 +16,12 @@
 #include <tiny_gltf.h>
 
 #include "forward/obj_reader.hpp"
+#include "graph/checked_size.hpp"
 #include "graph/error.hpp"
+#include "graph/input_file.hpp"
 #include "graph/number_format.hpp"
+#include "graph/out_of_memory.hpp"
+#include "inverse/gltf_files.hpp"
 
 namespace vern {
 
@@ -78,6 +82,11 @@ std::string too_many_parts_hint(const ExampleLimits& limits) {
          "), or split the example into smaller buildings";
 }
 
+std::string too_many_faces_hint(const ExampleLimits& limits) {
+  return "raise the limit with --max-faces (now " + std::to_string(limits.max_faces) +
+         "), or simplify the part's mesh (a decimate modifier)";
+}
+
 Example load_obj_example(const fs::path& path, const ExampleLimits& limits, bool read_ahead) {
   Example ex;
   ex.source = path.string();
@@ -85,7 +94,8 @@ Example load_obj_example(const fs::path& path, const ExampleLimits& limits, bool
   // Objects arrive while the file is read: an unnamed one is reported once
   // the whole file has been read, so that errors further on come first.
   std::optional<std::uint32_t> unnamed;
-  read_obj_file(path, {limits.max_parts, too_many_parts_hint(limits)}, [&](const ObjObject& o) {
+  const ObjLimits obj_limits{limits.max_parts, too_many_parts_hint(limits), limits.max_faces, too_many_faces_hint(limits)};
+  read_obj_file(path, obj_limits, [&](const ObjObject& o) {
     if (o.name.empty()) {
       if (!unnamed) unnamed = o.line;
     } else if (!unnamed) {
@@ -136,13 +146,21 @@ class AccessorReader {
     stride_ = static_cast<std::size_t>(stride);
     component_size_ = static_cast<std::size_t>(component_size);
     count_ = a.count;
-    const std::size_t start = view.byteOffset + a.byteOffset;
+    if (count_ == 0) return;  // nothing is read, whatever the offsets say
+    // Where the last element ends, in the view and in the buffer. Every
+    // number here is the file's to choose: near 2^64 they would wrap round
+    // into a range that fits, so each step is checked.
     const std::size_t element = component_size_ * static_cast<std::size_t>(components_);
-    if (count_ > 0 && (start + stride_ * (count_ - 1) + element > data.size() ||
-                       a.byteOffset + stride_ * (count_ - 1) + element > view.byteLength)) {
+    std::optional<std::size_t> end_in_view = checked_mul(stride_, count_ - 1);
+    if (end_in_view) end_in_view = checked_add(*end_in_view, element);
+    if (end_in_view) end_in_view = checked_add(*end_in_view, a.byteOffset);
+    const std::optional<std::size_t> end_in_buffer =
+        end_in_view ? checked_add(*end_in_view, view.byteOffset) : std::nullopt;
+    if (!end_in_buffer || *end_in_view > view.byteLength || *end_in_buffer > data.size()) {
       broken("reads past the end of its buffer");
     }
-    data_ = data.data() + start;
+    // Neither sum wraps: the start lies below the end.
+    data_ = data.data() + view.byteOffset + a.byteOffset;
   }
 
   std::size_t count() const { return count_; }
@@ -236,9 +254,13 @@ glm::dmat4 local_matrix(const tinygltf::Node& n) {
 // EXT_mesh_gpu_instancing (what `generate --instancing` writes): the node's
 // mesh is drawn once per instance, each placed by its own translation,
 // rotation and scale before the node's own world matrix. Returns each
-// instance's matrix, or nothing when the node is not instanced.
+// instance's matrix, or nothing when the node is not instanced. Each
+// instance is a part: more than the limit leaves (after `parts` already
+// read) fail before their matrices are made (a small file can hold
+// millions, 128 bytes each).
 std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& model, const tinygltf::Node& node,
-                                                         const std::string& source, const std::string& who) {
+                                                         const std::string& source, const std::string& who,
+                                                         const ExampleLimits& limits, std::size_t parts) {
   const auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
   if (ext == node.extensions.end()) return std::nullopt;
   auto broken = [&](const std::string& problem) {
@@ -266,6 +288,12 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
     count = a.reader->count();
   }
   if (!count) broken("extension names none of TRANSLATION, ROTATION and SCALE");
+  if (*count > limits.max_parts - std::min(parts, limits.max_parts)) {
+    fail(ErrorKind::Limit, source, {},
+         who + " has " + std::to_string(*count) + " instances, more than " + std::to_string(limits.max_parts) +
+             " labelled parts" + (parts == 0 ? "" : " with the " + std::to_string(parts) + " before them"),
+         too_many_parts_hint(limits));
+  }
   std::vector<glm::dmat4> matrices;
   matrices.reserve(*count);
   for (std::size_t i = 0; i < *count; ++i) {
@@ -289,9 +317,17 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
        "export the file again, or check it with scripts/validate-gltf");
 }
 
-// Appends one glTF mesh, transformed to world space, to `out`.
+// The triangles a primitive of n indices makes (points and lines: none).
+std::size_t triangle_count(int mode, std::size_t n) {
+  if (mode == TINYGLTF_MODE_TRIANGLES) return n / 3;
+  if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) return n > 2 ? n - 2 : 0;
+  return 0;
+}
+
+// Appends one glTF mesh, transformed to world space, to `out`; more than
+// limits.max_faces faces fail before they are made.
 void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, const glm::dmat4& world,
-                 const std::string& source, const std::string& who, Mesh& out) {
+                 const std::string& source, const std::string& who, const ExampleLimits& limits, Mesh& out) {
   const glm::dmat3 linear(world);
   const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
   const bool mirrored = glm::determinant(linear) < 0.0;  // keep faces turned outwards
@@ -389,6 +425,10 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
     };
     const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
     const std::size_t n = indices.size();
+    if (out.face_sizes.size() + triangle_count(mode, n) > limits.max_faces) {
+      fail(ErrorKind::Limit, source, {}, who + " has more than " + std::to_string(limits.max_faces) + " faces",
+           too_many_faces_hint(limits));
+    }
     if (mode == TINYGLTF_MODE_TRIANGLES) {
       for (std::size_t i = 0; i + 2 < n; i += 3) triangle(indices[i], indices[i + 1], indices[i + 2]);
     } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
@@ -403,17 +443,45 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
   }
 }
 
+// tinygltf's file system: every file it opens is one GltfFiles allows.
+bool gltf_file_exists(const std::string& path, void* files) { return static_cast<GltfFiles*>(files)->may_read(path); }
+std::string gltf_path_as_is(const std::string& path, void*) { return path; }
+bool gltf_read_file(std::vector<unsigned char>* out, std::string*, const std::string& path, void* files) {
+  return static_cast<GltfFiles*>(files)->read(path, *out);
+}
+bool gltf_write_nothing(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+
 Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits& limits) {
   Example ex;
   ex.source = path.string();
   PartAdder adder(ex);
+  std::vector<unsigned char> bytes;
+  if (const auto refused = read_regular_file(path, limits.gltf.max_bytes, bytes)) {
+    fail(refused->kind, ex.source, {}, refused->problem,
+         refused->kind == ErrorKind::Limit ? gltf_size_hint(limits.gltf) : "check the path and the file's permissions");
+  }
+  GltfFiles files(path, limits.gltf);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skip_image, nullptr);
+  loader.SetFsCallbacks({gltf_file_exists, gltf_path_as_is, gltf_read_file, gltf_write_nothing, &files});
   tinygltf::Model model;
   std::string err, warn;
-  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, ex.source)
-                         : loader.LoadASCIIFromFile(&model, &err, &warn, ex.source);
+  // tinygltf takes the length as an unsigned int: the cap keeps it below 4 GiB.
+  const auto length = static_cast<unsigned int>(bytes.size());
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, files.folder())
+                         : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                                      length, files.folder());
+  bytes = {};
   if (!ok) {
+    // A file the glTF names that was refused is the reason, said our way.
+    if (const auto& refused = files.refusal()) fail(refused->kind, ex.source, {}, refused->message, refused->hint);
+    // tinygltf would say how long the file is, which may not be the
+    // user's to know (a file allowed outside the folder): said without.
+    if (err.find("File size mismatch") != std::string::npos) {
+      fail(ErrorKind::Input, ex.source, {},
+           "the buffer file '" + files.last_read() + "' does not hold the byteLength its buffer declares",
+           "export the glTF and its .bin file again, together");
+    }
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
     fail(ErrorKind::Input, ex.source, {}, std::string("is not a valid ") + (binary ? "GLB" : "glTF") + " file: " + err,
          "export the file again, or check it with scripts/validate-gltf");
@@ -470,7 +538,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     // An instanced node is one part per instance. Its name is the mesh's,
     // "label" or "label colour_xxxxxx" (gltf_writer.hpp): the label is the
     // first word.
-    const auto instances = instance_matrices(model, node, ex.source, who);
+    const auto instances = instance_matrices(model, node, ex.source, who, limits, ex.boxes.size());
     const std::size_t parts = instances ? instances->size() : 1;
     const std::string name = instances ? node.name.substr(0, node.name.find(' ')) : node.name;
     for (std::size_t i = 0; i < parts; ++i) {
@@ -481,7 +549,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
              too_many_parts_hint(limits));
       }
       Mesh mesh;
-      append_mesh(model, gmesh, instances ? world * (*instances)[i] : world, ex.source, part, mesh);
+      append_mesh(model, gmesh, instances ? world * (*instances)[i] : world, ex.source, part, limits, mesh);
       if (mesh.positions.empty()) {
         fail(ErrorKind::Input, ex.source, {}, part + " has a mesh without vertex positions",
              "export the file again with geometry for every named part");
@@ -550,13 +618,18 @@ Example load_example(const fs::path& path, const ExampleLimits& limits, unsigned
     fail(ErrorKind::Io, path.string(), {}, "is a folder, not an example file",
          "name an .obj, .glb or .gltf file (the command line accepts folders)");
   }
-  Example ex;
-  switch (format_of(path)) {
-    case Format::Obj: ex = load_obj_example(path, limits, threads != 1); break;
-    case Format::Glb: ex = load_gltf_example(path, true, limits); break;
-    case Format::Gltf: ex = load_gltf_example(path, false, limits); break;
-    case Format::Other: not_an_example(path);
-  }
+  require_regular_file(path);
+  Example ex = naming_out_of_memory(
+      path.string(), "while reading this example",
+      "read fewer or smaller examples at once (one example's parts: --max-parts), or free memory", [&] {
+        switch (format_of(path)) {
+          case Format::Obj: return load_obj_example(path, limits, threads != 1);
+          case Format::Glb: return load_gltf_example(path, true, limits);
+          case Format::Gltf: return load_gltf_example(path, false, limits);
+          case Format::Other: break;
+        }
+        not_an_example(path);
+      });
   update_bounds(ex);
 
   // A part may be flat (a facade panel has no thickness), but a part with

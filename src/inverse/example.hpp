@@ -22,6 +22,7 @@
 #include <glm/glm.hpp>
 
 #include "forward/mesh.hpp"
+#include "inverse/gltf_files.hpp"
 #include "inverse/part_positions.hpp"
 
 namespace vern {
@@ -50,19 +51,30 @@ struct ExampleLimits {
   // checking grow with the parts; an OBJ stops being read at the first
   // part past the limit, so a huge file fails fast and in little memory.
   std::size_t max_parts = 10000;
+  // Faces per labelled part (infer/check --max-faces): matching a part's
+  // mesh is linear in its vertices, but a scanned statue need not be a
+  // part of a grammar of buildings. Reading stops at the first face past it.
+  std::size_t max_faces = 1'000'000;
+  // Which files a glTF may have read, and how large (gltf_files.hpp;
+  // infer/check --allow-outside-files, --max-gltf-mib).
+  GltfFileRules gltf;
 };
 
 // Reads a labelled example: .obj (each object one part), .glb or .gltf
 // (each node with a mesh one part, its world transform applied; the name is
 // required; a node with EXT_mesh_gpu_instancing, as `generate --instancing`
-// writes, is one part per instance, labelled by the name's first word). Throws vern::Error: Io when the file is missing or unreadable,
-// Input when it holds no labelled parts, geometry without a name, a part
-// that is a single point (no extent on any axis, within
-// default_tolerance), a vertex that is not finite or beyond
+// writes, is one part per instance, labelled by the name's first word).
+// Throws vern::Error: Io when the file is missing, unreadable or not a
+// regular file (a FIFO, a device), Input when it holds no labelled parts,
+// geometry without a name, a part that is a single point (no extent on any
+// axis, within default_tolerance), a vertex that is not finite or beyond
 // kMaxObjCoordinate (also after a glTF node's transform), a glTF node
-// reached twice or naming a missing mesh, or is not a valid OBJ or glTF
-// file; Limit for more parts than limits.max_parts; Usage for another
-// extension. A part flat on one axis (a facade panel) is fine.
+// reached twice or naming a missing mesh, a glTF URI that limits.gltf
+// refuses (gltf_files.hpp), or is not a valid OBJ or glTF file; Limit for
+// more parts than limits.max_parts, or a glTF file (or one it names) larger
+// than limits.gltf.max_bytes, or a part of more than limits.max_faces
+// faces; Usage for another extension. A part flat on one axis (a facade
+// panel) is fine.
 // threads: 1 reads on this thread alone; otherwise a second thread reads an
 // OBJ's text ahead (obj_reader.hpp; the same example, and the same error).
 Example load_example(const std::filesystem::path& path, const ExampleLimits& limits = {}, unsigned threads = 1);

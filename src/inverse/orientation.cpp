@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "forward/scope.hpp"
+#include "inverse/point_grid.hpp"
 
 namespace vern {
 
@@ -28,25 +29,6 @@ const std::vector<Orientation>& candidates() {
   return all;
 }
 
-bool before(const glm::dvec3& a, const glm::dvec3& b) {
-  return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
-}
-
-// Is every point of `points` within tolerance of one of `sorted` (sorted
-// by x first)?
-bool covered(const std::vector<glm::dvec3>& points, const std::vector<glm::dvec3>& sorted, double tolerance) {
-  for (const glm::dvec3& p : points) {
-    auto it = std::lower_bound(sorted.begin(), sorted.end(), p.x - tolerance,
-                               [](const glm::dvec3& q, double x) { return q.x < x; });
-    bool found = false;
-    for (; it != sorted.end() && it->x <= p.x + tolerance && !found; ++it) {
-      found = std::abs(it->y - p.y) <= tolerance && std::abs(it->z - p.z) <= tolerance;
-    }
-    if (!found) return false;
-  }
-  return true;
-}
-
 Expr quarter_angle(int quarters) {
   const Expr pi = Expr::number(std::numbers::pi);
   switch (quarters) {
@@ -60,8 +42,7 @@ Expr quarter_angle(int quarters) {
 
 std::optional<Orientation> find_orientation(const Mesh& canonical, const std::vector<glm::dvec3>& placed,
                                             glm::dvec3 box_min, glm::dvec3 box_max, double tolerance) {
-  std::vector<glm::dvec3> target = placed;
-  std::sort(target.begin(), target.end(), before);
+  const PointGrid target(placed, tolerance);
   Scope box;
   box.origin = box_min;
   box.size = box_max - box_min;
@@ -70,10 +51,8 @@ std::optional<Orientation> find_orientation(const Mesh& canonical, const std::ve
     Scope s = box;
     for (const QuarterTurn& t : turns) s = rotated(s, t.axis, t.quarters * (std::numbers::pi / 2));
     for (std::size_t i = 0; i < moved.size(); ++i) moved[i] = s.to_world(canonical.positions[i]);
-    if (!covered(moved, target, tolerance)) continue;
-    std::vector<glm::dvec3> sorted = moved;
-    std::sort(sorted.begin(), sorted.end(), before);
-    if (covered(placed, sorted, tolerance)) return turns;
+    if (!target.covers(moved)) continue;
+    if (PointGrid(moved, tolerance).covers(placed)) return turns;
   }
   return std::nullopt;
 }

@@ -1,10 +1,5 @@
 #include "support/bad_input_helpers.hpp"
 
-#include <fcntl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cstdint>
 #include <fstream>
 #include <stdexcept>
@@ -35,45 +30,23 @@ FolderSnapshot snapshot(const fs::path& folder) {
   FolderSnapshot files;
   for (const auto& e : fs::recursive_directory_iterator(folder)) {
     const std::string name = fs::relative(e.path(), folder).generic_string();
-    files[name] = e.is_directory() ? "/" : fingerprint(e.path());
+    // Links and FIFOs by what they are: reading through them could wait
+    // for a writer or never end (a link to /dev/zero).
+    if (e.is_symlink()) files[name] = "-> " + fs::read_symlink(e.path()).string();
+    else if (e.is_directory()) files[name] = "/";
+    else if (e.is_regular_file()) files[name] = fingerprint(e.path());
+    else files[name] = "special file";
   }
   return files;
 }
 
 MeasuredResult run_program_measured(const std::string& program, const std::vector<std::string>& args,
-                                    const fs::path& folder) {
-  TempFolder capture;
-  const std::string out = (capture / "out").string(), err = (capture / "err").string();
-  const std::string binary = std::string(VERN_BIN_DIR) + "/" + program;
-  std::vector<std::string> words{binary};
-  words.insert(words.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    // The child: only async-signal-safe calls until exec.
-    const int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int in = open("/dev/null", O_RDONLY);
-    if (o < 0 || e < 0 || in < 0 || chdir(folder.c_str()) != 0) _exit(127);
-    dup2(o, 1);
-    dup2(e, 2);
-    dup2(in, 0);
-    execv(binary.c_str(), argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  if (wait4(pid, &status, 0, &usage) != pid) throw std::runtime_error("wait4 failed");
-  MeasuredResult r;
-  r.result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.result.out = read_file(out);
-  r.result.err = read_file(err);
-  r.peak_kib = usage.ru_maxrss;
-  return r;
+                                    const fs::path& folder, ChildLimits limits) {
+  ChildSetup setup;
+  setup.limits = limits;
+  ChildProcess child(program, args, folder, setup);
+  const ChildProcess::Ended ended = child.wait();
+  return {ended.result, ended.peak_kib};
 }
 
 namespace {

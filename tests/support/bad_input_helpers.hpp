@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "support/child_process.hpp"
 #include "support/run_command.hpp"
 
 namespace vern::test {
@@ -20,13 +21,13 @@ using FolderSnapshot = std::map<std::string, std::string>;
 FolderSnapshot snapshot(const std::filesystem::path& folder);
 
 // run_program, without a shell, reporting the peak resident memory of the
-// program (getrusage of the waited child, in KiB).
+// program (getrusage of the waited child, in KiB), under `limits`.
 struct MeasuredResult {
   CommandResult result;
   long peak_kib = 0;
 };
 MeasuredResult run_program_measured(const std::string& program, const std::vector<std::string>& args,
-                                    const std::filesystem::path& folder);
+                                    const std::filesystem::path& folder, ChildLimits limits = {});
 
 // Two labelled boxes (a wall with a roof on it), then comment lines up to
 // `bytes`: a valid example that must be read to its end.

@@ -55,7 +55,9 @@ CommandResult run_program(const std::string& program, const std::vector<std::str
   TempFolder capture;
   std::string cmd;
   if (!folder.empty()) cmd += "cd " + quote(folder.string()) + " && ";
-  cmd += quote(std::string(VERN_BIN_DIR) + "/" + program);
+  // A program that hangs (waiting on a FIFO, say) fails its test instead
+  // of stopping the suite.
+  cmd += "timeout -k 10 " + std::to_string(kHangSeconds) + " " + quote(std::string(VERN_BIN_DIR) + "/" + program);
   for (const auto& a : args) cmd += " " + quote(a);
   cmd += " >" + quote((capture / "out").string()) + " 2>" + quote((capture / "err").string()) + " </dev/null";
   const int status = std::system(cmd.c_str());

@@ -13,8 +13,13 @@ struct CommandResult {
   std::string err;
 };
 
+// How long a program may run in a test before it is stopped as hung (the
+// sanitized build reads a 200 MB example in well under a minute).
+constexpr unsigned kHangSeconds = 600;
+
 // Runs VERN_BIN_DIR/program with the arguments (each shell-quoted), in
-// `folder` (the current folder when empty), capturing both streams.
+// `folder` (the current folder when empty), capturing both streams. A
+// program still running after kHangSeconds is stopped (exit code 124).
 CommandResult run_program(const std::string& program, const std::vector<std::string>& args,
                           const std::filesystem::path& folder = {});
 

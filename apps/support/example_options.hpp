@@ -1,0 +1,16 @@
+// The options of the commands that read examples (infer, check): how many
+// parts an example may have, and which files a glTF may have read.
+#pragma once
+
+#include "inverse/example.hpp"
+#include "support/command_line.hpp"
+
+namespace vern {
+
+// --max-parts, --max-faces, --max-gltf-mib, --allow-outside-files.
+void add_example_options(CommandLine& cl);
+
+// The limits those options give (Usage errors for values out of range).
+ExampleLimits example_limits(const ParsedCommandLine& args);
+
+}  // namespace vern

@@ -1,0 +1,42 @@
+// Files the toolkit reads are regular files.
+//
+// Every file read is named by the user or by a file they were given: a
+// grammar, an example, a primitives file, a buffer a glTF names. A FIFO
+// would make the run wait for a writer that may never come, and a device
+// may never end (/dev/zero is read whole as a grammar until memory runs
+// out). Such paths are refused before they are opened, saying what they are.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "graph/error.hpp"
+
+namespace vern {
+
+// Throws vern::Error (Io) naming `path` when it exists and is not a
+// regular file once links are followed ("is a FIFO (named pipe), not a
+// regular file"). A missing path passes: opening it says so.
+void require_regular_file(const std::filesystem::path& path);
+
+// Why a file was not read: its error kind and what to say after the name.
+struct ReadRefusal {
+  ErrorKind kind;
+  std::string problem;  // "is a FIFO (named pipe), not a regular file", "is larger than 256 MiB"
+};
+
+// Reads the regular file at `path` whole into `out`, or says why not: Io
+// when it is missing, unreadable or not a regular file (checked on the
+// opened file too, which is opened without waiting on a FIFO); Limit when
+// it holds more than max_bytes, which is then not read. The problem never
+// says how large the file is.
+std::optional<ReadRefusal> read_regular_file(const std::filesystem::path& path, std::uint64_t max_bytes,
+                                             std::vector<unsigned char>& out);
+
+// "256 MiB": how messages and hints state a byte limit.
+std::string mebibytes(std::uint64_t bytes);
+
+}  // namespace vern

@@ -1,0 +1,163 @@
+#include "graph/interrupt_cleanup.hpp"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <mutex>
+#include <string_view>
+
+namespace vern {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Only async-signal-safe calls run in the handler: open, getdents64,
+// unlinkat, close, signal, raise; the folders and the name to look for are
+// prepared before any signal can need them.
+constexpr std::size_t kMaxFolders = 64;
+constexpr std::size_t kMaxPath = 4096;
+
+struct WatchedFolder {
+  std::atomic<bool> ready{false};
+  char path[kMaxPath];
+};
+WatchedFolder g_folders[kMaxFolders];
+std::atomic<std::size_t> g_folder_count{0};
+std::mutex g_watch_mutex;  // serialises watch_folder, never taken in the handler
+
+// ".vern-<pid>-": what this process's temporary names hold.
+char g_own_tag[32];
+
+const char* own_tag() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    const std::string tag = ".vern-" + std::to_string(::getpid()) + "-";
+    std::memcpy(g_own_tag, tag.c_str(), tag.size() + 1);
+  });
+  return g_own_tag;
+}
+
+// Whether `name` is one of this process's temporary files: a hidden name
+// holding the tag. (No library call: strstr is not on the list of
+// async-signal-safe functions.)
+bool is_own_temporary(const char* name, const char* tag) {
+  if (name[0] != '.') return false;
+  for (const char* start = name; *start; ++start) {
+    const char* a = start;
+    const char* b = tag;
+    while (*b && *a == *b) ++a, ++b;
+    if (!*b) return true;
+  }
+  return false;
+}
+
+void remove_own_temporaries(const char* folder, const char* tag) {
+  const int dir = ::open(folder, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir < 0) return;
+  alignas(dirent64) char buffer[8192];
+  for (;;) {
+    const ssize_t n = ::getdents64(dir, buffer, sizeof buffer);
+    if (n <= 0) break;
+    for (ssize_t at = 0; at < n;) {
+      const auto* entry = reinterpret_cast<const dirent64*>(buffer + at);
+      if (is_own_temporary(entry->d_name, tag)) ::unlinkat(dir, entry->d_name, 0);
+      at += entry->d_reclen;
+    }
+  }
+  ::close(dir);
+}
+
+void on_signal(int sig) {
+  const std::size_t count = g_folder_count.load();
+  for (std::size_t i = 0; i < count && i < kMaxFolders; ++i)
+    if (g_folders[i].ready.load()) remove_own_temporaries(g_folders[i].path, g_own_tag);
+  // Ends the process as the signal would have: the raised signal waits
+  // (it is blocked in its own handler) and ends it when this returns.
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+constexpr int kEndingSignals[] = {SIGHUP,    SIGINT,  SIGQUIT,   SIGTERM, SIGPIPE, SIGALRM, SIGUSR1,
+                                  SIGUSR2,   SIGXCPU, SIGXFSZ,   SIGVTALRM, SIGPROF, SIGABRT};
+
+// The process id in a temporary's name ".NAME.vern-<pid>-XXXXXX" (and the
+// backup ".NAME.vern-<pid>-XXXXXX.old" a commit keeps), or 0.
+pid_t owner_of(const std::string& name) {
+  if (!name.starts_with('.')) return 0;
+  const std::size_t tag = name.rfind(".vern-");
+  if (tag == std::string::npos) return 0;
+  std::size_t at = tag + 6;
+  long long pid = 0;
+  const std::size_t digits = at;
+  while (at < name.size() && name[at] >= '0' && name[at] <= '9' && at - digits < 10) pid = pid * 10 + (name[at++] - '0');
+  if (at == digits || at >= name.size() || name[at] != '-') return 0;
+  const std::string_view rest = std::string_view(name).substr(at + 1);
+  if (rest.size() != 6 && !(rest.size() == 10 && rest.ends_with(".old"))) return 0;
+  return static_cast<pid_t>(pid);
+}
+
+// Removes the temporaries in `folder` whose process no longer runs.
+void sweep_dead(const std::string& folder) {
+  std::error_code ec;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    const pid_t pid = owner_of(name);
+    if (pid <= 0 || pid == ::getpid()) continue;
+    // ESRCH: no such process. EPERM: running, under another user.
+    if (::kill(pid, 0) != 0 && errno == ESRCH) ::unlink(it->path().c_str());
+  }
+}
+
+}  // namespace
+
+std::string temporary_template(const fs::path& destination) {
+  const fs::path folder = destination.has_parent_path() ? destination.parent_path() : fs::path(".");
+  return (folder / ("." + destination.filename().string() + own_tag() + "XXXXXX")).string();
+}
+
+void watch_folder(const fs::path& folder) {
+  own_tag();  // ready before any handler reads it
+  // A folder of a million variants asks a million times: the same folder
+  // as last time costs no system call.
+  static fs::path last;
+  {
+    std::lock_guard lock(g_watch_mutex);
+    if (folder == last) return;
+  }
+  std::error_code ec;
+  const std::string path = fs::absolute(folder.empty() ? fs::path(".") : folder, ec).lexically_normal().string();
+  if (ec || path.size() >= kMaxPath) return;
+  std::lock_guard lock(g_watch_mutex);
+  last = folder;
+  const std::size_t count = g_folder_count.load();
+  for (std::size_t i = 0; i < count; ++i)
+    if (path == g_folders[i].path) return;
+  if (count == kMaxFolders) return;
+  sweep_dead(path);
+  std::memcpy(g_folders[count].path, path.c_str(), path.size() + 1);
+  g_folders[count].ready.store(true);
+  g_folder_count.store(count + 1);
+}
+
+void install_interrupt_cleanup() {
+  own_tag();
+  struct sigaction handler {};
+  handler.sa_handler = on_signal;
+  // One handler at a time: a second signal waits for the first to end the process.
+  sigemptyset(&handler.sa_mask);
+  for (const int sig : kEndingSignals) sigaddset(&handler.sa_mask, sig);
+  for (const int sig : kEndingSignals) {
+    struct sigaction current {};
+    if (::sigaction(sig, nullptr, &current) != 0) continue;
+    const bool by_default = !(current.sa_flags & SA_SIGINFO) && current.sa_handler == SIG_DFL;
+    if (by_default) ::sigaction(sig, &handler, nullptr);
+  }
+}
+
+}  // namespace vern

@@ -1,0 +1,75 @@
+#include "support/child_process.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <stdexcept>
+
+namespace vern::test {
+
+ChildProcess::ChildProcess(const std::string& program, const std::vector<std::string>& args,
+                           const std::filesystem::path& folder, const ChildSetup& setup) {
+  const std::string out = (capture_ / "out").string(), err = (capture_ / "err").string();
+  const std::string binary = std::string(VERN_BIN_DIR) + "/" + program;
+  std::vector<std::string> words{binary};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+
+  pid_ = fork();
+  if (pid_ < 0) throw std::runtime_error("fork failed");
+  if (pid_ != 0) return;
+  // The child: only async-signal-safe calls until exec.
+  const int o = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int in = open("/dev/null", O_RDONLY);
+  if (o < 0 || e < 0 || in < 0 || chdir(folder.c_str()) != 0) _exit(127);
+  dup2(o, 1);
+  dup2(e, 2);
+  dup2(in, 0);
+  if (setup.limits.address_space_mib != 0) {
+    const rlimit cap{setup.limits.address_space_mib << 20, setup.limits.address_space_mib << 20};
+    if (setrlimit(RLIMIT_AS, &cap) != 0) _exit(127);
+  }
+  if (setup.limits.file_bytes != 0) {
+    const rlimit cap{setup.limits.file_bytes, setup.limits.file_bytes};
+    if (setrlimit(RLIMIT_FSIZE, &cap) != 0) _exit(127);
+    signal(SIGXFSZ, SIG_IGN);  // inherited: the write fails instead of killing the program
+  }
+  // No core files in the run folder from signals that dump one (SIGQUIT).
+  const rlimit no_core{0, 0};
+  setrlimit(RLIMIT_CORE, &no_core);
+  if (setup.umask >= 0) umask(static_cast<mode_t>(setup.umask));
+  for (const int sig : setup.ignored_signals) signal(sig, SIG_IGN);
+  alarm(kHangSeconds);  // kept across exec: a hang fails the test, not the suite
+  execv(binary.c_str(), argv.data());
+  _exit(127);
+}
+
+ChildProcess::~ChildProcess() {
+  if (pid_ <= 0) return;
+  kill(pid_, SIGKILL);
+  int status = 0;
+  waitpid(pid_, &status, 0);
+}
+
+ChildProcess::Ended ChildProcess::wait() {
+  int status = 0;
+  rusage usage{};
+  if (wait4(pid_, &status, 0, &usage) != pid_) throw std::runtime_error("wait4 failed");
+  pid_ = -1;
+  Ended r;
+  r.result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  r.result.out = read_file(capture_ / "out");
+  r.result.err = read_file(capture_ / "err");
+  r.peak_kib = usage.ru_maxrss;
+  return r;
+}
+
+}  // namespace vern::test
