@@ -35,38 +35,40 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   std::size_t parts = 0;
   for (const auto& e : examples) parts += e.boxes.size();
 
-  // Whole buildings turned a quarter are turned back to the layout the
-  // others share, and written turned (turned_examples.hpp).
-  const std::vector<int> quarters = parts <= kJoinedPartsLimit ? common_orientation(examples, out.tolerance)
-                                                              : std::vector<int>(examples.size(), 0);
-  std::vector<Example> turned;
-  if (std::ranges::any_of(quarters, [](int q) { return q != 0; }))
-    for (std::size_t i = 0; i < examples.size(); ++i) turned.push_back(turned_example(examples[i], quarters[i]));
-  const std::vector<Example>& laid_out = turned.empty() ? examples : turned;
-
   // Parts whose mesh is their label's turned become R(...){ I(label) }.
   // Orienting and splitting only read the examples, so one runs beside the
   // other: even a single large example keeps two cores busy. The examples
   // split in parallel; their graphs then go into one interned grammar, in
   // order, on this thread.
   PartOrientations oriented;
+  const PrimitiveLibrary& library = options.primitives ? *options.primitives : PrimitiveLibrary::builtin();
   std::vector<SplitTree> trees(examples.size());
   run_alongside(
-      options.threads,
-      [&] {
-        oriented =
-            orient_parts(laid_out, options.primitives ? *options.primitives : PrimitiveLibrary::builtin(), out.tolerance);
-      },
+      options.threads, [&] { oriented = orient_parts(examples, library, out.tolerance); },
       [&] {
         parallel_for(
-            laid_out.size(), options.threads,
+            examples.size(), options.threads,
             [&](std::size_t i) {
-              trees[i] = split_boxes(laid_out[i].boxes, BoxSplitOptions{out.tolerance}, laid_out[i].source);
+              trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{out.tolerance}, examples[i].source);
             },
             [&](std::size_t done) {
               if (options.progress) options.progress(done, examples.size());
             });
       });
+  // Whole buildings turned a quarter are turned back to the layout the
+  // others share, and written turned (turned_examples.hpp); those are cut
+  // and oriented again.
+  const std::vector<int> quarters = parts <= kJoinedPartsLimit ? common_orientation(examples, trees, out.tolerance)
+                                                              : std::vector<int>(examples.size(), 0);
+  std::vector<Example> turned;
+  if (std::ranges::any_of(quarters, [](int q) { return q != 0; })) {
+    for (std::size_t i = 0; i < examples.size(); ++i) {
+      turned.push_back(turned_example(examples[i], quarters[i]));
+      if (quarters[i] != 0) trees[i] = split_boxes(turned[i].boxes, BoxSplitOptions{out.tolerance}, turned[i].source);
+    }
+    oriented = orient_parts(turned, library, out.tolerance);
+  }
+  const std::vector<Example>& laid_out = turned.empty() ? examples : turned;
   out.unturned_parts = oriented.unmatched;
   Grammar graph;
   // About 1.4 graph nodes per part for large examples (1.36 measured at a

@@ -251,19 +251,21 @@ std::optional<Progression> progression_of(const std::vector<Run>& runs, double t
 }  // namespace
 
 std::size_t fold_progressions(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options) {
-  std::vector<NodeId> repeats;
+  // Repeats of one family of tiles, before checking: most grammars have
+  // none, and checking every example is most of this step's time.
+  std::vector<std::pair<NodeId, Family>> repeats;
   for (const NodeId id : nodes_of_rules(g))
-    if (const auto* r = std::get_if<Repeat>(&g.op(id)); r && r->size.literal()) repeats.push_back(id);
+    if (const auto* r = std::get_if<Repeat>(&g.op(id)); r && r->size.literal())
+      if (auto f = family_of(g, *r)) repeats.emplace_back(id, std::move(*f));
   if (repeats.empty()) return 0;
   std::vector<CheckResult> results;
   if (!derives_examples(g, examples, options, results)) return 0;
 
   const Grammar before = g;
   std::size_t folded = 0;
-  for (const NodeId id : repeats) {
+  for (const auto& [id, family] : repeats) {
     const Repeat repeat = std::get<Repeat>(g.op(id));
-    const auto f = family_of(g, repeat);
-    if (!f) continue;
+    const Family* f = &family;
     std::vector<Run> runs;
     bool found = true;
     for (const CheckResult& r : results) {

@@ -5,7 +5,6 @@
 #include <map>
 #include <string>
 
-#include "inverse/box_split.hpp"
 
 namespace vern {
 
@@ -49,10 +48,18 @@ void layout(const SplitTree& t, const std::vector<LabelledBox>& boxes, std::stri
   out += ')';
 }
 
-std::string layout_of(const Example& e, double tolerance) {
-  const SplitTree tree = split_boxes(e.boxes, BoxSplitOptions{tolerance}, e.source);
+// The layout of an example's boxes turned q times (only the boxes: the
+// layout reads nothing else).
+std::string layout_of(const Example& e, int q, double tolerance) {
+  std::vector<LabelledBox> boxes = e.boxes;
+  for (LabelledBox& b : boxes) {
+    const glm::dvec3 a = turn(b.min, q), c = turn(b.max, q);
+    b.min = glm::min(a, c);
+    b.max = glm::max(a, c);
+  }
+  const SplitTree tree = split_boxes(boxes, BoxSplitOptions{tolerance}, e.source);
   std::string out;
-  layout(tree, e.boxes, out);
+  layout(tree, boxes, out);
   return out;
 }
 
@@ -85,27 +92,35 @@ Example turned_example(const Example& example, int quarters) {
   return out;
 }
 
-std::vector<int> common_orientation(const std::vector<Example>& examples, double tolerance) {
+std::vector<int> common_orientation(const std::vector<Example>& examples, const std::vector<SplitTree>& trees,
+                                    double tolerance) {
   const std::size_t n = examples.size();
   std::vector<int> quarters(n, 0);
   if (n < 2) return quarters;
   // Each example's layout turned 0..3 times.
   std::vector<std::array<std::string, 4>> layouts(n);
+  for (std::size_t i = 0; i < n; ++i) layout(trees[i], examples[i].boxes, layouts[i][0]);
+  // All alike as they are: nothing to turn.
+  if (std::all_of(layouts.begin(), layouts.end(), [&](const auto& l) { return l[0] == layouts[0][0]; })) return quarters;
+  // Quarter turns only: a building turned half round is also its mirror
+  // image for every part symmetric front to back (a garage on the other
+  // side), which is how a person reads it.
   for (std::size_t i = 0; i < n; ++i)
-    for (int q = 0; q < 4; ++q) layouts[i][q] = layout_of(turned_example(examples[i], q), tolerance);
+    for (const int q : {1, 3}) layouts[i][q] = layout_of(examples[i], q, tolerance);
   // How many examples show each layout as they are, and turned.
   std::map<std::string, std::size_t> as_they_are, reachable;
   for (std::size_t i = 0; i < n; ++i) {
     ++as_they_are[layouts[i][0]];
-    std::array<std::string, 4> seen = layouts[i];
+    std::array<std::string, 3> seen{layouts[i][0], layouts[i][1], layouts[i][3]};
     std::ranges::sort(seen);
-    for (int q = 0; q < 4; ++q)
+    for (std::size_t q = 0; q < seen.size(); ++q)
       if (q == 0 || seen[q] != seen[q - 1]) ++reachable[seen[q]];
   }
   // The common layout: the one most examples can show, then the one most
   // show as they are (one order every time: the map's).
   const std::string* common = nullptr;
   for (const auto& [key, count] : reachable) {
+    if (as_they_are[key] == 0) continue;  // a layout no example shows as it is turns none
     if (!common || count > reachable[*common] ||
         (count == reachable[*common] && as_they_are[key] > as_they_are[*common]))
       common = &key;
@@ -113,9 +128,6 @@ std::vector<int> common_orientation(const std::vector<Example>& examples, double
   if (!common || reachable[*common] < 2 || reachable[*common] == as_they_are[*common]) return quarters;
   for (std::size_t i = 0; i < n; ++i) {
     if (layouts[i][0] == *common) continue;
-    // Quarter turns only: a building turned half round is also its mirror
-    // image for every part symmetric front to back (a garage on the other
-    // side), which is how a person reads it.
     for (const int q : {1, 3})
       if (layouts[i][q] == *common) {
         quarters[i] = q;

@@ -8,8 +8,9 @@
 // How: the layout of an example, as the ordered-box splitting cuts it
 // (axes, order and labels, runs of alike pieces as one, sizes left out),
 // is compared with the layouts of the others, each turned by 0 to 3
-// quarter turns. The layout most examples can show is the common one (of
-// those as many can show, the one most show as they are); an example that
+// quarter turns. Of the layouts some example shows as it is, the one most
+// examples can show is the common one (of those as many can show, the one
+// most show as they are); an example that
 // shows it only turned a quarter (either way) is turned back to it; a
 // half turn is left as it is, as the mirror image a person sees in it
 // (the garage on the other side of the house).
@@ -19,13 +20,17 @@
 
 #include <vector>
 
+#include "inverse/box_split.hpp"
 #include "inverse/example.hpp"
 
 namespace vern {
 
 // Per example, the quarter turns about z (0, 1 or 3, counterclockwise
 // seen from above) that bring it to the layout the examples share.
-std::vector<int> common_orientation(const std::vector<Example>& examples, double tolerance);
+// trees: each example as split_boxes cut it, as it is (the layouts turned
+// are cut here).
+std::vector<int> common_orientation(const std::vector<Example>& examples, const std::vector<SplitTree>& trees,
+                                    double tolerance);
 
 // The example turned by `quarters` quarter turns about z (its boxes, its
 // labels' meshes and its parts' positions).
