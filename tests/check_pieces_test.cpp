@@ -39,10 +39,10 @@ TEST(CheckCuts, AreTheFacesNoBoxCrosses) {
   const std::vector<LabelledBox> boxes = {box("wall", 0, 2), box("door", 2, 5), box("window", 3, 4)};
   const Cuts c = cuts(boxes, 6);
   EXPECT_EQ(c.at, (std::vector<double>{0, 2, 5, 6}));
-  ASSERT_EQ(c.segment.size(), 3u);
-  EXPECT_EQ(c.segment[0], (BoxList{0}));
-  EXPECT_EQ(c.segment[1], (BoxList{1, 2}));
-  EXPECT_TRUE(c.segment[2].empty());
+  ASSERT_EQ(c.segments(), 3u);
+  EXPECT_EQ(c.boxes(0, 1), (BoxList{0}));
+  EXPECT_EQ(c.boxes(1, 2), (BoxList{1, 2}));
+  EXPECT_TRUE(c.boxes(2, 3).empty());
   EXPECT_EQ(c.between(0, 3), 3u);
   EXPECT_EQ(c.boxes(1, 3), (BoxList{1, 2}));
   EXPECT_TRUE(c.outside.empty());
@@ -62,8 +62,8 @@ TEST(CheckCuts, GiveAFlatBoxAZeroLengthSegment) {
   const std::vector<LabelledBox> boxes = {box("a", 0, 2), box("panel", 2, 2), box("b", 2, 4)};
   const Cuts c = cuts(boxes, 4);
   EXPECT_EQ(c.at, (std::vector<double>{0, 2, 2, 4}));
-  ASSERT_EQ(c.segment.size(), 3u);
-  EXPECT_EQ(c.segment[1], (BoxList{1}));
+  ASSERT_EQ(c.segments(), 3u);
+  EXPECT_EQ(c.boxes(1, 2), (BoxList{1}));
 }
 
 TEST(CheckCuts, FollowATurnedAxisAndCollectBoxesOutside) {

@@ -7,6 +7,10 @@
 
 namespace vern::check_detail {
 
+namespace {
+constexpr std::uint32_t kNoSegment = ~std::uint32_t{0};
+}  // namespace
+
 std::optional<AxisMap> axis_map(const Scope& s, Axis a) {
   const glm::dvec3 f = s.frame[static_cast<int>(a)];
   for (int w = 0; w < 3; ++w) {
@@ -91,7 +95,10 @@ Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
     if (flat_at[k]) c.at.push_back(positions[k]);
   }
   const std::size_t segments = c.at.empty() ? 0 : c.at.size() - 1;
-  c.segment.assign(segments, {});
+  // Each box's segment, then the boxes ordered by segment (in their order
+  // within one).
+  std::vector<std::uint32_t> seg_of(inside.size(), kNoSegment);
+  c.prefix.assign(segments + 1, 0);
   for (std::size_t k = 0; k < inside.size(); ++k) {
     if (lo[k] < -tol || hi[k] > length + tol) continue;
     if (segments == 0) {
@@ -107,10 +114,14 @@ Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
       seg = after == c.at.begin() ? 0 : static_cast<std::size_t>(after - c.at.begin()) - 1;
     }
     seg = std::min(seg, segments - 1);
-    c.segment[seg].push_back(inside[k]);
+    seg_of[k] = static_cast<std::uint32_t>(seg);
+    ++c.prefix[seg + 1];
   }
-  c.prefix.assign(segments + 1, 0);
-  for (std::size_t k = 0; k < segments; ++k) c.prefix[k + 1] = c.prefix[k] + c.segment[k].size();
+  for (std::size_t k = 0; k < segments; ++k) c.prefix[k + 1] += c.prefix[k];
+  c.in_order.resize(c.prefix[segments]);
+  std::vector<std::size_t> next(c.prefix.begin(), c.prefix.end() - 1);
+  for (std::size_t k = 0; k < inside.size(); ++k)
+    if (seg_of[k] != kNoSegment) c.in_order[next[seg_of[k]]++] = inside[k];
   return c;
 }
 

@@ -44,14 +44,17 @@ std::optional<AxisMap> axis_map(const Scope& s, Axis a);
 // them to either side.
 struct Cuts {
   std::vector<double> at;           // local positions, ascending
-  std::vector<BoxList> segment;     // boxes in [at[k], at[k+1]]
+  // The boxes of segment k, [at[k], at[k+1]], are in_order[prefix[k] ..
+  // prefix[k + 1]): one list, not one per segment (a cut scope's segments
+  // are many, and most tries of a choice cut one and fail).
+  BoxList in_order;
   std::vector<std::size_t> prefix;  // boxes in segments before k
   BoxList outside;                  // boxes beyond the scope's ends
+  std::size_t segments() const { return prefix.size() - 1; }
   std::size_t between(std::size_t j, std::size_t e) const { return prefix[e] - prefix[j]; }
   BoxList boxes(std::size_t j, std::size_t e) const {
-    BoxList out;
-    for (std::size_t k = j; k < e; ++k) out.insert(out.end(), segment[k].begin(), segment[k].end());
-    return out;
+    return BoxList(in_order.begin() + static_cast<std::ptrdiff_t>(prefix[j]),
+                   in_order.begin() + static_cast<std::ptrdiff_t>(prefix[e]));
   }
 };
 

@@ -58,7 +58,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   // Whole buildings turned a quarter are turned back to the layout the
   // others share, and written turned (turned_examples.hpp); those are cut
   // and oriented again.
-  const std::vector<int> quarters = parts <= kJoinedPartsLimit ? common_orientation(examples, trees, out.tolerance)
+  const std::vector<int> quarters = parts <= kJoinedPartsLimit ? common_orientation(examples, trees, out.tolerance, options.threads)
                                                               : std::vector<int>(examples.size(), 0);
   std::vector<Example> turned;
   if (std::ranges::any_of(quarters, [](int q) { return q != 0; })) {

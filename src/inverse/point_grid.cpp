@@ -7,11 +7,19 @@ namespace vern {
 
 namespace {
 constexpr std::uint64_t kCells = std::uint64_t{1} << 21;
+// Up to this many points, near() reads them all.
+constexpr std::size_t kReadAll = 32;
 }  // namespace
 
 PointGrid::PointGrid(const std::vector<glm::dvec3>& points, double tolerance)
     : tolerance_(tolerance), cell_(tolerance > 0.0 ? 2.0 * tolerance : 1.0) {
   if (points.empty()) return;
+  if (points.size() <= kReadAll) {
+    binned_.reserve(points.size());
+    for (const glm::dvec3& p : points) binned_.push_back({0, p});
+    small_ = true;
+    return;
+  }
   origin_ = points.front();
   for (const glm::dvec3& p : points) origin_ = glm::min(origin_, p);
   binned_.reserve(points.size());
@@ -28,6 +36,12 @@ std::uint64_t PointGrid::cell(double v, int axis) const {
 }
 
 bool PointGrid::near(const glm::dvec3& p) const {
+  if (small_) {
+    return std::any_of(binned_.begin(), binned_.end(), [&](const Binned& b) {
+      const glm::dvec3 d = glm::abs(b.point - p);
+      return d.x <= tolerance_ && d.y <= tolerance_ && d.z <= tolerance_;
+    });
+  }
   // A point within the tolerance lies in a cell between these: a cell is
   // twice the tolerance wide, so at most two along each axis.
   std::uint64_t lo[3], hi[3];

@@ -5,7 +5,9 @@
 // read every point of about the same x: all of them for a flat panel, so a
 // million-face part took minutes. Here the points are binned into cells
 // twice the tolerance wide, and a question reads the at most 8 cells that
-// can hold an answer: linear in the points, whatever their shape.
+// can hold an answer: linear in the points, whatever their shape. A few
+// points (a box's 8 to 24 corners, most parts) are simply read in turn:
+// cheaper than binning and sorting them.
 #pragma once
 
 #include <cstdint>
@@ -38,7 +40,8 @@ class PointGrid {
   double tolerance_ = 0.0;
   double cell_ = 1.0;
   glm::dvec3 origin_{0.0};
-  std::vector<Binned> binned_;  // sorted by key
+  std::vector<Binned> binned_;  // sorted by key; in their order, unbinned, when few
+  bool small_ = false;
 };
 
 }  // namespace vern

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "graph/parallel_for.hpp"
 
 namespace vern {
 
@@ -93,7 +94,7 @@ Example turned_example(const Example& example, int quarters) {
 }
 
 std::vector<int> common_orientation(const std::vector<Example>& examples, const std::vector<SplitTree>& trees,
-                                    double tolerance) {
+                                    double tolerance, unsigned threads) {
   const std::size_t n = examples.size();
   std::vector<int> quarters(n, 0);
   if (n < 2) return quarters;
@@ -105,8 +106,9 @@ std::vector<int> common_orientation(const std::vector<Example>& examples, const 
   // Quarter turns only: a building turned half round is also its mirror
   // image for every part symmetric front to back (a garage on the other
   // side), which is how a person reads it.
-  for (std::size_t i = 0; i < n; ++i)
+  parallel_for(n, threads, [&](std::size_t i) {
     for (const int q : {1, 3}) layouts[i][q] = layout_of(examples[i], q, tolerance);
+  });
   // How many examples show each layout as they are, and turned.
   std::map<std::string, std::size_t> as_they_are, reachable;
   for (std::size_t i = 0; i < n; ++i) {

@@ -28,9 +28,9 @@ namespace vern {
 // Per example, the quarter turns about z (0, 1 or 3, counterclockwise
 // seen from above) that bring it to the layout the examples share.
 // trees: each example as split_boxes cut it, as it is (the layouts turned
-// are cut here).
+// are cut here, on up to `threads` threads; the same answer on any number).
 std::vector<int> common_orientation(const std::vector<Example>& examples, const std::vector<SplitTree>& trees,
-                                    double tolerance);
+                                    double tolerance, unsigned threads = 1);
 
 // The example turned by `quarters` quarter turns about z (its boxes, its
 // labels' meshes and its parts' positions).
