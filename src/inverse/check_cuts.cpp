@@ -9,6 +9,23 @@ namespace vern::check_detail {
 
 namespace {
 constexpr std::uint32_t kNoSegment = ~std::uint32_t{0};
+
+struct Face {
+  double t;
+  int tag;  // -1: the scope's start, -2: its end, else 2 * k + (max face)
+};
+
+// make_cuts' working lists, kept from call to call on each thread: most
+// calls cut one or two boxes, and allocating eight lists each time cost
+// more than the cutting.
+struct CutsScratch {
+  std::vector<Face> faces;
+  std::vector<double> lo, hi, positions;
+  std::vector<int> cover;
+  std::vector<char> flat_at;
+  std::vector<std::uint32_t> seg_of;
+  std::vector<std::size_t> next;
+};
 }  // namespace
 
 std::optional<AxisMap> axis_map(const Scope& s, Axis a) {
@@ -24,15 +41,12 @@ std::optional<AxisMap> axis_map(const Scope& s, Axis a) {
 Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, const AxisMap& am, double length,
                double tol) {
   Cuts c;
+  thread_local CutsScratch scratch;
   // Every face and both ends, snapped: a run of positions within the
   // tolerance becomes one, the scope's end if the run holds one, else
   // its smallest.
-  struct Face {
-    double t;
-    int tag;  // -1: the scope's start, -2: its end, else 2 * k + (max face)
-  };
-  std::vector<Face> faces;
-  faces.reserve(2 * inside.size() + 2);
+  std::vector<Face>& faces = scratch.faces;
+  faces.clear();
   faces.push_back({0.0, -1});
   faces.push_back({length, -2});
   for (std::size_t k = 0; k < inside.size(); ++k) {
@@ -43,8 +57,12 @@ Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
     faces.push_back({t1, static_cast<int>(2 * k + 1)});
   }
   std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.t < b.t; });
-  std::vector<double> lo(inside.size()), hi(inside.size());
-  std::vector<double> positions;
+  std::vector<double>& lo = scratch.lo;
+  std::vector<double>& hi = scratch.hi;
+  std::vector<double>& positions = scratch.positions;
+  lo.assign(inside.size(), 0.0);
+  hi.assign(inside.size(), 0.0);
+  positions.clear();
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t j = i;
     double rep = faces[i].t;
@@ -69,8 +87,10 @@ Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
   std::sort(positions.begin(), positions.end());
   positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
   // Positions strictly inside a box are crossed: no boundary there.
-  std::vector<int> cover(positions.size() + 1, 0);
-  std::vector<bool> flat_at(positions.size(), false);
+  std::vector<int>& cover = scratch.cover;
+  std::vector<char>& flat_at = scratch.flat_at;
+  cover.assign(positions.size() + 1, 0);
+  flat_at.assign(positions.size(), 0);
   auto index_of = [&](double v) {
     return static_cast<std::size_t>(std::lower_bound(positions.begin(), positions.end(), v) - positions.begin());
   };
@@ -81,7 +101,7 @@ Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
     }
     const std::size_t a = index_of(lo[k]), b = index_of(hi[k]);
     if (a == b) {
-      flat_at[a] = true;
+      flat_at[a] = 1;
       continue;
     }
     cover[a + 1] += 1;
@@ -97,7 +117,8 @@ Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
   const std::size_t segments = c.at.empty() ? 0 : c.at.size() - 1;
   // Each box's segment, then the boxes ordered by segment (in their order
   // within one).
-  std::vector<std::uint32_t> seg_of(inside.size(), kNoSegment);
+  std::vector<std::uint32_t>& seg_of = scratch.seg_of;
+  seg_of.assign(inside.size(), kNoSegment);
   c.prefix.assign(segments + 1, 0);
   for (std::size_t k = 0; k < inside.size(); ++k) {
     if (lo[k] < -tol || hi[k] > length + tol) continue;
@@ -119,7 +140,8 @@ Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
   }
   for (std::size_t k = 0; k < segments; ++k) c.prefix[k + 1] += c.prefix[k];
   c.in_order.resize(c.prefix[segments]);
-  std::vector<std::size_t> next(c.prefix.begin(), c.prefix.end() - 1);
+  std::vector<std::size_t>& next = scratch.next;
+  next.assign(c.prefix.begin(), c.prefix.end() - 1);
   for (std::size_t k = 0; k < inside.size(); ++k)
     if (seg_of[k] != kNoSegment) c.in_order[next[seg_of[k]]++] = inside[k];
   return c;
