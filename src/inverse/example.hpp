@@ -3,7 +3,9 @@
 // An example is a file of labelled parts (thesis chapter 9): each OBJ object
 // (`o name`), or each named glTF node with a mesh, is one primitive; its
 // label is the name with a Blender-style numeric suffix removed, so
-// "window.001" and "window.002" are both the primitive "window". Inference
+// "window.001" and "window.002" are both the primitive "window". An object
+// made of loose pieces whose boxes are apart (three windows joined into
+// one `o window`) is one part per piece (loose_parts.hpp). Inference
 // works on the axis-aligned bounding box of each part. Matching turns
 // (orientation.hpp) needs every part's vertex positions, kept compactly,
 // and the whole mesh of the first part of each label, its canonical mesh:
@@ -36,6 +38,9 @@ struct LabelledBox {
   // Index into Example::meshes when this part is the first of its label
   // in the example, else Mesh::kNone.
   std::uint32_t mesh = Mesh::kNone;
+  // Loose pieces the object is made of, kept as this one part because
+  // their boxes meet (loose_parts.hpp); pieces apart are parts of their own.
+  std::uint32_t loose_pieces = 1;
 };
 
 struct Example {
