@@ -624,6 +624,10 @@ double default_tolerance(glm::dvec3 min, glm::dvec3 max) {
   return 1e-6 * std::max({size.x, size.y, size.z, far.x, far.y, far.z});
 }
 
+double example_tolerance(const Example& example, double given) {
+  return given > 0 ? given : default_tolerance(example);
+}
+
 std::string describe_object(const LabelledBox& box) {
   std::string text = "'" + box.object + "'";
   if (box.line != 0) text += " (line " + std::to_string(box.line) + ")";

@@ -111,6 +111,13 @@ double default_tolerance(const Example& example);
 // The same for bounds [min, max].
 double default_tolerance(glm::dvec3 min, glm::dvec3 max);
 
+// The tolerance an example is matched within: `given` (--tolerance) when
+// it is > 0, else the example's own default_tolerance, taken where the
+// file put it (before it is moved to the origin). The one rule `check`
+// applies to each example and `infer` holds each example to, so that a
+// grammar infer writes passes check on the same examples.
+double example_tolerance(const Example& example, double given);
+
 // "'window.001' (line 12)", or "'window.001'" when the line is unknown: how
 // messages name a part.
 std::string describe_object(const LabelledBox& box);
