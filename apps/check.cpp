@@ -109,7 +109,7 @@ int run(int argc, char** argv) {
     // The example's own tolerance, as infer takes it: from where the file
     // put it, before it was moved to the origin.
     CheckOptions own = options;
-    if (!(own.tolerance > 0)) own.tolerance = default_tolerance(example);
+    own.tolerance = example_tolerance(example, options.tolerance);
     try {
       r = naming_out_of_memory(file.string(), "while checking this example", "check it alone, or lower --max-steps",
                                [&] { return check_example(grammar, boxes, scope.value_or(example_size(example)), own); });

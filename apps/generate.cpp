@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <thread>
 
 #include "forward/gltf_writer.hpp"
 #include "forward/obj_writer.hpp"
@@ -45,7 +47,7 @@ CommandLine make_command_line() {
   cl.add({"--strict", "", 0, "", "treat warnings (no rule applies, unknown primitive) as errors"});
   cl.add({"--threads", "-j", 1, "N", "derive with N threads (default: all cores; output is the same)"});
   cl.add({"--max-depth", "", 1, "N", "limit on nested rule calls (default 1000)"});
-  cl.add({"--max-terminals", "", 1, "N", "limit on terminals per building (default 1000000, ~200 MB)"});
+  cl.add({"--max-terminals", "", 1, "N", "limit on terminals per building (default 1000000: a building\nthat large takes ~300 MB while derived, per thread)"});
   cl.add({"--max-operations", "", 1, "N", "limit on operations per building (default 200000000)"});
   cl.add_standard_options();
   cl.set_epilog(
@@ -82,6 +84,47 @@ void write_scene(const Scene& scene, const PrimitiveLibrary& library, const fs::
                            write_gltf(scene, library, path, gltf, outputs);
                        });
 }
+
+// One output file of all variants, written as they come: OBJ text goes
+// straight to its staged file, glTF waits for its head (GltfStream).
+class SceneFileWriter {
+ public:
+  SceneFileWriter(const fs::path& path, Format format, std::vector<std::string> labels, const PrimitiveLibrary& library,
+                  GltfOptions gltf, OutputFiles& outputs)
+      : path_(path), outputs_(outputs) {
+    if (format == Format::Obj) {
+      check_obj_path(path);
+      file_.emplace(outputs.open(path));
+      obj_.emplace(std::move(labels), library, mtl_path_for(path).filename().string(),
+                   [this](std::string_view piece) { file_->write(piece); });
+    } else {
+      check_gltf_path(path);
+      gltf_.emplace(std::move(labels), library, gltf, path.parent_path(), path.string());
+    }
+  }
+
+  void add(const Variant& variant) {
+    if (obj_) obj_->add(variant);
+    else gltf_->add(variant);
+  }
+
+  void finish() {
+    if (obj_) {
+      obj_->flush();
+      file_->close();
+      outputs_.stage(mtl_path_for(path_), obj_->mtl_text());
+    } else {
+      write_gltf(*gltf_, path_, outputs_);
+    }
+  }
+
+ private:
+  fs::path path_;
+  OutputFiles& outputs_;
+  std::optional<OutputFile> file_;
+  std::optional<ObjStream> obj_;
+  std::optional<GltfStream> gltf_;
+};
 
 // The files a run writes for one output file: an OBJ brings its MTL.
 std::vector<fs::path> files_written(const fs::path& output, Format format) {
@@ -251,21 +294,19 @@ int run(int argc, char** argv) {
       if (done % 10 == 0 || done == total) std::fprintf(stderr, "\rderiving %u/%u buildings", done, total);
     };
   }
-  std::vector<Derivation> derivations = naming_out_of_memory(
-      grammar_path.string(), "deriving " + std::to_string(options.count) + " building" + (options.count == 1 ? "" : "s"),
-      "derive fewer buildings at once (-n), lower --max-terminals, or use fewer threads (-j)",
-      [&] { return derive_variants(grammar, options); });
-  if (show_progress) std::fprintf(stderr, "\n");
-
+  // Buildings go to the writer as they are derived, a batch at a time:
+  // memory stays flat however many there are (a one-file layout needs
+  // only every variant's start size first).
   std::size_t terminals = 0;
   std::vector<std::string> warnings;
-  for (auto& d : derivations) {
+  auto note = [&](Derivation& d) {
     terminals += d.terminals.size();
     for (auto& w : d.warnings)
       if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(std::move(w));
-  }
-  if (!quiet)
-    for (const auto& w : warnings) std::cerr << w << "\n";
+  };
+  const std::uint32_t batch = 16 * std::max(1u, options.threads == 0 ? std::thread::hardware_concurrency() : options.threads);
+  const std::string deriving = "deriving " + std::to_string(options.count) + " building" + (options.count == 1 ? "" : "s");
+  const char* deriving_hint = "derive fewer buildings at once (-n), lower --max-terminals, or use fewer threads (-j)";
 
   // Every file is written before any replaces what was there: a run that
   // fails half way through a folder leaves the earlier run's variants.
@@ -273,7 +314,20 @@ int run(int argc, char** argv) {
   MadeFolder made{output};
   OutputFiles outputs;
   if (one_file) {
-    write_scene(lay_out(std::move(derivations), spacing), library, output, *file_format, gltf, outputs);
+    const std::vector<glm::dvec3> offsets = layout_offsets(
+        naming_out_of_memory(grammar_path.string(), deriving, deriving_hint, [&] { return start_sizes(grammar, options); }),
+        spacing);
+    std::optional<SceneFileWriter> writer;
+    naming_out_of_memory(grammar_path.string(), deriving, deriving_hint, [&] {
+      derive_variants_in_order(grammar, options, batch, [&](std::uint32_t i, Derivation&& d) {
+        note(d);
+        if (!writer) writer.emplace(output, *file_format, std::move(d.labels), library, gltf, outputs);
+        writer->add(Variant{variant_name(i), offsets[i], std::move(d.terminals)});
+      });
+    });
+    naming_out_of_memory(output.string(), "while writing the buildings",
+                         "write fewer buildings into one file, or a folder of one file per building",
+                         [&] { writer->finish(); });
     where = output.string();
   } else {
     const Format format = folder_format.value_or(Format::Obj);
@@ -281,12 +335,19 @@ int run(int argc, char** argv) {
     if (ec)
       throw Error(ErrorKind::Io, output.string() + ": error: cannot create the folder: " + ec.message() +
                                      "\n  hint: check that its parent folder exists and is writable, or choose another path");
-    for (std::uint32_t i = 0; i < derivations.size(); ++i)
-      write_scene(single(std::move(derivations[i]), i), library, output / (variant_name(i) + extension(format)), format,
-                  gltf, outputs);
+    naming_out_of_memory(grammar_path.string(), deriving, deriving_hint, [&] {
+      derive_variants_in_order(grammar, options, batch, [&](std::uint32_t i, Derivation&& d) {
+        note(d);
+        write_scene(single(std::move(d), i), library, output / (variant_name(i) + extension(format)), format, gltf,
+                    outputs);
+      });
+    });
     where = (output / ("variant_000" + std::string(extension(format)))).string();
     if (options.count > 1) where += " ... " + variant_name(options.count - 1) + extension(format);
   }
+  if (show_progress) std::fprintf(stderr, "\n");
+  if (!quiet)
+    for (const auto& w : warnings) std::cerr << w << "\n";
   outputs.commit();
   made.done = true;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -218,6 +218,11 @@ const std::vector<BadInput> kCases = {
    {"obj/duplicate_coincident.obj"}, nullptr, "style.grm"},
   {"obj_overlapping_parts", "infer", {"overlapping.obj", "-o", "style.grm"}, kInput,
    "overlapping.obj:1:1: error: ", "objects 'wall' (line 1) and 'door' (line 16) overlap", {"obj/overlapping.obj"}},
+  // Issue 16, item 4: loose pieces that cannot be told apart are one part;
+  // when that part overlaps, the hint says how Blender separates them.
+  {"obj_loose_pieces_overlap", "infer", {"loose_pieces_overlap.obj", "-o", "style.grm"}, kInput,
+   "loose_pieces_overlap.obj:1:1: error: ", "is 2 loose pieces in one object: make each its own object (Blender: Edit Mode, Mesh > Separate > By Loose Parts)",
+   {"obj/loose_pieces_overlap.obj"}},
   {"obj_part_inside_part", "infer", {"contained.obj", "-o", "style.grm"}, kInput,
    "contained.obj:1:1: error: ", "'wall' (line 1) and 'door' (line 16) overlap", {"obj/contained.obj"}},
   // No straight cut separates a pinwheel: inferred all the same, with S

@@ -106,6 +106,66 @@ TEST(Example, ObjObjectsArePartsWithBoxesLabelsAndLines) {
   EXPECT_EQ(describe_object(ex.boxes[1]), "'window.001' (line 17)");
 }
 
+// Boxes joined into one object (Blender's Array modifier, Ctrl+J): the
+// first with its `o` line, the others' faces in the same object.
+std::string joined_boxes(const std::string& name, const std::vector<std::pair<glm::dvec3, glm::dvec3>>& boxes) {
+  std::string text;
+  for (const auto& [a, b] : boxes) {
+    const std::string box = box_obj(name, a, b);
+    text += text.empty() ? box : box.substr(box.find('\n') + 1);
+  }
+  return text;
+}
+
+TEST(Example, AnObjectOfLooseBoxesIsOnePartPerBox) {
+  TempFolder dir;
+  write_text(dir / "house.obj", box_obj("wall", {0, 0, 0}, {9, 0.5, 3}) +
+                                    joined_boxes("window", {{{1, -0.25, 1}, {2, 0, 2}},
+                                                            {{4, -0.25, 1}, {5, 0, 2}},
+                                                            {{7, -0.25, 1}, {8, 0, 2}}}));
+  const Example ex = load_example(dir / "house.obj");
+  ASSERT_EQ(ex.boxes.size(), 4u);
+  for (std::size_t i = 1; i < 4; ++i) {
+    EXPECT_EQ(ex.boxes[i].label, "window");
+    EXPECT_EQ(ex.boxes[i].line, 16u);
+    EXPECT_EQ(ex.boxes[i].min, glm::dvec3(1 + 3.0 * static_cast<double>(i - 1), -0.25, 1));
+    EXPECT_EQ(ex.boxes[i].max, glm::dvec3(2 + 3.0 * static_cast<double>(i - 1), 0, 2));
+  }
+  EXPECT_EQ(ex.boxes[2].object, "window (loose part 2 of 3)");
+  // The primitive is one window, not three.
+  ASSERT_EQ(ex.meshes.size(), 2u);
+  EXPECT_EQ(ex.meshes[1].positions.size(), 8u);
+  EXPECT_EQ(ex.meshes[1].face_sizes.size(), 6u);
+  EXPECT_EQ(ex.meshes[1].max_corner(), glm::dvec3(2, 0, 2));
+  ASSERT_EQ(ex.positions.size(), 4u);
+  // Three windows in one object infer as three windows in three objects.
+  write_text(dir / "apart.obj", box_obj("wall", {0, 0, 0}, {9, 0.5, 3}) + box_obj("window", {1, -0.25, 1}, {2, 0, 2}) +
+                                    box_obj("window", {4, -0.25, 1}, {5, 0, 2}) +
+                                    box_obj("window", {7, -0.25, 1}, {8, 0, 2}));
+  const Example apart = load_example(dir / "apart.obj");
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(ex.boxes[i].min, apart.boxes[i].min);
+    EXPECT_EQ(ex.boxes[i].max, apart.boxes[i].max);
+  }
+}
+
+TEST(Example, LoosePiecesWhoseBoxesMeetStayOnePart) {
+  TempFolder dir;
+  // A frame with a pane inside it, and two boxes sharing a face (an Array
+  // modifier's copies touching): neither can be cut apart into boxes.
+  write_text(dir / "window.obj",
+             joined_boxes("window", {{{0, 0, 0}, {1, 0.2, 1}}, {{0.2, 0.05, 0.2}, {0.8, 0.15, 0.8}}}) +
+                 joined_boxes("shelf", {{{3, 0, 0}, {4, 1, 1}}, {{4, 0, 0}, {5, 1, 1}}}));
+  const Example ex = load_example(dir / "window.obj");
+  ASSERT_EQ(ex.boxes.size(), 2u);
+  EXPECT_EQ(ex.boxes[0].object, "window");
+  EXPECT_EQ(ex.boxes[0].loose_pieces, 2u);
+  EXPECT_EQ(ex.boxes[0].max, glm::dvec3(1, 0.2, 1));
+  // Touching boxes share their corner positions: one piece.
+  EXPECT_EQ(ex.boxes[1].loose_pieces, 1u);
+  EXPECT_EQ(ex.boxes[1].max, glm::dvec3(5, 1, 1));
+}
+
 TEST(Example, FlatPartsAreAllowed) {
   TempFolder dir;
   // A 2-D facade as in the thesis's example files: every part at y = 0.

@@ -58,6 +58,13 @@ class Deriver {
     params_.resize(64);
   }
 
+  // The start scope's size alone, drawn as run() draws it.
+  glm::dvec3 start_only() {
+    const std::uint64_t root = seed_key(opt_.seed);
+    evaluate_constants(child_key(root, 1));
+    return start_size(child_key(root, 2));
+  }
+
   void run() {
     const std::uint64_t root = seed_key(opt_.seed);
     evaluate_constants(child_key(root, 1));
@@ -569,5 +576,11 @@ Derivation derive(const Program& program, const DeriveOptions& options) {
 }
 
 Derivation derive(const Grammar& grammar, const DeriveOptions& options) { return derive(compile(grammar), options); }
+
+glm::dvec3 derive_start_size(const Program& program, const DeriveOptions& options) {
+  std::vector<Terminal> none;
+  Derivation out;
+  return Deriver(program, options, out, none).start_only();
+}
 
 }  // namespace vern

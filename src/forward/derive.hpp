@@ -18,8 +18,10 @@ namespace vern {
 
 struct DeriveLimits {
   std::uint32_t max_depth = 1000;            // nested rule calls (--max-depth)
-  // Terminals per derivation (--max-terminals). Each takes about 170 bytes
-  // while held for writing: a million is some 200 MB per building.
+  // Terminals per derivation (--max-terminals). Each takes 144 bytes, twice
+  // while the derivation hands them over: a million are some 300 MB per
+  // building being derived (measured: generate to OBJ or GLB peaks at
+  // 287 MB); the writers hold a bounded amount on top.
   std::uint64_t max_terminals = 1'000'000;
   std::uint64_t max_operations = 200'000'000;  // operations run, tiles included (--max-operations)
 };
@@ -56,5 +58,10 @@ Derivation derive(const Grammar& grammar, const DeriveOptions& options);
 // callers that derive it many times.
 struct Program;
 Derivation derive(const Program& program, const DeriveOptions& options);
+
+// The size of the start scope derive() would give (derivation.start.size),
+// without deriving: constants and @scope only. Throws as derive() does for
+// errors in those.
+glm::dvec3 derive_start_size(const Program& program, const DeriveOptions& options);
 
 }  // namespace vern

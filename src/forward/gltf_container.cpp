@@ -16,34 +16,35 @@ void put_u32(std::string& out, std::uint32_t v) {
   out.append(bytes, 4);
 }
 
-std::size_t padded(std::size_t n) { return (n + 3) & ~std::size_t{3}; }
+std::uint64_t padded(std::uint64_t n) { return (n + 3) & ~std::uint64_t{3}; }
 
 }  // namespace
 
-std::string glb_head(std::string file, std::string_view bin) {
-  if (file.size() < kGlbJsonOffset) throw Error(ErrorKind::Internal, "error: GLB text without room for its header");
-  if (bin.size() % 4 != 0) throw Error(ErrorKind::Internal, "error: a GLB binary chunk not padded to 4 bytes");
-  const std::size_t json = file.size() - kGlbJsonOffset;
-  const std::size_t json_length = padded(json);
-  const std::size_t total = kGlbJsonOffset + json_length + (bin.empty() ? 0 : 8 + bin.size());
+std::string glb_header(std::uint64_t json_length, std::uint64_t bin_length) {
+  if (bin_length % 4 != 0) throw Error(ErrorKind::Internal, "error: a GLB binary chunk not padded to 4 bytes");
+  const std::uint64_t json_padded = padded(json_length);
+  const std::uint64_t total = kGlbJsonOffset + json_padded + (bin_length == 0 ? 0 : 8 + bin_length);
   if (total > 0xffffffffu) {
     fail(ErrorKind::Limit, "glTF output", {}, "the scene needs " + std::to_string(total >> 20) +
                                                   " MiB, more than a GLB file can hold (4 GiB)",
          "write fewer variants per file (-o a folder), or use --instancing to store terminals compactly");
   }
-  file.append(json_length - json, ' ');
-  if (!bin.empty()) {
-    put_u32(file, static_cast<std::uint32_t>(bin.size()));
-    file.append("BIN\0", 4);
-  }
   std::string header;
   header.append("glTF", 4);
   put_u32(header, 2);
   put_u32(header, static_cast<std::uint32_t>(total));
-  put_u32(header, static_cast<std::uint32_t>(json_length));
+  put_u32(header, static_cast<std::uint32_t>(json_padded));
   header.append("JSON", 4);
-  file.replace(0, kGlbJsonOffset, header);
-  return file;
+  return header;
+}
+
+std::string glb_between(std::uint64_t json_length, std::uint64_t bin_length) {
+  std::string out(padded(json_length) - json_length, ' ');
+  if (bin_length != 0) {
+    put_u32(out, static_cast<std::uint32_t>(bin_length));
+    out.append("BIN\0", 4);
+  }
+  return out;
 }
 
 std::string base64(std::string_view bytes) {

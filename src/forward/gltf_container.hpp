@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -12,14 +13,20 @@ namespace vern {
 // JSON chunk's header (8).
 inline constexpr std::size_t kGlbJsonOffset = 20;
 
-// A GLB file is 12-byte header, the JSON chunk padded with spaces to 4
-// bytes, then (when bin is not empty) the BIN chunk. glb_head completes, in
-// place, `file` (kGlbJsonOffset bytes of room, then the JSON text, whose
-// buffer 0 describes bin) up to the BIN chunk's header; `bin`, already
-// padded to 4 bytes with zeros, follows it. Two pieces, so a large scene is
-// written without joining them in memory. Throws vern::Error (Limit) past
-// GLB's 4 GiB.
-std::string glb_head(std::string file, std::string_view bin);
+// A GLB file is a 12-byte header, the JSON chunk (its 8-byte header, the
+// text padded with spaces to 4 bytes), then, when the binary buffer is not
+// empty, the BIN chunk (8-byte header, the bytes padded with zeros to 4).
+// The pieces are given apart so that a large scene is written as it is
+// read back from where it waited, never joined in memory.
+
+// The kGlbJsonOffset bytes before a JSON text of json_length bytes, in a
+// file whose BIN chunk holds bin_length bytes (a multiple of 4; 0: none).
+// Throws vern::Error (Limit) past GLB's 4 GiB.
+std::string glb_header(std::uint64_t json_length, std::uint64_t bin_length);
+
+// The spaces after a JSON text of json_length bytes, then the BIN chunk's
+// header when bin_length is not 0.
+std::string glb_between(std::uint64_t json_length, std::uint64_t bin_length);
 
 // RFC 4648 base64 with padding, as data URIs want it.
 std::string base64(std::string_view bytes);

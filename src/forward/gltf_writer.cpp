@@ -15,6 +15,7 @@
 #include "forward/palette.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"
+#include "graph/spill_file.hpp"
 
 // The document is written by hand (json_text.hpp) rather than through
 // tinygltf's model: for a thousand city blocks (two million nodes) the model
@@ -99,16 +100,15 @@ class BinaryBuffer {
     return static_cast<int>(views_.size() - 1);
   }
 
-  // A new view of `bytes` bytes to be filled through data(view) (aligned
-  // to 4): large arrays are written in place, not built and copied.
-  int reserve_view(std::size_t bytes, int target) {
+  // A view of `bytes` bytes (a multiple of 4) kept elsewhere (a
+  // SpillFile), that follow the bytes held here and the views added before
+  // it this way: an instanced scene's transforms are not held in memory.
+  int add_outside_view(std::size_t bytes, int target) {
     bytes_.resize((bytes_.size() + 3) & ~std::size_t{3}, '\0');
-    const std::size_t at = bytes_.size();
-    bytes_.resize(at + bytes);
-    views_.push_back({at, bytes, target});
+    views_.push_back({bytes_.size() + outside_, bytes, target});
+    outside_ += bytes;
     return static_cast<int>(views_.size() - 1);
   }
-  float* floats(int view) { return reinterpret_cast<float*>(bytes_.data() + views_[static_cast<std::size_t>(view)].offset); }
 
   int add_accessor(Accessor a) {
     accessors_.push_back(std::move(a));
@@ -123,11 +123,15 @@ class BinaryBuffer {
 
   Accessor& accessor(int i) { return accessors_[static_cast<std::size_t>(i)]; }
 
-  // Pads the buffer to 4 bytes (the GLB chunk and data URI both want it).
+  // Pads the bytes held here to 4 (the GLB chunk and data URI both want
+  // it; outside views are multiples of 4) and gives them: the outside
+  // views' bytes follow.
   const std::string& finish() {
     bytes_.resize((bytes_.size() + 3) & ~std::size_t{3}, '\0');
     return bytes_;
   }
+  std::size_t size() const { return ((bytes_.size() + 3) & ~std::size_t{3}) + outside_; }
+  std::size_t held_bytes() const { return bytes_.capacity(); }
 
   // "accessors", "bufferViews" and "buffers"; the buffer carries uri when
   // given (the .gltf text form), else it is the GLB's BIN chunk.
@@ -152,8 +156,8 @@ class BinaryBuffer {
       }
       json.close_array();
     }
-    if (!bytes_.empty()) {  // a buffer must not be empty
-      json.key("buffers").open_array().open_object().field("byteLength", bytes_.size());
+    if (size() != 0) {  // a buffer must not be empty
+      json.key("buffers").open_array().open_object().field("byteLength", size());
       if (uri != nullptr) json.field("uri", *uri);
       json.close_object().close_array();
     }
@@ -165,6 +169,7 @@ class BinaryBuffer {
     int target = kNoTarget;
   };
   std::string bytes_;
+  std::size_t outside_ = 0;  // bytes of the outside views
   std::vector<View> views_;
   std::vector<Accessor> accessors_;
 };
@@ -237,122 +242,144 @@ struct MeshUse {
   std::uint32_t material = 0;
 };
 
-// Per variant, in instancing mode: one node per mesh it uses, in order of
-// first use, with the accessors of its instances.
+// In instancing mode: one node per mesh a variant uses, in order of first
+// use, carrying `count` instances from the `first`-th of the scene on.
 struct InstanceGroup {
   int mesh = -1;
-  int translation = -1, rotation = -1, scale = -1;
+  std::size_t first = 0, count = 0;
 };
 
-class Document {
- public:
-  Document(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options)
-      : scene_(scene), library_(library), options_(options), materials_(scene) {
-    assign_meshes();
-    if (options_.instancing) gather_instances();
+// What a variant's nodes need once the accessors are numbered (instancing).
+struct VariantHead {
+  std::string name;
+  glm::dvec3 offset{0.0};
+  std::size_t groups = 0;
+};
+
+}  // namespace
+
+// Meshes, materials and geometry are numbered in order of first use as
+// the variants arrive, exactly as when the whole scene was at hand. Plain
+// nodes are written as each variant arrives and wait in a SpillFile;
+// instance transforms wait in three (T, R, S), the small per-group records
+// in memory, because their accessors are numbered after the geometry's.
+struct GltfStream::State {
+  State(std::vector<std::string> labels_in, const PrimitiveLibrary& library_in, GltfOptions options_in,
+        const std::optional<std::filesystem::path>& folder, const std::string& owner)
+      : labels(std::move(labels_in)),
+        library(library_in),
+        options(options_in),
+        materials(labels.size()),
+        primitive_of_label(labels.size(), nullptr),
+        nodes_spill(folder, owner),
+        translations(folder, owner, kTransformPiece),
+        rotations(folder, owner, kTransformPiece),
+        scales(folder, owner, kTransformPiece) {
+    nodes.open_array();
   }
 
-  // The JSON document after `prefix` bytes of room; the buffer is referred
-  // to by uri when given.
-  std::string json(const std::string* uri, std::size_t prefix = 0) {
-    JsonText json(prefix);
-    std::size_t terminals = 0;
-    for (const Variant& v : scene_.variants) terminals += v.terminals.size();
-    json.reserve(4096 + (options_.instancing ? 200 * groups_.size() : 130 * terminals));
-    json.open_object();
-    json.key("asset").open_object().field("generator", "Vernacular").field("version", "2.0").close_object();
-    if (options_.instancing) {
-      for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
-        json.key(list).open_array().string("EXT_mesh_gpu_instancing").close_array();
+  static constexpr std::size_t kTransformPiece = 1 << 18;  // three of them
+
+  std::vector<std::string> labels;
+  const PrimitiveLibrary& library;
+  GltfOptions options;
+  MaterialTable materials;
+  BinaryBuffer buffer;
+  std::vector<Geometry> geometries;
+  std::vector<MeshUse> meshes;
+  std::vector<const Mesh*> primitive_of_label;
+  std::unordered_map<const Mesh*, int> geometry_of;
+  std::unordered_map<std::uint64_t, int> mesh_of;  // label << 32 | material
+  std::vector<std::size_t> children;               // per variant
+  std::size_t next_node = 0;
+  JsonText nodes;  // plain: the "nodes" array, drained into nodes_spill
+  SpillFile nodes_spill;
+  std::vector<InstanceGroup> groups;  // instancing: all variants' groups in order
+  std::vector<VariantHead> heads;     // instancing
+  std::vector<int> group_of_mesh;     // instancing: within the current variant
+  std::size_t instances = 0;
+  SpillFile translations, rotations, scales;  // instancing: floats, little-endian hosts
+
+  // The mesh of a terminal: meshes and geometry numbered in order of first use.
+  int mesh_for(const Terminal& t) {
+    const std::uint32_t material = materials.intern(t, labels);  // also checks the label
+    const std::uint64_t key = std::uint64_t{t.label} << 32 | material;
+    auto [it, fresh] = mesh_of.try_emplace(key, static_cast<int>(meshes.size()));
+    if (fresh) {
+      const std::string& label = labels[t.label];
+      const Mesh*& primitive = primitive_of_label[t.label];
+      if (primitive == nullptr) {
+        primitive = library.find(label);
+        if (primitive == nullptr) primitive = &library.box();
       }
+      auto [g, new_geometry] = geometry_of.try_emplace(primitive, static_cast<int>(geometries.size()));
+      if (new_geometry) geometries.push_back(add_geometry(*primitive, buffer));
+      meshes.push_back({t.coloured ? label + " " + materials.materials()[material].name : label, g->second, material});
     }
-    write_scene_list(json);
-    write_meshes(json);
-    write_materials(json);
-    buffer_.write(json, uri);
-    write_nodes(json);  // last: the bulk of the text, written in one pass
-    json.close_object();
-    return json.take();
+    return it->second;
   }
 
-  const std::string& binary() { return buffer_.finish(); }
-
- private:
-  // The mesh of each terminal, meshes and geometry in order of first use.
-  void assign_meshes() {
-    std::vector<const Mesh*> primitive_of_label(scene_.labels.size(), nullptr);
-    std::unordered_map<const Mesh*, int> geometry_of;
-    std::unordered_map<std::uint64_t, int> mesh_of;  // label << 32 | material
-    for (const Variant& variant : scene_.variants) {
-      for (const Terminal& t : variant.terminals) {
-        const std::uint32_t material = materials_.index_of(t);  // also checks the label
-        const std::uint64_t key = std::uint64_t{t.label} << 32 | material;
-        auto [it, fresh] = mesh_of.try_emplace(key, static_cast<int>(meshes_.size()));
-        if (fresh) {
-          const std::string& label = scene_.labels[t.label];
-          const Mesh*& primitive = primitive_of_label[t.label];
-          if (primitive == nullptr) {
-            primitive = library_.find(label);
-            if (primitive == nullptr) primitive = &library_.box();
-          }
-          auto [g, new_geometry] = geometry_of.try_emplace(primitive, static_cast<int>(geometries_.size()));
-          if (new_geometry) geometries_.push_back(add_geometry(*primitive, buffer_));
-          meshes_.push_back({t.coloured ? label + " " + materials_.materials()[material].name : label, g->second,
-                             material});
-        }
-        mesh_of_terminal_.push_back(it->second);
-      }
+  void add_plain(const Variant& variant) {
+    const std::size_t n = variant.terminals.size();
+    nodes.open_object().field("name", variant.name);
+    if (variant.offset != glm::dvec3(0.0)) {
+      nodes.key("translation").numbers(std::array<double, 3>{variant.offset.x, variant.offset.y, variant.offset.z});
     }
+    if (n > 0) {  // a node's children list must not be empty
+      nodes.key("children").open_array();
+      for (std::size_t c = 1; c <= n; ++c) nodes.integer(static_cast<std::int64_t>(next_node + c));
+      nodes.close_array();
+    }
+    nodes.close_object();
+    for (const Terminal& t : variant.terminals) {
+      const int mesh = mesh_for(t);
+      nodes.open_object().field("name", labels[t.label]).field("mesh", mesh);
+      nodes.key("matrix").numbers(scope_matrix(t.scope)).close_object();
+      if (nodes.text().size() >= kNodesPiece) drain_nodes();
+    }
+    children.push_back(n);
+    next_node += 1 + n;
+    drain_nodes();
   }
 
-  // Instancing: each variant's terminals sorted (stably) by mesh in order of
-  // first use, their transforms in three views (T, R, S) that every group's
-  // accessors slice.
-  void gather_instances() {
-    const std::size_t total = mesh_of_terminal_.size();
-    if (total == 0) {
-      groups_per_variant_.assign(scene_.variants.size(), 0);
-      return;
-    }
-    // The transforms go straight into the buffer (about 40 bytes a
-    // terminal: a thousand city blocks hold two million).
-    const int t = buffer_.reserve_view(total * 12, kNoTarget);
-    const int r = buffer_.reserve_view(total * 16, kNoTarget);
-    const int s = buffer_.reserve_view(total * 12, kNoTarget);
-    float* translations = buffer_.floats(t);
-    float* rotations = buffer_.floats(r);
-    float* scales = buffer_.floats(s);
-    std::size_t written = 0;  // instances so far
-    std::vector<int> group_of_mesh(meshes_.size(), -1);
-    std::size_t next = 0;  // index into mesh_of_terminal_
-    for (const Variant& variant : scene_.variants) {
-      const std::size_t first_group = groups_.size();
-      std::vector<std::vector<std::uint32_t>> members;
-      for (std::size_t i = 0; i < variant.terminals.size(); ++i) {
-        const int mesh = mesh_of_terminal_[next + i];
-        int& group = group_of_mesh[static_cast<std::size_t>(mesh)];
-        if (group < static_cast<int>(first_group)) {
-          group = static_cast<int>(groups_.size());
-          groups_.push_back({mesh, -1, -1, -1});
-          members.emplace_back();
-        }
-        members[static_cast<std::size_t>(group) - first_group].push_back(static_cast<std::uint32_t>(i));
+  // A building of a million terminals is not held as text either.
+  static constexpr std::size_t kNodesPiece = 1 << 20;
+  void drain_nodes() {
+    nodes_spill.append(nodes.text());
+    nodes.clear_text();
+  }
+
+  // The variant's terminals sorted (stably) by mesh in order of first use.
+  void add_instanced(const Variant& variant) {
+    const std::size_t first_group = groups.size();
+    std::vector<std::vector<std::uint32_t>> members;
+    for (std::size_t i = 0; i < variant.terminals.size(); ++i) {
+      const auto mesh = static_cast<std::size_t>(mesh_for(variant.terminals[i]));
+      if (group_of_mesh.size() <= mesh) group_of_mesh.resize(mesh + 1, -1);
+      int& group = group_of_mesh[mesh];
+      if (group < static_cast<int>(first_group)) {
+        group = static_cast<int>(groups.size());
+        groups.push_back({static_cast<int>(mesh), 0, 0});
+        members.emplace_back();
       }
-      for (std::size_t k = 0; k < members.size(); ++k) {
-        InstanceGroup& g = groups_[first_group + k];
-        const std::size_t count = members[k].size();
-        g.translation = buffer_.add_accessor({t, written * 12, kFloat, "VEC3", count, {}, {}});
-        g.rotation = buffer_.add_accessor({r, written * 16, kFloat, "VEC4", count, {}, {}});
-        g.scale = buffer_.add_accessor({s, written * 12, kFloat, "VEC3", count, {}, {}});
-        for (const std::uint32_t i : members[k]) {
-          write_instance(variant.terminals[i].scope, translations + 3 * written, rotations + 4 * written,
-                         scales + 3 * written);
-          ++written;
-        }
-      }
-      groups_per_variant_.push_back(groups_.size() - first_group);
-      next += variant.terminals.size();
+      members[static_cast<std::size_t>(group) - first_group].push_back(static_cast<std::uint32_t>(i));
     }
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      InstanceGroup& g = groups[first_group + k];
+      g.first = instances;
+      g.count = members[k].size();
+      for (const std::uint32_t i : members[k]) {
+        float t[3], r[4], s[3];
+        write_instance(variant.terminals[i].scope, t, r, s);
+        translations.append(std::string_view(reinterpret_cast<const char*>(t), sizeof t));
+        rotations.append(std::string_view(reinterpret_cast<const char*>(r), sizeof r));
+        scales.append(std::string_view(reinterpret_cast<const char*>(s), sizeof s));
+        ++instances;
+      }
+    }
+    const std::size_t n = groups.size() - first_group;
+    heads.push_back({variant.name, variant.offset, n});
+    children.push_back(n);
   }
 
   // T, R, S of a scope: frame * diag(size) = rotation * diag(scale). A
@@ -373,28 +400,67 @@ class Document {
     for (int i = 0; i < 4; ++i) rotation[i] = static_cast<float>(xyzw[i]);
   }
 
+  // The instances' views (after the geometry's) and their accessors: each
+  // group slices the three views.
+  std::vector<std::array<int, 3>> number_instances() {
+    std::vector<std::array<int, 3>> accessors;
+    if (instances == 0) return accessors;
+    const int t = buffer.add_outside_view(instances * 12, kNoTarget);
+    const int r = buffer.add_outside_view(instances * 16, kNoTarget);
+    const int s = buffer.add_outside_view(instances * 12, kNoTarget);
+    for (const InstanceGroup& g : groups) {
+      accessors.push_back({buffer.add_accessor({t, g.first * 12, kFloat, "VEC3", g.count, {}, {}}),
+                           buffer.add_accessor({r, g.first * 16, kFloat, "VEC4", g.count, {}, {}}),
+                           buffer.add_accessor({s, g.first * 12, kFloat, "VEC3", g.count, {}, {}})});
+    }
+    return accessors;
+  }
+
+  // The JSON document after `prefix` bytes of room, up to where the plain
+  // nodes go (the text then ends in `"nodes":`), or whole when there are
+  // none to splice in. The buffer is referred to by uri when given.
+  std::string head(const std::string* uri, std::size_t prefix, bool& nodes_follow) {
+    const std::vector<std::array<int, 3>> instance_accessors = number_instances();
+    JsonText json(prefix);
+    json.open_object();
+    json.key("asset").open_object().field("generator", "Vernacular").field("version", "2.0").close_object();
+    if (options.instancing) {
+      for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
+        json.key(list).open_array().string("EXT_mesh_gpu_instancing").close_array();
+      }
+    }
+    write_scene_list(json);
+    write_meshes(json);
+    write_materials(json);
+    buffer.write(json, uri);
+    nodes_follow = !options.instancing && !children.empty();
+    if (nodes_follow) {
+      json.key("nodes");
+      return json.take();
+    }
+    if (options.instancing && !children.empty()) write_instanced_nodes(json, instance_accessors);
+    json.close_object();
+    return json.take();
+  }
+
   void write_scene_list(JsonText& json) const {
     json.field("scene", 0).key("scenes").open_array().open_object();
-    if (!scene_.variants.empty()) {  // a scene's node list must not be empty
+    if (!children.empty()) {  // a scene's node list must not be empty
       json.key("nodes").open_array();
-      for (std::size_t v = 0, node = 0; v < scene_.variants.size(); ++v) {
+      for (std::size_t v = 0, node = 0; v < children.size(); ++v) {
         json.integer(static_cast<std::int64_t>(node));
-        node += 1 + children(v);
+        node += 1 + children[v];
       }
       json.close_array();
     }
     json.close_object().close_array();
   }
 
-  std::size_t children(std::size_t variant) const {
-    return options_.instancing ? groups_per_variant_[variant] : scene_.variants[variant].terminals.size();
-  }
-
   void write_meshes(JsonText& json) const {
-    if (meshes_.empty()) return;
+    if (meshes.empty()) return;
     json.key("meshes").open_array();
-    for (const MeshUse& m : meshes_) {
-      const Geometry& g = geometries_[static_cast<std::size_t>(m.geometry)];
+    for (const MeshUse& m : meshes) {
+      const Geometry& g = geometries[static_cast<std::size_t>(m.geometry)];
       json.open_object().field("name", m.name).key("primitives").open_array().open_object();
       json.key("attributes").open_object().field("NORMAL", g.normal).field("POSITION", g.position);
       if (g.uv >= 0) json.field("TEXCOORD_0", g.uv);
@@ -406,9 +472,9 @@ class Document {
   }
 
   void write_materials(JsonText& json) const {
-    if (materials_.materials().empty()) return;
+    if (materials.materials().empty()) return;
     json.key("materials").open_array();
-    for (const Material& m : materials_.materials()) {
+    for (const Material& m : materials.materials()) {
       const std::array<double, 3> c = colour_components(m.colour);
       json.open_object().field("name", m.name).key("pbrMetallicRoughness").open_object();
       json.key("baseColorFactor").numbers(std::array<double, 4>{c[0], c[1], c[2], 1.0});
@@ -419,71 +485,118 @@ class Document {
     json.close_array();
   }
 
-  void write_nodes(JsonText& json) const {
-    if (scene_.variants.empty()) return;
+  void write_instanced_nodes(JsonText& json, const std::vector<std::array<int, 3>>& accessors) const {
     json.key("nodes").open_array();
-    std::size_t node = 0, terminal = 0, group = 0;
-    for (std::size_t v = 0; v < scene_.variants.size(); ++v) {
-      const Variant& variant = scene_.variants[v];
-      json.open_object().field("name", variant.name);
-      if (variant.offset != glm::dvec3(0.0)) {
-        json.key("translation").numbers(std::array<double, 3>{variant.offset.x, variant.offset.y, variant.offset.z});
-      }
-      const std::size_t n = children(v);
-      if (n > 0) {  // a node's children list must not be empty
+    std::size_t node = 0, group = 0;
+    for (const VariantHead& v : heads) {
+      json.open_object().field("name", v.name);
+      if (v.offset != glm::dvec3(0.0)) json.key("translation").numbers(std::array<double, 3>{v.offset.x, v.offset.y, v.offset.z});
+      if (v.groups > 0) {  // a node's children list must not be empty
         json.key("children").open_array();
-        for (std::size_t c = 1; c <= n; ++c) json.integer(static_cast<std::int64_t>(node + c));
+        for (std::size_t c = 1; c <= v.groups; ++c) json.integer(static_cast<std::int64_t>(node + c));
         json.close_array();
       }
       json.close_object();
-      if (options_.instancing) {
-        for (std::size_t g = 0; g < n; ++g, ++group) write_instanced_node(json, groups_[group]);
-      } else {
-        for (const Terminal& t : variant.terminals) {
-          json.open_object().field("name", scene_.labels[t.label]).field("mesh", mesh_of_terminal_[terminal++]);
-          json.key("matrix").numbers(scope_matrix(t.scope)).close_object();
-        }
+      for (std::size_t k = 0; k < v.groups; ++k, ++group) {
+        const InstanceGroup& g = groups[group];
+        const std::array<int, 3>& a = accessors[group];
+        json.open_object().field("name", meshes[static_cast<std::size_t>(g.mesh)].name).field("mesh", g.mesh);
+        json.key("extensions").open_object().key("EXT_mesh_gpu_instancing").open_object();
+        json.key("attributes").open_object();
+        json.field("ROTATION", a[1]).field("SCALE", a[2]).field("TRANSLATION", a[0]);
+        json.close_object().close_object().close_object().close_object();
       }
-      node += 1 + n;
+      node += 1 + v.groups;
     }
     json.close_array();
   }
 
-  void write_instanced_node(JsonText& json, const InstanceGroup& g) const {
-    json.open_object().field("name", meshes_[static_cast<std::size_t>(g.mesh)].name).field("mesh", g.mesh);
-    json.key("extensions").open_object().key("EXT_mesh_gpu_instancing").open_object();
-    json.key("attributes").open_object();
-    json.field("ROTATION", g.rotation).field("SCALE", g.scale).field("TRANSLATION", g.translation);
-    json.close_object().close_object().close_object().close_object();
+  // The plain nodes' text after head(): the array, then the document's end.
+  void nodes_text(const std::function<void(std::string_view)>& write) {
+    nodes.close_array();
+    drain_nodes();
+    nodes_spill.read(write);
+    write("}");
   }
 
-  const Scene& scene_;
-  const PrimitiveLibrary& library_;
-  GltfOptions options_;
-  MaterialTable materials_;
-  BinaryBuffer buffer_;
-  std::vector<Geometry> geometries_;
-  std::vector<MeshUse> meshes_;
-  std::vector<int> mesh_of_terminal_;  // all variants' terminals in order
-  std::vector<InstanceGroup> groups_;  // instancing: all variants' groups in order
-  std::vector<std::size_t> groups_per_variant_;
+  std::uint64_t nodes_size() const { return nodes_spill.size() + nodes.text().size() + 1 /* ] */ + 1 /* } */; }
+
+  // The binary buffer: geometry, then the instances' transforms.
+  void binary(const std::function<void(std::string_view)>& write) {
+    write(buffer.finish());
+    translations.read(write);
+    rotations.read(write);
+    scales.read(write);
+  }
 };
+
+GltfStream::GltfStream(std::vector<std::string> labels, const PrimitiveLibrary& library, GltfOptions options,
+                       std::optional<std::filesystem::path> spill_folder, std::string owner)
+    : state_(std::make_unique<State>(std::move(labels), library, options, spill_folder, owner)) {}
+
+GltfStream::~GltfStream() = default;
+GltfStream::GltfStream(GltfStream&&) noexcept = default;
+
+void GltfStream::add(const Variant& variant) {
+  if (state_->options.instancing)
+    state_->add_instanced(variant);
+  else
+    state_->add_plain(variant);
+}
+
+std::size_t GltfStream::held_bytes() const {
+  const State& s = *state_;
+  return s.nodes.capacity() + s.nodes_spill.held_bytes() + s.translations.held_bytes() + s.rotations.held_bytes() +
+         s.scales.held_bytes() + s.buffer.held_bytes();
+}
+
+void GltfStream::glb(const std::function<void(std::string_view)>& write) {
+  State& s = *state_;
+  bool nodes_follow = false;
+  std::string head = s.head(nullptr, kGlbJsonOffset, nodes_follow);
+  const std::uint64_t json = head.size() - kGlbJsonOffset + (nodes_follow ? s.nodes_size() : 0);
+  const std::uint64_t bin = s.buffer.size();
+  head.replace(0, kGlbJsonOffset, glb_header(json, bin));
+  write(head);
+  if (nodes_follow) s.nodes_text(write);
+  write(glb_between(json, bin));
+  if (bin != 0) s.binary(write);
+}
+
+void GltfStream::gltf(const std::function<void(std::string_view)>& write) {
+  State& s = *state_;
+  std::string bytes;
+  s.binary([&](std::string_view piece) { bytes.append(piece); });
+  const std::string uri = "data:application/octet-stream;base64," + base64(bytes);
+  bytes = {};
+  bool nodes_follow = false;
+  write(s.head(&uri, 0, nodes_follow));
+  if (nodes_follow) s.nodes_text(write);
+  write("\n");
+}
+
+namespace {
+
+GltfStream stream_of(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options,
+                     std::optional<std::filesystem::path> folder, const std::string& owner) {
+  GltfStream stream(scene.labels, library, options, std::move(folder), owner);
+  for (const Variant& v : scene.variants) stream.add(v);
+  return stream;
+}
 
 }  // namespace
 
 std::string glb_bytes(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options) {
-  Document document(scene, library, options);
-  const std::string& bin = document.binary();  // padded to 4 bytes
-  std::string file = glb_head(document.json(nullptr, kGlbJsonOffset), bin);
-  file.append(bin);
+  GltfStream stream = stream_of(scene, library, options, std::nullopt, "glTF output");
+  std::string file;
+  stream.glb([&](std::string_view piece) { file.append(piece); });
   return file;
 }
 
 std::string gltf_text(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options) {
-  Document document(scene, library, options);
-  const std::string uri = "data:application/octet-stream;base64," + base64(document.binary());
-  std::string text = document.json(&uri);
-  text += '\n';
+  GltfStream stream = stream_of(scene, library, options, std::nullopt, "glTF output");
+  std::string text;
+  stream.gltf([&](std::string_view piece) { text.append(piece); });
   return text;
 }
 
@@ -496,21 +609,28 @@ void write_gltf(const Scene& scene, const PrimitiveLibrary& library, const std::
 
 void write_gltf(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& path,
                 GltfOptions options, OutputFiles& outputs) {
+  check_gltf_path(path);
+  GltfStream stream = stream_of(scene, library, options, path.parent_path(), path.string());
+  write_gltf(stream, path, outputs);
+}
+
+void check_gltf_path(const std::filesystem::path& path) {
   const std::string ext = path.extension().string();
-  if (ext == ".glb" || ext == ".GLB") {
-    // Head and binary chunk written one after the other: a thousand city
-    // blocks' buffer is not copied into one string first.
-    Document document(scene, library, options);
-    const std::string& bin = document.binary();
-    const std::string head = glb_head(document.json(nullptr, kGlbJsonOffset), bin);
-    const std::string_view pieces[] = {head, bin};
-    outputs.stage(path, pieces);
-  } else if (ext == ".gltf" || ext == ".GLTF") {
-    outputs.stage(path, gltf_text(scene, library, options));
-  } else {
+  if (ext != ".glb" && ext != ".GLB" && ext != ".gltf" && ext != ".GLTF")
     fail(ErrorKind::Usage, path.string(), {}, "a glTF file ends in .glb (binary) or .gltf (text)",
          "name the output file.glb or file.gltf");
-  }
+}
+
+void write_gltf(GltfStream& stream, const std::filesystem::path& path, OutputFiles& outputs) {
+  check_gltf_path(path);
+  const std::string ext = path.extension().string();
+  OutputFile file = outputs.open(path);
+  const auto write = [&](std::string_view piece) { file.write(piece); };
+  if (ext == ".glb" || ext == ".GLB")
+    stream.glb(write);
+  else
+    stream.gltf(write);
+  file.close();
 }
 
 }  // namespace vern

@@ -14,11 +14,17 @@
 //     scales (floats). Files are several times smaller and faster to write
 //     and to draw; the extension is marked required, so viewers without it
 //     refuse the file rather than show nothing.
-// Same scene, same bytes.
+// Same scene, same bytes, whether given whole or variant by variant
+// (GltfStream: what `generate` does, so that its memory does not grow with
+// the number of buildings).
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "forward/primitive_library.hpp"
 #include "forward/terminal.hpp"
@@ -29,6 +35,42 @@ namespace vern {
 struct GltfOptions {
   bool instancing = false;  // EXT_mesh_gpu_instancing layout (see above)
 };
+
+// A glTF document given its variants one at a time, to be written once
+// (glb or gltf, then write_gltf). What it holds does not grow with the
+// number of variants but for a few bytes each: the plain nodes and the
+// instances' transforms wait in temporary files in spill_folder (in
+// memory when none is given); `owner` names the output in errors.
+// The library is kept by reference: it must outlive the stream.
+class GltfStream {
+ public:
+  GltfStream(std::vector<std::string> labels, const PrimitiveLibrary& library, GltfOptions options,
+             std::optional<std::filesystem::path> spill_folder, std::string owner);
+  GltfStream(GltfStream&&) noexcept;
+  ~GltfStream();
+
+  // Throws vern::Error (Internal) for a terminal's label outside `labels`.
+  void add(const Variant& variant);
+
+  // The file in pieces, once: a GLB (throws vern::Error Limit past 4 GiB),
+  // or glTF text with the buffer as a base64 data URI (held whole).
+  void glb(const std::function<void(std::string_view)>& write);
+  void gltf(const std::function<void(std::string_view)>& write);
+
+  // Bytes held in memory for the variants (a test's measure of flatness).
+  std::size_t held_bytes() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// Throws vern::Error (Usage) unless the path ends in .glb or .gltf.
+void check_gltf_path(const std::filesystem::path& path);
+
+// Stages the stream's file, .glb or .gltf by the extension, among a run's
+// outputs. Throws as write_gltf below.
+void write_gltf(GltfStream& stream, const std::filesystem::path& path, OutputFiles& outputs);
 
 // The scene as a GLB file's bytes.
 std::string glb_bytes(const Scene& scene, const PrimitiveLibrary& library, GltfOptions options = {});

@@ -50,6 +50,11 @@ class JsonText {
   // The prefix and the text; the writer is empty afterwards.
   std::string take();
   void reserve(std::size_t bytes);
+  // Forgets the text written so far (once the caller has kept it), not
+  // which containers are open: a long array is written out in pieces.
+  void clear_text() { size_ = prefix_; }
+  // Bytes the writer holds (what the text has needed at most).
+  std::size_t capacity() const { return buffer_.size(); }
 
  private:
   void before_value();

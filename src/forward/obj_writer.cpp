@@ -27,16 +27,6 @@ void append_vec3(std::string& out, const char* keyword, const glm::dvec3& v) {
   out += '\n';
 }
 
-// The mesh each label inserts: the library's, or its box for unknown names.
-std::vector<const Mesh*> meshes_by_label(const Scene& scene, const PrimitiveLibrary& library) {
-  std::vector<const Mesh*> meshes(scene.labels.size());
-  for (std::size_t i = 0; i < meshes.size(); ++i) {
-    const Mesh* m = library.find(scene.labels[i]);
-    meshes[i] = m != nullptr ? m : &library.box();
-  }
-  return meshes;
-}
-
 // Maps a unit-box normal into world space for a scope. A scope stretches
 // its mesh by size along its frame, so normals follow the inverse transpose
 // frame * diag(1/size); scaled by the determinant that is
@@ -65,82 +55,9 @@ struct NormalMap {
   }
 };
 
-std::size_t estimated_size(const Scene& scene, const std::vector<const Mesh*>& meshes) {
-  std::size_t bytes = 256;
-  for (const Variant& v : scene.variants) {
-    bytes += v.name.size() + 4;
-    for (const Terminal& t : v.terminals) {
-      const Mesh& m = *meshes[t.label];
-      // about 3 numbers of up to 20 characters per vertex and normal, short uv numbers
-      bytes += 60 * (m.positions.size() + m.normals.size()) + 24 * m.uvs.size() + 24 * m.corners.size() +
-               4 * m.face_sizes.size() + 2 * scene.labels[t.label].size() + 32;
-    }
-  }
-  return bytes;
-}
-
-}  // namespace
-
-std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const std::string& mtl_file_name) {
-  const MaterialTable materials(scene);  // also checks every terminal's label
-  const std::vector<const Mesh*> meshes = meshes_by_label(scene, library);
-
-  std::string out;
-  out.reserve(estimated_size(scene, meshes));
-  out += "# Written by Vernacular: one object per terminal, named by its label.\n";
-  if (!mtl_file_name.empty()) out += "mtllib " + mtl_file_name + "\n";
-
-  std::uint64_t positions = 0, uvs = 0, normals = 0;  // written so far
-  for (const Variant& variant : scene.variants) {
-    out += "# " + variant.name + "\n";
-    for (const Terminal& t : variant.terminals) {
-      const Mesh& mesh = *meshes[t.label];
-      out += "o ";
-      out += scene.labels[t.label];
-      out += "\nusemtl ";
-      out += materials.materials()[materials.index_of(t)].name;
-      out += '\n';
-      for (const glm::dvec3& p : mesh.positions) append_vec3(out, "v", t.scope.to_world(p) + variant.offset);
-      for (const glm::dvec2& uv : mesh.uvs) {
-        out += "vt ";
-        append_number(out, uv.x);
-        out += ' ';
-        append_number(out, uv.y);
-        out += '\n';
-      }
-      const NormalMap to_world(t.scope);
-      for (const glm::dvec3& n : mesh.normals) append_vec3(out, "vn", to_world(n));
-
-      std::size_t corner = 0;
-      for (std::uint32_t size : mesh.face_sizes) {
-        out += 'f';
-        for (std::uint32_t k = 0; k < size; ++k, ++corner) {
-          const Mesh::Corner& c = mesh.corners[corner];
-          out += ' ';
-          append_index(out, positions + c.position + 1);
-          if (c.uv != Mesh::kNone || c.normal != Mesh::kNone) {
-            out += '/';
-            if (c.uv != Mesh::kNone) append_index(out, uvs + c.uv + 1);
-            if (c.normal != Mesh::kNone) {
-              out += '/';
-              append_index(out, normals + c.normal + 1);
-            }
-          }
-        }
-        out += '\n';
-      }
-      positions += mesh.positions.size();
-      uvs += mesh.uvs.size();
-      normals += mesh.normals.size();
-    }
-  }
-  return out;
-}
-
-std::string mtl_text(const Scene& scene) {
-  const MaterialTable materials(scene);
+std::string mtl_text_of(const std::vector<Material>& materials) {
   std::string out = "# Written by Vernacular: one material per label or colour.\n";
-  for (const Material& m : materials.materials()) {
+  for (const Material& m : materials) {
     out += "\nnewmtl " + m.name + "\n";
     // A matte surface in the material's colour.
     const std::array<double, 3> c = colour_components(m.colour);
@@ -150,17 +67,103 @@ std::string mtl_text(const Scene& scene) {
   return out;
 }
 
+// Text is passed on once this much has gathered.
+constexpr std::size_t kPiece = 1 << 20;
+
+}  // namespace
+
+ObjStream::ObjStream(std::vector<std::string> labels, const PrimitiveLibrary& library, const std::string& mtl_file_name,
+                     std::function<void(std::string_view)> write)
+    : labels_(std::move(labels)), materials_(labels_.size()), write_(std::move(write)) {
+  // The mesh each label inserts: the library's, or its box for unknown names.
+  meshes_.resize(labels_.size());
+  for (std::size_t i = 0; i < meshes_.size(); ++i) {
+    const Mesh* m = library.find(labels_[i]);
+    meshes_[i] = m != nullptr ? m : &library.box();
+  }
+  out_ += "# Written by Vernacular: one object per terminal, named by its label.\n";
+  if (!mtl_file_name.empty()) out_ += "mtllib " + mtl_file_name + "\n";
+}
+
+void ObjStream::add(const Variant& variant) {
+  std::string& out = out_;
+  out += "# " + variant.name + "\n";
+  for (const Terminal& t : variant.terminals) {
+    const std::uint32_t material = materials_.intern(t, labels_);  // also checks the label
+    const Mesh& mesh = *meshes_[t.label];
+    out += "o ";
+    out += labels_[t.label];
+    out += "\nusemtl ";
+    out += materials_.materials()[material].name;
+    out += '\n';
+    for (const glm::dvec3& p : mesh.positions) append_vec3(out, "v", t.scope.to_world(p) + variant.offset);
+    for (const glm::dvec2& uv : mesh.uvs) {
+      out += "vt ";
+      append_number(out, uv.x);
+      out += ' ';
+      append_number(out, uv.y);
+      out += '\n';
+    }
+    const NormalMap to_world(t.scope);
+    for (const glm::dvec3& n : mesh.normals) append_vec3(out, "vn", to_world(n));
+
+    std::size_t corner = 0;
+    for (std::uint32_t size : mesh.face_sizes) {
+      out += 'f';
+      for (std::uint32_t k = 0; k < size; ++k, ++corner) {
+        const Mesh::Corner& c = mesh.corners[corner];
+        out += ' ';
+        append_index(out, positions_ + c.position + 1);
+        if (c.uv != Mesh::kNone || c.normal != Mesh::kNone) {
+          out += '/';
+          if (c.uv != Mesh::kNone) append_index(out, uvs_ + c.uv + 1);
+          if (c.normal != Mesh::kNone) {
+            out += '/';
+            append_index(out, normals_ + c.normal + 1);
+          }
+        }
+      }
+      out += '\n';
+    }
+    positions_ += mesh.positions.size();
+    uvs_ += mesh.uvs.size();
+    normals_ += mesh.normals.size();
+    if (out.size() >= kPiece) flush();
+  }
+}
+
+void ObjStream::flush() {
+  if (!out_.empty()) write_(out_);
+  out_.clear();
+}
+
+std::string ObjStream::mtl_text() const { return mtl_text_of(materials_.materials()); }
+
+std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const std::string& mtl_file_name) {
+  std::string text;
+  ObjStream stream(scene.labels, library, mtl_file_name, [&](std::string_view piece) { text.append(piece); });
+  for (const Variant& v : scene.variants) stream.add(v);
+  stream.flush();
+  return text;
+}
+
+std::string mtl_text(const Scene& scene) { return mtl_text_of(MaterialTable(scene).materials()); }
+
 std::filesystem::path mtl_path_for(const std::filesystem::path& obj_path) {
   return std::filesystem::path(obj_path).replace_extension(".mtl");
 }
 
-void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path,
-               OutputFiles& outputs) {
-  const std::filesystem::path mtl_path = mtl_path_for(obj_path);
-  if (mtl_path == obj_path) {
+void check_obj_path(const std::filesystem::path& obj_path) {
+  if (mtl_path_for(obj_path) == obj_path) {
     fail(ErrorKind::Usage, obj_path.string(), {}, "the OBJ file would overwrite its own MTL file",
          "give the output an .obj extension");
   }
+}
+
+void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path,
+               OutputFiles& outputs) {
+  check_obj_path(obj_path);
+  const std::filesystem::path mtl_path = mtl_path_for(obj_path);
   outputs.stage(mtl_path, mtl_text(scene));
   outputs.stage(obj_path, obj_text(scene, library, mtl_path.filename().string()));
 }

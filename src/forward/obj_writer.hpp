@@ -8,14 +8,49 @@
 // otherwise (see palette.hpp). Same scene, same bytes.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
+#include <vector>
 
+#include "forward/palette.hpp"
 #include "forward/primitive_library.hpp"
 #include "forward/terminal.hpp"
 #include "graph/atomic_file.hpp"
 
 namespace vern {
+
+// The OBJ text written variant by variant into `write` (in pieces of
+// about a megabyte), so that `generate` holds one building at a time
+// however many it writes; the MTL text, which names the materials used,
+// comes once all variants are in.
+// The library is kept by reference: it must outlive the stream.
+class ObjStream {
+ public:
+  ObjStream(std::vector<std::string> labels, const PrimitiveLibrary& library, const std::string& mtl_file_name,
+            std::function<void(std::string_view)> write);
+  // Throws vern::Error (Internal) for a terminal's label outside `labels`.
+  void add(const Variant& variant);
+  // Writes what is still held; call after the last add().
+  void flush();
+  std::string mtl_text() const;
+  // Bytes of text held (a test's measure of flatness).
+  std::size_t held_bytes() const { return out_.capacity(); }
+
+ private:
+  std::vector<std::string> labels_;
+  std::vector<const Mesh*> meshes_;  // by label
+  MaterialTable materials_;
+  std::function<void(std::string_view)> write_;
+  std::string out_;
+  std::uint64_t positions_ = 0, uvs_ = 0, normals_ = 0;  // written so far
+};
+
+// Throws vern::Error (Usage) when the path does not end in .obj (its MTL
+// file would be itself).
+void check_obj_path(const std::filesystem::path& obj_path);
 
 // The OBJ text; it names mtl_file_name in its `mtllib` line (omitted when
 // empty). Labels the library does not know are written as its box().

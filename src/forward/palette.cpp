@@ -113,27 +113,31 @@ std::array<double, 3> colour_components(Rgb colour) {
   return out;
 }
 
-MaterialTable::MaterialTable(const Scene& scene) : by_label_(scene.labels.size(), kUnused) {
-  std::map<std::string, std::uint32_t, std::less<>> by_name;  // labels may sanitise alike
-  auto intern = [&](Material m) {
-    const auto [it, fresh] = by_name.try_emplace(m.name, static_cast<std::uint32_t>(materials_.size()));
+MaterialTable::MaterialTable(const Scene& scene) : MaterialTable(scene.labels.size()) {
+  for (const Variant& v : scene.variants)
+    for (const Terminal& t : v.terminals) intern(t, scene.labels);
+}
+
+MaterialTable::MaterialTable(std::size_t labels) : by_label_(labels, kUnused) {}
+
+std::uint32_t MaterialTable::intern(const Terminal& t, const std::vector<std::string>& labels) {
+  if (t.label >= labels.size() || t.label >= by_label_.size()) {
+    throw Error(ErrorKind::Internal, "error: a terminal's label " + std::to_string(t.label) +
+                                         " is outside the scene's label table");
+  }
+  auto named = [&](Material m) {
+    const auto [it, fresh] = by_name_.try_emplace(m.name, static_cast<std::uint32_t>(materials_.size()));
     if (fresh) materials_.push_back(std::move(m));
     return it->second;
   };
-  for (const Variant& v : scene.variants) {
-    for (const Terminal& t : v.terminals) {
-      if (t.label >= scene.labels.size()) {
-        throw Error(ErrorKind::Internal, "error: a terminal's label " + std::to_string(t.label) +
-                                             " is outside the scene's label table");
-      }
-      if (t.coloured) {
-        const std::uint32_t key = colour_key(t.colour);
-        if (!by_colour_.contains(key)) by_colour_.emplace(key, intern(terminal_material(t, {})));
-      } else if (by_label_[t.label] == kUnused) {
-        by_label_[t.label] = intern(terminal_material(t, scene.labels[t.label]));
-      }
-    }
+  if (t.coloured) {
+    const std::uint32_t key = colour_key(t.colour);
+    const auto it = by_colour_.find(key);
+    if (it != by_colour_.end()) return it->second;
+    return by_colour_.emplace(key, named(terminal_material(t, {}))).first->second;
   }
+  if (by_label_[t.label] == kUnused) by_label_[t.label] = named(terminal_material(t, labels[t.label]));
+  return by_label_[t.label];
 }
 
 std::uint32_t MaterialTable::index_of(const Terminal& t) const {

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -38,10 +39,17 @@ Material terminal_material(const Terminal& t, std::string_view label);
 std::array<double, 3> colour_components(Rgb colour);
 
 // The materials a scene uses, in order of first use, and which one each
-// terminal uses. Built once per write; lookups allocate nothing.
+// terminal uses. Built once per write (or as a streaming writer meets the
+// terminals); lookups allocate nothing.
 class MaterialTable {
  public:
   explicit MaterialTable(const Scene& scene);
+  // Empty, for scenes of this many labels, filled by intern().
+  explicit MaterialTable(std::size_t labels);
+
+  // Index into materials() of the terminal's material, added when new.
+  // Throws vern::Error (Internal) for a label outside `labels`.
+  std::uint32_t intern(const Terminal& t, const std::vector<std::string>& labels);
 
   const std::vector<Material>& materials() const { return materials_; }
 
@@ -50,6 +58,7 @@ class MaterialTable {
 
  private:
   std::vector<Material> materials_;
+  std::map<std::string, std::uint32_t, std::less<>> by_name_;  // labels may sanitise alike
   std::vector<std::uint32_t> by_label_;                         // uncoloured terminals
   std::unordered_map<std::uint32_t, std::uint32_t> by_colour_;  // 0xrrggbb -> index
 };

@@ -27,6 +27,22 @@ struct VariantOptions {
 // thread finished first), after all threads have stopped.
 std::vector<Derivation> derive_variants(const Grammar& grammar, const VariantOptions& options);
 
+// The same, up to `batch` variants at a time (fewer when they are large:
+// a batch holds some 64 MB of terminals, one variant per thread at least),
+// each given to take(index, ...) in index order once its batch is done, so
+// that only one batch is held (generate -n 5000 writes as it derives). The error thrown is the one
+// derive_variants throws; the variants before it have been taken.
+void derive_variants_in_order(const Grammar& grammar, const VariantOptions& options, std::uint32_t batch,
+                              const std::function<void(std::uint32_t, Derivation&&)>& take);
+
+// Each variant's start-scope size, as its derivation will have it, without
+// deriving. Throws the error derive_variants would throw when one of them
+// cannot be drawn.
+std::vector<glm::dvec3> start_sizes(const Grammar& grammar, const VariantOptions& options);
+
+// Where lay_out places variants of these start sizes.
+std::vector<glm::dvec3> layout_offsets(const std::vector<glm::dvec3>& sizes, double spacing);
+
 // Places derivations on a grid seen from above (columns along x, rows along
 // y, about square), each variant's start scope separated by `spacing`
 // metres, named variant_000, variant_001, ...

@@ -12,6 +12,7 @@
 
 #include "graph/error.hpp"
 #include "graph/interrupt_cleanup.hpp"
+#include "graph/write_all.hpp"
 
 namespace vern {
 
@@ -95,6 +96,12 @@ void OutputFiles::stage(const fs::path& path, std::string_view content) {
 }
 
 void OutputFiles::stage(const fs::path& path, std::span<const std::string_view> pieces) {
+  OutputFile file = open(path);
+  for (const std::string_view content : pieces) file.write(content);
+  file.close();
+}
+
+OutputFile OutputFiles::open(const fs::path& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) fail(ErrorKind::Io, path.string(), {}, "is a folder, not a file", "name a file to write");
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
@@ -103,21 +110,23 @@ void OutputFiles::stage(const fs::path& path, std::span<const std::string_view> 
   const int fd = ::mkstemp(temp.data());
   if (fd < 0) io_error(path, "cannot create a temporary file in " + folder.string(), errno);
   staged_.push_back({path, temp});  // removed by the destructor unless committed
-  for (const std::string_view content : pieces) {
-    std::size_t written = 0;
-    while (written < content.size()) {
-      const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
-      if (n < 0) {
-        if (errno == EINTR) continue;
-        const int err = errno;
-        ::close(fd);
-        io_error(path, "cannot write", err);
-      }
-      written += static_cast<std::size_t>(n);
-    }
-  }
-  ::fchmod(fd, output_mode(path));
-  if (::close(fd) != 0) io_error(path, "cannot write", errno);
+  return OutputFile(path, fd);
+}
+
+OutputFile::~OutputFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void OutputFile::write(std::string_view content) {
+  if (const int err = write_all(fd_, content)) io_error(destination_, "cannot write", err);
+}
+
+void OutputFile::close() {
+  if (fd_ < 0) return;
+  ::fchmod(fd_, output_mode(destination_));
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) io_error(destination_, "cannot write", errno);
 }
 
 void OutputFiles::commit() {

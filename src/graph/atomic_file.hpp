@@ -13,9 +13,34 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace vern {
+
+class OutputFiles;
+
+// One staged output being written piece by piece (OutputFiles::open): a
+// writer that produces more than it wants to hold streams into it.
+class OutputFile {
+ public:
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+  OutputFile(OutputFile&& other) noexcept : destination_(std::move(other.destination_)), fd_(std::exchange(other.fd_, -1)) {}
+  OutputFile& operator=(OutputFile&&) = delete;
+  ~OutputFile();
+
+  // Appends bytes. Throws vern::Error (Io) naming the destination.
+  void write(std::string_view bytes);
+  // Gives the file its mode and closes it; the destructor closes it too.
+  void close();
+
+ private:
+  friend class OutputFiles;
+  OutputFile(std::filesystem::path destination, int fd) : destination_(std::move(destination)), fd_(fd) {}
+  std::filesystem::path destination_;
+  int fd_ = -1;
+};
 
 // The outputs of one run, staged until commit().
 class OutputFiles {
@@ -32,6 +57,10 @@ class OutputFiles {
   // missing or not writable, or the disk is full.
   void stage(const std::filesystem::path& path, std::span<const std::string_view> pieces);
   void stage(const std::filesystem::path& path, std::string_view content);
+
+  // The same, the bytes given later through the returned file (closed
+  // before commit()). Throws as stage.
+  OutputFile open(const std::filesystem::path& path);
 
   // Renames every staged file over its destination, in the order staged.
   // Signals wait until it is done. When a rename fails, the destinations

@@ -766,7 +766,18 @@ class Splitter {
     std::string message = "objects " + describe_object(a) + " and " + describe_object(b) + " overlap by " + by +
                           " (along x, y, z)";
     if (count > 1) message += "; " + std::to_string(count - 1) + " more pair" + (count > 2 ? "s" : "") + " overlap";
-    fail_at(a, message, "inference needs non-overlapping parts; separate or merge these objects");
+    std::string hint = "inference needs non-overlapping parts; separate or merge these objects";
+    // An object of loose pieces that could not be told apart (their boxes
+    // meet) is one box, which may well be what overlaps.
+    for (const LabelledBox* box : {&a, &b}) {
+      if (box->loose_pieces > 1) {
+        hint = describe_object(*box) + " is " + std::to_string(box->loose_pieces) +
+               " loose pieces in one object: make each its own object (Blender: Edit Mode, Mesh > Separate > "
+               "By Loose Parts), then export again";
+        break;
+      }
+    }
+    fail_at(a, message, hint);
   }
 
   // The insides of boxes along an axis as half-open integer intervals:

@@ -31,4 +31,20 @@ bool derives_examples(const Grammar& g, const std::vector<Example>& examples, co
   return derives_examples(g, placed, check, options.threads, results);
 }
 
+bool check_passes(const Grammar& g, const std::vector<Example>& examples, double tolerance, unsigned threads) {
+  std::vector<char> derivable(examples.size(), 0);
+  parallel_for(examples.size(), threads, [&](std::size_t i) {
+    CheckOptions check;
+    check.tolerance = example_tolerance(examples[i], tolerance);
+    check.witness = false;
+    const Example placed = at_origin(examples[i]);
+    try {
+      derivable[i] = check_example(g, placed.boxes, example_size(placed), check).derivable;
+    } catch (const Error&) {
+      derivable[i] = 0;  // too many steps: not derivable as far as we know
+    }
+  });
+  return std::ranges::all_of(derivable, [](char d) { return d != 0; });
+}
+
 }  // namespace vern

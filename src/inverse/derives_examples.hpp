@@ -29,4 +29,9 @@ struct RewriteCheck {
 bool derives_examples(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
                       std::vector<CheckResult>& results);
 
+// What `check` says of each example with default options (or the given
+// tolerance, when > 0): each at its own origin, on its own extent, within
+// its own example_tolerance. True when every example is derivable.
+bool check_passes(const Grammar& g, const std::vector<Example>& examples, double tolerance, unsigned threads);
+
 }  // namespace vern

@@ -22,6 +22,7 @@
 #include "graph/number_format.hpp"
 #include "graph/out_of_memory.hpp"
 #include "inverse/gltf_files.hpp"
+#include "inverse/loose_parts.hpp"
 
 namespace vern {
 
@@ -50,33 +51,6 @@ Format format_of(const fs::path& path) {
        "export the building as OBJ (one object per part) or glTF (one named node per part)");
 }
 
-// Adds parts to an example: each one's box and positions, and the whole
-// mesh of the first part of each label.
-class PartAdder {
- public:
-  explicit PartAdder(Example& example) : example_(example) {}
-
-  LabelledBox& add(const std::string& name, std::uint32_t line, const Mesh& mesh) {
-    LabelledBox b;
-    b.label = strip_numeric_suffix(name);
-    b.min = mesh.min_corner();
-    b.max = mesh.max_corner();
-    b.object = name;
-    b.line = line;
-    if (labels_.insert(b.label).second) {
-      b.mesh = static_cast<std::uint32_t>(example_.meshes.size());
-      example_.meshes.push_back(mesh);
-    }
-    example_.positions.add(mesh.positions, b.min, b.max);
-    example_.boxes.push_back(std::move(b));
-    return example_.boxes.back();
-  }
-
- private:
-  Example& example_;
-  std::unordered_set<std::string> labels_;
-};
-
 std::string too_many_parts_hint(const ExampleLimits& limits) {
   return "raise the limit with --max-parts (now " + std::to_string(limits.max_parts) +
          "), or split the example into smaller buildings";
@@ -87,10 +61,58 @@ std::string too_many_faces_hint(const ExampleLimits& limits) {
          "), or simplify the part's mesh (a decimate modifier)";
 }
 
+// Adds parts to an example: each one's box and positions, and the whole
+// mesh of the first part of each label. An object of loose pieces whose
+// boxes are apart becomes one part per piece (loose_parts.hpp).
+class PartAdder {
+ public:
+  PartAdder(Example& example, const ExampleLimits& limits) : example_(example), limits_(limits) {}
+
+  // `object`: how messages name the part (default: its name).
+  void add(const std::string& name, std::uint32_t line, const Mesh& mesh, const std::string& object = {}) {
+    const std::string& who = object.empty() ? name : object;
+    const std::vector<Mesh> pieces = loose_pieces(mesh);
+    if (!pieces.empty() && pieces_apart(pieces, default_tolerance(mesh.min_corner(), mesh.max_corner()))) {
+      for (std::size_t k = 0; k < pieces.size(); ++k) {
+        add_one(name, line, pieces[k],
+                who + " (loose part " + std::to_string(k + 1) + " of " + std::to_string(pieces.size()) + ")");
+      }
+    } else {
+      add_one(name, line, mesh, who).loose_pieces = static_cast<std::uint32_t>(std::max<std::size_t>(1, pieces.size()));
+    }
+  }
+
+ private:
+  LabelledBox& add_one(const std::string& name, std::uint32_t line, const Mesh& mesh, const std::string& object) {
+    if (example_.boxes.size() >= limits_.max_parts) {
+      fail(ErrorKind::Limit, example_.source, {line, line != 0 ? 1u : 0u},
+           "more than " + std::to_string(limits_.max_parts) + " labelled parts: reading stopped at '" + object + "'",
+           too_many_parts_hint(limits_));
+    }
+    LabelledBox b;
+    b.label = strip_numeric_suffix(name);
+    b.min = mesh.min_corner();
+    b.max = mesh.max_corner();
+    b.object = object;
+    b.line = line;
+    if (labels_.insert(b.label).second) {
+      b.mesh = static_cast<std::uint32_t>(example_.meshes.size());
+      example_.meshes.push_back(mesh);
+    }
+    example_.positions.add(mesh.positions, b.min, b.max);
+    example_.boxes.push_back(std::move(b));
+    return example_.boxes.back();
+  }
+
+  Example& example_;
+  const ExampleLimits& limits_;
+  std::unordered_set<std::string> labels_;
+};
+
 Example load_obj_example(const fs::path& path, const ExampleLimits& limits, bool read_ahead) {
   Example ex;
   ex.source = path.string();
-  PartAdder adder(ex);
+  PartAdder adder(ex, limits);
   // Objects arrive while the file is read: an unnamed one is reported once
   // the whole file has been read, so that errors further on come first.
   std::optional<std::uint32_t> unnamed;
@@ -454,7 +476,7 @@ bool gltf_write_nothing(std::string*, const std::string&, const std::vector<unsi
 Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits& limits) {
   Example ex;
   ex.source = path.string();
-  PartAdder adder(ex);
+  PartAdder adder(ex, limits);
   std::vector<unsigned char> bytes;
   if (const auto refused = read_regular_file(path, limits.gltf.max_bytes, bytes)) {
     fail(refused->kind, ex.source, {}, refused->problem,
@@ -559,8 +581,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
         fail(ErrorKind::Input, ex.source, {}, part + " has no triangles: its mesh holds only points or lines",
              "export the part as a surface (triangles), or leave it out");
       }
-      LabelledBox& box = adder.add(name, 0, mesh);
-      if (instances) box.object = node.name + " (instance " + std::to_string(i) + ")";
+      adder.add(name, 0, mesh, instances ? node.name + " (instance " + std::to_string(i) + ")" : std::string());
     }
   }
   if (ex.boxes.empty()) {
@@ -601,6 +622,10 @@ double default_tolerance(glm::dvec3 min, glm::dvec3 max) {
   const glm::dvec3 size = max - min;
   const glm::dvec3 far = glm::max(glm::abs(min), glm::abs(max));
   return 1e-6 * std::max({size.x, size.y, size.z, far.x, far.y, far.z});
+}
+
+double example_tolerance(const Example& example, double given) {
+  return given > 0 ? given : default_tolerance(example);
 }
 
 std::string describe_object(const LabelledBox& box) {

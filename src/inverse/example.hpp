@@ -3,7 +3,9 @@
 // An example is a file of labelled parts (thesis chapter 9): each OBJ object
 // (`o name`), or each named glTF node with a mesh, is one primitive; its
 // label is the name with a Blender-style numeric suffix removed, so
-// "window.001" and "window.002" are both the primitive "window". Inference
+// "window.001" and "window.002" are both the primitive "window". An object
+// made of loose pieces whose boxes are apart (three windows joined into
+// one `o window`) is one part per piece (loose_parts.hpp). Inference
 // works on the axis-aligned bounding box of each part. Matching turns
 // (orientation.hpp) needs every part's vertex positions, kept compactly,
 // and the whole mesh of the first part of each label, its canonical mesh:
@@ -36,6 +38,9 @@ struct LabelledBox {
   // Index into Example::meshes when this part is the first of its label
   // in the example, else Mesh::kNone.
   std::uint32_t mesh = Mesh::kNone;
+  // Loose pieces the object is made of, kept as this one part because
+  // their boxes meet (loose_parts.hpp); pieces apart are parts of their own.
+  std::uint32_t loose_pieces = 1;
 };
 
 struct Example {
@@ -105,6 +110,13 @@ glm::dvec3 example_size(const Example& example);
 double default_tolerance(const Example& example);
 // The same for bounds [min, max].
 double default_tolerance(glm::dvec3 min, glm::dvec3 max);
+
+// The tolerance an example is matched within: `given` (--tolerance) when
+// it is > 0, else the example's own default_tolerance, taken where the
+// file put it (before it is moved to the origin). The one rule `check`
+// applies to each example and `infer` holds each example to, so that a
+// grammar infer writes passes check on the same examples.
+double example_tolerance(const Example& example, double given);
 
 // "'window.001' (line 12)", or "'window.001'" when the line is unknown: how
 // messages name a part.

@@ -1,10 +1,12 @@
 #include "inverse/infer.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "graph/alongside.hpp"
 #include "graph/parallel_for.hpp"
 #include "inverse/box_split.hpp"
+#include "inverse/derives_examples.hpp"
 #include "inverse/fit_distribution.hpp"
 #include "inverse/joint_sizes.hpp"
 #include "inverse/merge.hpp"
@@ -34,6 +36,8 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
     for (const auto& e : examples) out.tolerance = std::max(out.tolerance, default_tolerance(e));
   std::size_t parts = 0;
   for (const auto& e : examples) parts += e.boxes.size();
+  // Each example is cut within its own tolerance, the one check gives it.
+  auto own = [&](const Example& e) { return example_tolerance(e, options.tolerance); };
 
   // Parts whose mesh is their label's turned become R(...){ I(label) }.
   // Orienting and splitting only read the examples, so one runs beside the
@@ -49,7 +53,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
         parallel_for(
             examples.size(), options.threads,
             [&](std::size_t i) {
-              trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{out.tolerance}, examples[i].source);
+              trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{own(examples[i])}, examples[i].source);
             },
             [&](std::size_t done) {
               if (options.progress) options.progress(done, examples.size());
@@ -64,7 +68,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   if (std::ranges::any_of(quarters, [](int q) { return q != 0; })) {
     for (std::size_t i = 0; i < examples.size(); ++i) {
       turned.push_back(turned_example(examples[i], quarters[i]));
-      if (quarters[i] != 0) trees[i] = split_boxes(turned[i].boxes, BoxSplitOptions{out.tolerance}, turned[i].source);
+      if (quarters[i] != 0) trees[i] = split_boxes(turned[i].boxes, BoxSplitOptions{own(examples[i])}, turned[i].source);
     }
     oriented = orient_parts(turned, library, out.tolerance);
   }
@@ -77,57 +81,76 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   std::vector<NodeId> roots;
   for (std::size_t i = 0; i < examples.size(); ++i) {
     roots.push_back(split_graph(graph, trees[i], laid_out[i].boxes, laid_out[i].source, oriented.turns[i],
-                                {out.tolerance, &out.warnings}));
+                                {own(examples[i]), &out.warnings}));
     // Turned back to be laid out: turned again where it is derived.
     if (quarters[i] != 0) roots.back() = turned_node(graph, roots.back(), {{Axis::Z, (4 - quarters[i]) % 4}});
     trees[i] = {};  // done with it: large examples hold big trees
   }
-  MergeOptions merge;
-  merge.tolerance = out.tolerance;
-  merge.uniform_distributions = options.uniform_distributions;
-  NodeId root = merge_examples(graph, roots, merge);
   // Rounding may move a number by a quarter of the smallest example's
   // tolerance: every example then still matches within its own tolerance
   // (check's default), however the rounded numbers of one split add up.
   double smallest = out.tolerance;
-  for (const auto& e : examples) smallest = std::min(smallest, options.tolerance > 0 ? options.tolerance : default_tolerance(e));
-  root = tidy_numbers(graph, root, smallest / 4);
-  for (Rule& rule : graph.rules) rule.body = tidy_numbers(graph, rule.body, smallest / 4);
-  // Written alike now, alternatives that differ at one place share their
-  // frame (the same buildings, in fewer lines).
-  root = share_frames(graph, root);
-  for (Rule& rule : graph.rules) rule.body = share_frames(graph, rule.body);
-  out.grammar = rules_for(graph, root, NamingOptions{options.start});
-  // A split seen overflowing in short tiles is that split: checked, so
-  // only where the examples are few enough to check quickly.
-  if (parts <= kJoinedPartsLimit) unify_overflows(out.grammar, examples, {smallest, options.threads});
-  // Sizes that vary together, drawn once: from the lengths of the
-  // derivations that reproduce the examples, so only where they are few
-  // enough to check quickly.
-  if (options.joint_sizes && parts <= kJoinedPartsLimit) {
-    JointSizesOptions joint;
-    joint.tolerance = smallest;
-    joint.uniform_distributions = options.uniform_distributions;
-    joint.threads = options.threads;
-    out.joint = join_sizes(out.grammar, examples, joint);
-  }
-  // Rows whose tiles step down (or up) as they go: a recursion with the
-  // step, read from the sizes just joined (progressions.hpp).
-  if (parts <= kJoinedPartsLimit) fold_progressions(out.grammar, examples, {smallest, options.threads});
-  // Last: it only rewrites what is written, and joining sizes reads the
-  // grammar's structure as rules_for left it. Bounded like joining, as its
-  // rounds each read the whole grammar.
-  if (options.twin_rules && parts <= kJoinedPartsLimit) out.twins = parameterise_twins(out.grammar);
+  for (const auto& e : examples) smallest = std::min(smallest, own(e));
+  // Merges the examples' graphs within `tolerance` and writes the grammar.
+  auto generalise = [&](Grammar& g, double tolerance) {
+    MergeOptions merge;
+    merge.tolerance = tolerance;
+    merge.uniform_distributions = options.uniform_distributions;
+    NodeId root = merge_examples(g, roots, merge);
+    root = tidy_numbers(g, root, smallest / 4);
+    for (Rule& rule : g.rules) rule.body = tidy_numbers(g, rule.body, smallest / 4);
+    // Written alike now, alternatives that differ at one place share their
+    // frame (the same buildings, in fewer lines).
+    root = share_frames(g, root);
+    for (Rule& rule : g.rules) rule.body = share_frames(g, rule.body);
+    out.grammar = rules_for(g, root, NamingOptions{options.start});
+    // A split seen overflowing in short tiles is that split: checked, so
+    // only where the examples are few enough to check quickly.
+    if (parts <= kJoinedPartsLimit) unify_overflows(out.grammar, examples, {smallest, options.threads});
+    // Sizes that vary together, drawn once: from the lengths of the
+    // derivations that reproduce the examples, so only where they are few
+    // enough to check quickly.
+    if (options.joint_sizes && parts <= kJoinedPartsLimit) {
+      JointSizesOptions joint;
+      joint.tolerance = smallest;
+      joint.uniform_distributions = options.uniform_distributions;
+      joint.threads = options.threads;
+      out.joint = join_sizes(out.grammar, examples, joint);
+    }
+    // Rows whose tiles step down (or up) as they go: a recursion with the
+    // step, read from the sizes just joined (progressions.hpp).
+    if (parts <= kJoinedPartsLimit) fold_progressions(out.grammar, examples, {smallest, options.threads});
+    // Last: it only rewrites what is written, and joining sizes reads the
+    // grammar's structure as rules_for left it. Bounded like joining, as its
+    // rounds each read the whole grammar.
+    if (options.twin_rules && parts <= kJoinedPartsLimit) out.twins = parameterise_twins(out.grammar);
 
-  // @scope: per axis, the examples' sizes as the distribution they fit
-  // best, as every varying size is (a plot width seen ten times between
-  // 8 and 20 m reaches a little beyond; four heights seen again and again
-  // are a choice of those four), or the one size they share.
-  for (int axis = 0; axis < 3; ++axis) {
-    std::vector<Observation> sizes;
-    for (const auto& e : examples) sizes.push_back({example_size(e)[axis], 1});
-    out.grammar.scope[axis] =
-        distribution_expr(short_decimals(fit_size(sizes, out.tolerance, options.uniform_distributions), smallest / 4));
+    // @scope: per axis, the examples' sizes as the distribution they fit
+    // best, as every varying size is (a plot width seen ten times between
+    // 8 and 20 m reaches a little beyond; four heights seen again and again
+    // are a choice of those four), or the one size they share.
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<Observation> sizes;
+      for (const auto& e : examples) sizes.push_back({example_size(e)[axis], 1});
+      out.grammar.scope[axis] =
+          distribution_expr(short_decimals(fit_size(sizes, tolerance, options.uniform_distributions), smallest / 4));
+    }
+  };
+  // Sizes are merged within the largest example tolerance (a house far
+  // from the origin is noisy to a centimetre, and its 0.6 m wall is the
+  // 0.6 m wall of the house at the origin), which may hold a precise
+  // example to less than check does. The grammar must pass check on the
+  // examples as they are: where it does not, it is made again merging
+  // within the smallest tolerance, where every example is held to its own.
+  const bool verify = smallest < out.tolerance && parts <= kJoinedPartsLimit;
+  std::optional<Grammar> unmerged;
+  if (verify) unmerged = graph;
+  generalise(graph, out.tolerance);
+  if (verify && !check_passes(out.grammar, examples, options.tolerance, options.threads)) {
+    out.tolerance = smallest;
+    out.joint = {};
+    out.twins = {};
+    generalise(*unmerged, smallest);
   }
 
   // The first mesh seen for each label stands for all its parts.
