@@ -532,6 +532,9 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   };
   std::vector<CheckResult> results;
   if (!check_all(g, results)) return out;
+  // Every return below leaves a grammar checked: this one, or the
+  // rewritten one checked again.
+  out.derives_examples = true;
 
   std::vector<Joiner::Seen> seen(results.size());
   for (std::size_t i = 0; i < results.size(); ++i)
@@ -581,12 +584,13 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   // splits alone.
   g = before;
   out = {};
+  out.derives_examples = true;
   if (splits_shared() > 0) {
     drop_unused_rules(g);
     if (check_all(g, again)) return out;
   }
   g = before;
-  return {};
+  return {0, 0, true};
 }
 
 }  // namespace vern

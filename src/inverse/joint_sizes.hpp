@@ -59,6 +59,10 @@ struct JointSizesOptions {
 struct JointSizes {
   std::size_t regions = 0;  // regions rewritten (0: the grammar is unchanged)
   std::size_t joined = 0;   // sizes no longer drawn on their own
+  // Whether the grammar left behind (rewritten or not) derives every
+  // example within options.tolerance: joining checks it anyway, so infer
+  // need not check again.
+  bool derives_examples = false;
 };
 
 // Rewrites g in place (see above). examples: as given to infer; each is
