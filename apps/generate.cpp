@@ -42,6 +42,9 @@ CommandLine make_command_line() {
   cl.add({"--instancing", "", 0, "",
           "glTF/GLB: each part's copies as GPU instances (EXT_mesh_gpu_instancing):\n"
           "smaller, faster files for large scenes; the viewer must support the extension"});
+  cl.add({"--up", "", 1, "y|z",
+          "OBJ: the up axis written, declared by a `# up` line (default y, as Blender\n"
+          "imports OBJ; glTF is y-up by its specification). The grammar's z is up"});
   cl.add({"--strict", "", 0, "", "treat warnings (no rule applies, unknown primitive) as errors"});
   cl.add({"--threads", "-j", 1, "N", "derive with N threads (default: all cores; output is the same)"});
   cl.add({"--max-depth", "", 1, "N", "limit on nested rule calls (default 1000)"});
@@ -73,11 +76,11 @@ const char* extension(Format f) { return f == Format::Obj ? ".obj" : f == Format
 
 // Stages the scene among the run's outputs, committed together at the end.
 void write_scene(const Scene& scene, const PrimitiveLibrary& library, const fs::path& path, Format format,
-                 GltfOptions gltf, OutputFiles& outputs) {
+                 GltfOptions gltf, UpAxis obj_up, OutputFiles& outputs) {
   naming_out_of_memory(path.string(), "while writing the buildings",
                        "write fewer buildings into one file, or a folder of one file per building", [&] {
                          if (format == Format::Obj)
-                           write_obj(scene, library, path, outputs);
+                           write_obj(scene, library, path, outputs, obj_up);
                          else
                            write_gltf(scene, library, path, gltf, outputs);
                        });
@@ -186,6 +189,12 @@ int run(int argc, char** argv) {
   gltf.instancing = args.has("--instancing");
   if (gltf.instancing && (one_file ? *file_format : folder_format.value_or(Format::Obj)) == Format::Obj)
     usage("--instancing applies to glTF output only", "write a .glb or .gltf file, or add --format glb");
+  UpAxis obj_up = UpAxis::Y;
+  if (args.has("--up")) {
+    obj_up = *parse_up_axis(CommandLine::one_of(args, "--up", {"y", "z"}));
+    if ((one_file ? *file_format : folder_format.value_or(Format::Obj)) != Format::Obj)
+      usage("--up applies to OBJ output only", "glTF is y-up by its specification: leave --up out");
+  }
   if (!one_file && output.has_extension() && !fs::is_directory(output))
     usage("cannot tell what to write to '" + output.string() + "'",
           "name a folder (ending in /) or a file ending in .obj, .gltf or .glb");
@@ -273,7 +282,7 @@ int run(int argc, char** argv) {
   MadeFolder made{output};
   OutputFiles outputs;
   if (one_file) {
-    write_scene(lay_out(std::move(derivations), spacing), library, output, *file_format, gltf, outputs);
+    write_scene(lay_out(std::move(derivations), spacing), library, output, *file_format, gltf, obj_up, outputs);
     where = output.string();
   } else {
     const Format format = folder_format.value_or(Format::Obj);
@@ -283,7 +292,7 @@ int run(int argc, char** argv) {
                                      "\n  hint: check that its parent folder exists and is writable, or choose another path");
     for (std::uint32_t i = 0; i < derivations.size(); ++i)
       write_scene(single(std::move(derivations[i]), i), library, output / (variant_name(i) + extension(format)), format,
-                  gltf, outputs);
+                  gltf, obj_up, outputs);
     where = (output / ("variant_000" + std::string(extension(format)))).string();
     if (options.count > 1) where += " ... " + variant_name(options.count - 1) + extension(format);
   }

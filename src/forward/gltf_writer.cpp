@@ -13,6 +13,7 @@
 #include "forward/gltf_container.hpp"
 #include "forward/json_text.hpp"
 #include "forward/palette.hpp"
+#include "forward/up_axis.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"
 
@@ -230,6 +231,20 @@ std::array<double, 16> scope_matrix(const Scope& s) {
   return m;
 }
 
+// A variant's root: its offset, and the quarter turn from the grammar's
+// z-up frame to glTF's y-up (up_axis.hpp), column-major. Turned here, at
+// the root, the parts beneath keep their grammar-frame matrices and
+// instances; its entries are 0, 1 and -1, so reading back is exact.
+std::array<double, 16> y_up_root_matrix(const glm::dvec3& offset) {
+  std::array<double, 16> m{};
+  for (int c = 0; c < 4; ++c) {
+    const glm::dvec3 column = z_up_to_y_up(c < 3 ? glm::dvec3(glm::dmat3(1.0)[c]) : offset);
+    for (int r = 0; r < 3; ++r) m[static_cast<std::size_t>(4 * c + r)] = column[r];
+  }
+  m[15] = 1.0;
+  return m;
+}
+
 // One glTF mesh: a primitive's geometry with one material.
 struct MeshUse {
   std::string name;
@@ -426,9 +441,7 @@ class Document {
     for (std::size_t v = 0; v < scene_.variants.size(); ++v) {
       const Variant& variant = scene_.variants[v];
       json.open_object().field("name", variant.name);
-      if (variant.offset != glm::dvec3(0.0)) {
-        json.key("translation").numbers(std::array<double, 3>{variant.offset.x, variant.offset.y, variant.offset.z});
-      }
+      json.key("matrix").numbers(y_up_root_matrix(variant.offset));
       const std::size_t n = children(v);
       if (n > 0) {  // a node's children list must not be empty
         json.key("children").open_array();

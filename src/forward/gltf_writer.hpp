@@ -3,7 +3,8 @@
 // Each (primitive, material) pair in use is one glTF mesh whose triangles
 // (polygons fanned from their first corner; primitive faces are convex) are
 // stored once. Materials match the OBJ writer's (palette.hpp). The node tree
-// has one root per variant, named after it and translated by its offset.
+// has one root per variant, named after it, whose matrix moves it by its
+// offset and turns the grammar's z-up frame to glTF's y-up (up_axis.hpp).
 // Beneath it, one of two layouts:
 //   - plain (default): one child per terminal, named by its label, whose
 //     matrix maps the unit box onto the terminal's scope (columns

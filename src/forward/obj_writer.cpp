@@ -81,13 +81,17 @@ std::size_t estimated_size(const Scene& scene, const std::vector<const Mesh*>& m
 
 }  // namespace
 
-std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const std::string& mtl_file_name) {
+std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const std::string& mtl_file_name,
+                     UpAxis up) {
   const MaterialTable materials(scene);  // also checks every terminal's label
   const std::vector<const Mesh*> meshes = meshes_by_label(scene, library);
 
   std::string out;
   out.reserve(estimated_size(scene, meshes));
   out += "# Written by Vernacular: one object per terminal, named by its label.\n";
+  out += "# up ";
+  out += up_axis_name(up);
+  out += '\n';
   if (!mtl_file_name.empty()) out += "mtllib " + mtl_file_name + "\n";
 
   std::uint64_t positions = 0, uvs = 0, normals = 0;  // written so far
@@ -100,7 +104,7 @@ std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const 
       out += "\nusemtl ";
       out += materials.materials()[materials.index_of(t)].name;
       out += '\n';
-      for (const glm::dvec3& p : mesh.positions) append_vec3(out, "v", t.scope.to_world(p) + variant.offset);
+      for (const glm::dvec3& p : mesh.positions) append_vec3(out, "v", from_z_up(t.scope.to_world(p) + variant.offset, up));
       for (const glm::dvec2& uv : mesh.uvs) {
         out += "vt ";
         append_number(out, uv.x);
@@ -109,7 +113,7 @@ std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const 
         out += '\n';
       }
       const NormalMap to_world(t.scope);
-      for (const glm::dvec3& n : mesh.normals) append_vec3(out, "vn", to_world(n));
+      for (const glm::dvec3& n : mesh.normals) append_vec3(out, "vn", from_z_up(to_world(n), up));
 
       std::size_t corner = 0;
       for (std::uint32_t size : mesh.face_sizes) {
@@ -155,19 +159,20 @@ std::filesystem::path mtl_path_for(const std::filesystem::path& obj_path) {
 }
 
 void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path,
-               OutputFiles& outputs) {
+               OutputFiles& outputs, UpAxis up) {
   const std::filesystem::path mtl_path = mtl_path_for(obj_path);
   if (mtl_path == obj_path) {
     fail(ErrorKind::Usage, obj_path.string(), {}, "the OBJ file would overwrite its own MTL file",
          "give the output an .obj extension");
   }
   outputs.stage(mtl_path, mtl_text(scene));
-  outputs.stage(obj_path, obj_text(scene, library, mtl_path.filename().string()));
+  outputs.stage(obj_path, obj_text(scene, library, mtl_path.filename().string(), up));
 }
 
-void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path) {
+void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path,
+               UpAxis up) {
   OutputFiles outputs;
-  write_obj(scene, library, obj_path, outputs);
+  write_obj(scene, library, obj_path, outputs, up);
   outputs.commit();
 }
 
