@@ -41,7 +41,9 @@ CommandLine make_command_line() {
   cl.add({"--primitives", "", 1, "PATH", "primitive meshes: a folder of .obj files or one .obj of named objects"});
   cl.add({"--instancing", "", 0, "",
           "glTF/GLB: each part's copies as GPU instances (EXT_mesh_gpu_instancing):\n"
-          "smaller, faster files for large scenes; the viewer must support the extension"});
+          "smaller, faster files for large scenes. The extension is required (it has no\n"
+          "fallback): three.js and Babylon.js read it; Blender 3.4 refuses the file, so\n"
+          "leave --instancing out for Blender (docs/clients.md)"});
   cl.add({"--up", "", 1, "y|z",
           "OBJ: the up axis written, declared by a `# up` line (default y, as Blender\n"
           "imports OBJ; glTF is y-up by its specification). The grammar's z is up"});

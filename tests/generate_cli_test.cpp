@@ -103,6 +103,17 @@ TEST(GenerateCli, ScopeAndStartOptions) {
   EXPECT_EQ(x.exit_code, 2) << x.err;
 }
 
+// EXT_mesh_gpu_instancing stays required (a fallback of plain nodes would
+// be drawn twice where it is read): the help says who reads it, and that
+// Blender 3.4 refuses it, before a user finds out in Blender.
+TEST(GenerateCli, InstancingHelpSaysWhichViewersReadIt) {
+  const auto r = run_program("generate", {"--help"});
+  ASSERT_EQ(r.exit_code, 0);
+  const std::string help = r.out.substr(r.out.find("--instancing"));
+  for (const char* said : {"required", "three.js and Babylon.js read it", "Blender 3.4 refuses the file"})
+    EXPECT_NE(help.find(said), std::string::npos) << said << "\n" << help;
+}
+
 TEST(GenerateCli, UsageErrorsExitWithTwo) {
   auto r = run_program("generate", {});
   EXPECT_EQ(r.exit_code, 2);

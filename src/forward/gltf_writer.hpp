@@ -14,7 +14,10 @@
 //     terminals as EXT_mesh_gpu_instancing translations, rotations and
 //     scales (floats). Files are several times smaller and faster to write
 //     and to draw; the extension is marked required, so viewers without it
-//     refuse the file rather than show nothing.
+//     refuse the file rather than show one stray part per mesh. It cannot
+//     be optional: a fallback of plain nodes would be drawn twice by the
+//     viewers that read the extension, and would cost the plain layout's
+//     size on top (city, 10 buildings: 0.88 MB instanced, 3.04 MB plain).
 // Same scene, same bytes.
 #pragma once
 
