@@ -77,8 +77,7 @@ struct ObjLimits {
 // is not UTF-8, or text that is not OBJ (a NUL byte, an unknown statement
 // before any OBJ statement, a line longer than kMaxObjLine), a `# up`
 // declaration naming another axis than y or z, or coming after a vertex;
-// (Limit) past
-// limits.max_objects or limits.max_faces.
+// (Limit) past limits.max_objects or limits.max_faces.
 std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits = {});
 
 // The same for a file; throws vern::Error (Io) when it is missing, a folder
