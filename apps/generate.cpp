@@ -43,7 +43,12 @@ CommandLine make_command_line() {
   cl.add({"--primitives", "", 1, "PATH", "primitive meshes: a folder of .obj files or one .obj of named objects"});
   cl.add({"--instancing", "", 0, "",
           "glTF/GLB: each part's copies as GPU instances (EXT_mesh_gpu_instancing):\n"
-          "smaller, faster files for large scenes; the viewer must support the extension"});
+          "smaller, faster files for large scenes. The extension is required (it has no\n"
+          "fallback): three.js and Babylon.js read it; Blender 3.4 refuses the file, so\n"
+          "leave --instancing out for Blender (docs/clients.md)"});
+  cl.add({"--up", "", 1, "y|z",
+          "OBJ: the up axis written, declared by a `# up` line (default y, as Blender\n"
+          "imports OBJ; glTF is y-up by its specification). The grammar's z is up"});
   cl.add({"--strict", "", 0, "", "treat warnings (no rule applies, unknown primitive) as errors"});
   cl.add({"--threads", "-j", 1, "N", "derive with N threads (default: all cores; output is the same)"});
   cl.add({"--max-depth", "", 1, "N", "limit on nested rule calls (default 1000)"});
@@ -75,11 +80,11 @@ const char* extension(Format f) { return f == Format::Obj ? ".obj" : f == Format
 
 // Stages the scene among the run's outputs, committed together at the end.
 void write_scene(const Scene& scene, const PrimitiveLibrary& library, const fs::path& path, Format format,
-                 GltfOptions gltf, OutputFiles& outputs) {
+                 GltfOptions gltf, UpAxis obj_up, OutputFiles& outputs) {
   naming_out_of_memory(path.string(), "while writing the buildings",
                        "write fewer buildings into one file, or a folder of one file per building", [&] {
                          if (format == Format::Obj)
-                           write_obj(scene, library, path, outputs);
+                           write_obj(scene, library, path, outputs, obj_up);
                          else
                            write_gltf(scene, library, path, gltf, outputs);
                        });
@@ -90,13 +95,13 @@ void write_scene(const Scene& scene, const PrimitiveLibrary& library, const fs::
 class SceneFileWriter {
  public:
   SceneFileWriter(const fs::path& path, Format format, std::vector<std::string> labels, const PrimitiveLibrary& library,
-                  GltfOptions gltf, OutputFiles& outputs)
+                  GltfOptions gltf, UpAxis obj_up, OutputFiles& outputs)
       : path_(path), outputs_(outputs) {
     if (format == Format::Obj) {
       check_obj_path(path);
       file_.emplace(outputs.open(path));
       obj_.emplace(std::move(labels), library, mtl_path_for(path).filename().string(),
-                   [this](std::string_view piece) { file_->write(piece); });
+                   [this](std::string_view piece) { file_->write(piece); }, obj_up);
     } else {
       check_gltf_path(path);
       gltf_.emplace(std::move(labels), library, gltf, path.parent_path(), path.string());
@@ -229,6 +234,12 @@ int run(int argc, char** argv) {
   gltf.instancing = args.has("--instancing");
   if (gltf.instancing && (one_file ? *file_format : folder_format.value_or(Format::Obj)) == Format::Obj)
     usage("--instancing applies to glTF output only", "write a .glb or .gltf file, or add --format glb");
+  UpAxis obj_up = UpAxis::Y;
+  if (args.has("--up")) {
+    obj_up = *parse_up_axis(CommandLine::one_of(args, "--up", {"y", "z"}));
+    if ((one_file ? *file_format : folder_format.value_or(Format::Obj)) != Format::Obj)
+      usage("--up applies to OBJ output only", "glTF is y-up by its specification: leave --up out");
+  }
   if (!one_file && output.has_extension() && !fs::is_directory(output))
     usage("cannot tell what to write to '" + output.string() + "'",
           "name a folder (ending in /) or a file ending in .obj, .gltf or .glb");
@@ -321,7 +332,7 @@ int run(int argc, char** argv) {
     naming_out_of_memory(grammar_path.string(), deriving, deriving_hint, [&] {
       derive_variants_in_order(grammar, options, batch, [&](std::uint32_t i, Derivation&& d) {
         note(d);
-        if (!writer) writer.emplace(output, *file_format, std::move(d.labels), library, gltf, outputs);
+        if (!writer) writer.emplace(output, *file_format, std::move(d.labels), library, gltf, obj_up, outputs);
         writer->add(Variant{variant_name(i), offsets[i], std::move(d.terminals)});
       });
     });
@@ -339,7 +350,7 @@ int run(int argc, char** argv) {
       derive_variants_in_order(grammar, options, batch, [&](std::uint32_t i, Derivation&& d) {
         note(d);
         write_scene(single(std::move(d), i), library, output / (variant_name(i) + extension(format)), format, gltf,
-                    outputs);
+                    obj_up, outputs);
       });
     });
     where = (output / ("variant_000" + std::string(extension(format)))).string();

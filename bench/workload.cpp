@@ -150,6 +150,7 @@ std::string layout_obj(const std::vector<LabelledBox>& boxes) {
   std::string out;
   out.reserve(boxes.size() * 320 + 64);
   out += "# A random guillotine layout (vern_bench --make-layout): one object per part.\n";
+  out += "# up z\n";  // the boxes' own frame (forward/obj_reader.hpp)
   std::uint64_t base = 1;
   for (const LabelledBox& b : boxes) {
     out += "o ";

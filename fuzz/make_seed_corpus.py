@@ -68,6 +68,7 @@ def obj_seeds():
         "names.obj": "o window.001\nv 0 0 0\nv 1 0 0\nv 0 0 1\nf 1 2 3\no window.002 # a comment\n"
         "v 2 0 0\nv 3 0 0\nv 2 0 1\nf 4 5 6\no .001\nv 0 2 0\nv 1 2 0\nv 0 2 1\nf 7 8 9\n",
         "point.obj": "o dot\nv 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n",
+        "up_declared.obj": "# Written by Vernacular\n# up y\no wall\nv 0 0 0\nv 1 0 -1\nv 0 1 0\nvn 0 1 0\nf 1//1 2//1 3//1\n",
     }
     for name, text in small.items():
         (out / name).write_text(text)

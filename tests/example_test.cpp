@@ -57,6 +57,14 @@ std::string files_error(const std::vector<std::string>& args, ErrorKind kind) {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+// The OBJ texts below are written z-up, as grammars are; files that do not
+// say so are read y-up, as Blender writes them (ObjFilesWithoutADeclaration...).
+ExampleLimits z_up() {
+  ExampleLimits limits;
+  limits.obj_up = UpAxis::Z;
+  return limits;
+}
+
 TEST(Example, BlenderSuffixesAreStrippedFromLabels) {
   EXPECT_EQ(strip_numeric_suffix("window.001"), "window");
   EXPECT_EQ(strip_numeric_suffix("wall.12"), "wall");
@@ -75,7 +83,7 @@ TEST(Example, ObjObjectsArePartsWithBoxesLabelsAndLines) {
   write_text(dir / "house.obj", "# a wall with two windows\n" + box_obj("wall", {0, 0, 0}, {6, 0.5, 3}) +
                                     box_obj("window.001", {1, -0.25, 1}, {2, 0, 2}) +
                                     box_obj("window.002", {4, -0.25, 1}, {5, 0, 2}));
-  const Example ex = load_example(dir / "house.obj");
+  const Example ex = load_example(dir / "house.obj", z_up());
   EXPECT_EQ(ex.source, (dir / "house.obj").string());
   ASSERT_EQ(ex.boxes.size(), 3u);
   // The whole mesh of each label's first part; every part's positions.
@@ -123,7 +131,7 @@ TEST(Example, AnObjectOfLooseBoxesIsOnePartPerBox) {
                                     joined_boxes("window", {{{1, -0.25, 1}, {2, 0, 2}},
                                                             {{4, -0.25, 1}, {5, 0, 2}},
                                                             {{7, -0.25, 1}, {8, 0, 2}}}));
-  const Example ex = load_example(dir / "house.obj");
+  const Example ex = load_example(dir / "house.obj", z_up());
   ASSERT_EQ(ex.boxes.size(), 4u);
   for (std::size_t i = 1; i < 4; ++i) {
     EXPECT_EQ(ex.boxes[i].label, "window");
@@ -142,7 +150,7 @@ TEST(Example, AnObjectOfLooseBoxesIsOnePartPerBox) {
   write_text(dir / "apart.obj", box_obj("wall", {0, 0, 0}, {9, 0.5, 3}) + box_obj("window", {1, -0.25, 1}, {2, 0, 2}) +
                                     box_obj("window", {4, -0.25, 1}, {5, 0, 2}) +
                                     box_obj("window", {7, -0.25, 1}, {8, 0, 2}));
-  const Example apart = load_example(dir / "apart.obj");
+  const Example apart = load_example(dir / "apart.obj", z_up());
   for (std::size_t i = 0; i < 4; ++i) {
     EXPECT_EQ(ex.boxes[i].min, apart.boxes[i].min);
     EXPECT_EQ(ex.boxes[i].max, apart.boxes[i].max);
@@ -156,7 +164,7 @@ TEST(Example, LoosePiecesWhoseBoxesMeetStayOnePart) {
   write_text(dir / "window.obj",
              joined_boxes("window", {{{0, 0, 0}, {1, 0.2, 1}}, {{0.2, 0.05, 0.2}, {0.8, 0.15, 0.8}}}) +
                  joined_boxes("shelf", {{{3, 0, 0}, {4, 1, 1}}, {{4, 0, 0}, {5, 1, 1}}}));
-  const Example ex = load_example(dir / "window.obj");
+  const Example ex = load_example(dir / "window.obj", z_up());
   ASSERT_EQ(ex.boxes.size(), 2u);
   EXPECT_EQ(ex.boxes[0].object, "window");
   EXPECT_EQ(ex.boxes[0].loose_pieces, 2u);
@@ -172,10 +180,43 @@ TEST(Example, FlatPartsAreAllowed) {
   write_text(dir / "facade.obj",
              "o rect\nv 0 0 0\nv 3.33333 0 0\nv 3.33333 0 6.66667\nv 0 0 6.66667\nf 1 2 3 4\n"
              "o triangle.001\nv 0 0 6.66667\nv 3.33333 0 6.66667\nv 1.6 0 10\nf 5 6 7\n");
-  const Example ex = load_example(dir / "facade.obj");
+  const Example ex = load_example(dir / "facade.obj", z_up());
   ASSERT_EQ(ex.boxes.size(), 2u);
   EXPECT_EQ(ex.boxes[1].label, "triangle");
   EXPECT_EQ(example_size(ex).y, 0.0);
+}
+
+// A house 6 wide, 4 deep and 3 high as Blender exports it by default,
+// OBJ and glTF alike (y up, -z forward): read with its height on z.
+TEST(Example, ObjFilesWithoutADeclarationAndGltfAreYUp) {
+  TempFolder dir;
+  write_text(dir / "blender.obj", "# Blender 3.4.1\n" + box_obj("wall", {0, 0, -4}, {6, 3, 0}));
+  Example ex = load_example(dir / "blender.obj");
+  EXPECT_EQ(ex.min, glm::dvec3(0, 0, 0));
+  EXPECT_EQ(ex.max, glm::dvec3(6, 4, 3));
+  // --up z reads it as written; a file's own `# up` line wins over either.
+  EXPECT_EQ(example_size(load_example(dir / "blender.obj", z_up())), glm::dvec3(6, 3, 4));
+  write_text(dir / "declared.obj", "# up y\n" + box_obj("wall", {0, 0, -4}, {6, 3, 0}));
+  EXPECT_EQ(example_size(load_example(dir / "declared.obj", z_up())), glm::dvec3(6, 4, 3));
+
+  // What the writers produce, with the grammar's z up, reads back z-up.
+  Scene scene;
+  scene.labels = {"wall"};
+  Terminal t;
+  t.label = 0;
+  t.scope.size = glm::dvec3(6, 4, 3);
+  scene.variants.push_back({"house", glm::dvec3(0.0), {t}});
+  const PrimitiveLibrary library = PrimitiveLibrary::builtin();
+  write_gltf(scene, library, dir / "house.glb");
+  write_obj(scene, library, dir / "house.obj");
+  write_obj(scene, library, dir / "house_z.obj", UpAxis::Z);
+  for (const char* name : {"house.glb", "house.obj", "house_z.obj"}) {
+    SCOPED_TRACE(name);
+    ex = load_example(dir / name);
+    EXPECT_EQ(ex.min, glm::dvec3(0, 0, 0));
+    EXPECT_EQ(ex.max, glm::dvec3(6, 4, 3));
+  }
+  EXPECT_TRUE(contains(test::read_file(dir / "house.obj"), "\nv 6 3 -4\n"));  // y-up in the file
 }
 
 TEST(Example, EmptyFilesAndFilesWithoutObjectsAreErrors) {
@@ -287,7 +328,7 @@ std::string base64(const std::string& bytes) {
 
 // One triangle (0,0,0) (1,0,0) (0,1,0) under a parent turned a quarter
 // about z; the child is moved and scaled: its world box is
-// (-2, 1, 0) - (0, 3, 0).
+// (-2, 1, 0) - (0, 3, 0), y-up as glTF is: (-2, 0, 1) - (0, 0, 3) z-up.
 std::string triangle_gltf(const std::string& child_name) {
   const float v[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   std::string bytes(sizeof v, '\0');
@@ -311,8 +352,8 @@ TEST(Example, GltfNodesApplyTheirWorldTransform) {
   EXPECT_EQ(ex.boxes[0].label, "panel");
   EXPECT_EQ(ex.boxes[0].object, "panel.003");
   for (int i = 0; i < 3; ++i) {
-    EXPECT_NEAR(ex.boxes[0].min[i], glm::dvec3(-2, 1, 0)[i], 1e-6);
-    EXPECT_NEAR(ex.boxes[0].max[i], glm::dvec3(0, 3, 0)[i], 1e-6);
+    EXPECT_NEAR(ex.boxes[0].min[i], glm::dvec3(-2, 0, 1)[i], 1e-6);
+    EXPECT_NEAR(ex.boxes[0].max[i], glm::dvec3(0, 0, 3)[i], 1e-6);
   }
   EXPECT_EQ(ex.meshes[0].face_sizes, std::vector<std::uint32_t>{3});
 }
@@ -407,8 +448,8 @@ TEST(Example, InstancingErrors) {
   const Example ex = load_example(dir / "three.gltf");
   ASSERT_EQ(ex.boxes.size(), 3u);
   EXPECT_EQ(ex.boxes[1].label, "panel");
-  EXPECT_EQ(ex.boxes[1].min, glm::dvec3(1, 0, 0));
-  EXPECT_EQ(ex.boxes[1].max, glm::dvec3(2, 1, 0));
+  EXPECT_EQ(ex.boxes[1].min, glm::dvec3(1, 0, 0));  // y-up (1, 0, 0) - (2, 1, 0), turned z-up
+  EXPECT_EQ(ex.boxes[1].max, glm::dvec3(2, 0, 1));
 
   write_text(dir / "uneven.gltf", file(R"({"TRANSLATION": 0, "SCALE": 1})"));
   EXPECT_TRUE(contains(load_error(dir / "uneven.gltf"), "attributes hold different numbers of instances"));

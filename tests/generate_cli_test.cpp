@@ -84,7 +84,34 @@ TEST(GenerateCli, ScopeAndStartOptions) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string obj = read_file(dir / "h.obj");
   EXPECT_EQ(obj.find("o roof"), obj.rfind("o roof"));  // one house, one roof
-  EXPECT_NE(obj.find("\nv 3 1 1\n"), std::string::npos);  // the ridge: 3 long, mid-depth, on top
+  // The ridge: 3 long, mid-depth, on top, written y-up as Blender reads
+  // OBJ: the grammar's (3, 1, 1) is (3, 1, -1).
+  EXPECT_TRUE(obj.starts_with("# Written by Vernacular: one object per terminal, named by its label.\n# up y\n"));
+  EXPECT_NE(obj.find("\nv 3 1 -1\n"), std::string::npos);
+  // --up z writes the grammar's frame as it is, and says so.
+  const auto z = run_program("generate", {kGrammars + "garage.grm", "--scope", "3", "2", "1", "--start", "house", "--up", "z",
+                                          "-o", "z.obj", "-q"}, dir.path());
+  ASSERT_EQ(z.exit_code, 0) << z.err;
+  const std::string z_obj = read_file(dir / "z.obj");
+  EXPECT_NE(z_obj.find("\n# up z\n"), std::string::npos);
+  EXPECT_NE(z_obj.find("\nv 3 1 1\n"), std::string::npos);
+  // glTF is y-up by its specification: --up is for OBJ only.
+  const auto glb = run_program("generate", {kGrammars + "garage.grm", "--up", "z", "-o", "h.glb", "-q"}, dir.path());
+  EXPECT_EQ(glb.exit_code, 2);
+  EXPECT_NE(glb.err.find("--up applies to OBJ output only"), std::string::npos) << glb.err;
+  const auto x = run_program("generate", {kGrammars + "garage.grm", "--up", "x", "-o", "x.obj", "-q"}, dir.path());
+  EXPECT_EQ(x.exit_code, 2) << x.err;
+}
+
+// EXT_mesh_gpu_instancing stays required (a fallback of plain nodes would
+// be drawn twice where it is read): the help says who reads it, and that
+// Blender 3.4 refuses it, before a user finds out in Blender.
+TEST(GenerateCli, InstancingHelpSaysWhichViewersReadIt) {
+  const auto r = run_program("generate", {"--help"});
+  ASSERT_EQ(r.exit_code, 0);
+  const std::string help = r.out.substr(r.out.find("--instancing"));
+  for (const char* said : {"required", "three.js and Babylon.js read it", "Blender 3.4 refuses the file"})
+    EXPECT_NE(help.find(said), std::string::npos) << said << "\n" << help;
 }
 
 TEST(GenerateCli, UsageErrorsExitWithTwo) {
@@ -156,15 +183,17 @@ TEST(GenerateCli, UnknownPrimitiveWarnsOnceAndStrictFails) {
 TEST(GenerateCli, UserPrimitivesFromAFolderOrTheGrammar) {
   TempFolder dir;
   std::filesystem::create_directories(dir / "prims");
-  // A tower: a tall triangle pyramid of 4 vertices, in any coordinates.
-  write_text(dir / "prims/tower.obj", "v 0 0 0\nv 4 0 0\nv 0 4 0\nv 0 0 8\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
+  // A tower: a tall triangle pyramid of 4 vertices, in any coordinates,
+  // modelled z-up and saying so.
+  write_text(dir / "prims/tower.obj",
+             "# up z\nv 0 0 0\nv 4 0 0\nv 0 4 0\nv 0 0 8\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
   write_text(dir / "g.grm", "p --> I(tower)\n");
   write_text(dir / "h.grm", "@primitives \"prims\"\np --> I(tower)\n");
   auto r = run_program("generate", {"g.grm", "--primitives", "prims", "--scope", "2", "2", "2", "-o", "a.obj"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
   const std::string a = read_file(dir / "a.obj");
-  EXPECT_NE(a.find("\nv 0 0 2\n"), std::string::npos);  // normalised to the unit box, then scaled to 2
+  EXPECT_NE(a.find("\nv 0 2 0\n"), std::string::npos);  // normalised to the unit box, scaled to 2, written y-up
   r = run_program("generate", {"h.grm", "--scope", "2", "2", "2", "-o", "b.obj"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto body = [](const std::string& obj) { return obj.substr(obj.find("\no ")); };

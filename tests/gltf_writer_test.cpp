@@ -49,7 +49,10 @@ TEST(GltfWriter, OneRootPerVariantAndOneChildPerTerminal) {
   EXPECT_EQ(a.name, "variant_000");
   EXPECT_EQ(b.name, "variant_001");
   EXPECT_EQ(a.mesh, -1);
-  EXPECT_EQ(b.translation, (std::array<double, 3>{50, 0, 0}));
+  // Each root turns the grammar's z-up to glTF's y-up, (x, y, z) -> (x, z, -y),
+  // and moves the variant by its offset.
+  EXPECT_EQ(a.matrix, (std::array<double, 16>{1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1}));
+  EXPECT_EQ(b.matrix, (std::array<double, 16>{1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 50, 0, 0, 1}));
   std::vector<std::string> names;
   for (int c : a.children) names.push_back(s.nodes.at(static_cast<std::size_t>(c)).name);
   EXPECT_EQ(names, (std::vector<std::string>{"rect", "rect", "window", "rect"}));
@@ -195,7 +198,7 @@ TEST(GltfWriter, InstancingGroupsEachVariantsTerminalsByMesh) {
   const GltfSummary::Node& a = s.nodes.at(static_cast<std::size_t>(s.roots[0]));
   const GltfSummary::Node& b = s.nodes.at(static_cast<std::size_t>(s.roots[1]));
   EXPECT_EQ(a.name, "variant_000");
-  EXPECT_EQ(b.translation, (std::array<double, 3>{50, 0, 0}));
+  EXPECT_EQ(b.matrix, plain.nodes.at(static_cast<std::size_t>(plain.roots[1])).matrix);
   ASSERT_EQ(a.children.size(), 2u);  // rect, window
   ASSERT_EQ(b.children.size(), 1u);  // rect
   const GltfSummary::Node& walls = s.nodes.at(static_cast<std::size_t>(a.children[0]));

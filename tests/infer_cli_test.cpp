@@ -164,6 +164,62 @@ TEST(InferCli, CheckOnTheHandWrittenGrammarsPlot) {
   EXPECT_NE(r.out.find("1 of 1 example derivable"), std::string::npos) << r.out;
 }
 
+// A box as Blender's OBJ exporter writes it by default: y up, -z forward,
+// so the grammar's (x, y, z) is the file's (x, z, -y); six decimals.
+std::string blender_box(const std::string& name, glm::dvec3 lo, glm::dvec3 hi, int& base) {
+  std::string text = "o " + name + "\n";
+  char line[96];
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 p((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+    std::snprintf(line, sizeof line, "v %.6f %.6f %.6f\n", p.x, p.z, -p.y);
+    text += line;
+  }
+  for (const char* f : {"1 3 4 2", "5 6 8 7", "1 2 6 5", "3 7 8 4", "1 5 7 3", "2 4 8 6"}) {
+    std::istringstream corners(f);
+    text += "f";
+    for (int c; corners >> c;) text += " " + std::to_string(base + c - 1);
+    text += "\n";
+  }
+  base += 8;
+  return text;
+}
+
+// Houses modelled z-up in Blender and exported with its defaults come
+// back with their height on z; --up z reads a file as written; generate's
+// default OBJ is what infer reads by default.
+TEST(InferCli, BlenderExportedObjHasItsHeightOnZ) {
+  TempFolder dir;
+  for (const double width : {6.0, 8.0}) {
+    int base = 1;
+    std::string text = "# Blender 3.4.1\n# www.blender.org\nmtllib house.mtl\n";
+    text += blender_box("wall", {0, 0, 0}, {width, 4, 2.7}, base);
+    text += blender_box("roof", {0, 0, 2.7}, {width, 4, 3.9}, base);
+    write_text(dir / ("house_" + std::to_string(static_cast<int>(width)) + ".obj"), text);
+  }
+  auto r = run_program("infer", {"house_6.obj", "house_8.obj", "-o", "house.grm"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::string grammar = read_file(dir / "house.grm");
+  // Widths 6 and 8, 4 deep, 3.9 high; walls 2.7 and roofs 1.2 high: 9 to 4.
+  EXPECT_NE(grammar.find(", 4, 3.9\n@primitives"), std::string::npos) << grammar;
+  EXPECT_NE(grammar.find("building --> split(z){ ~9 : I(wall) | ~4 : I(roof) }"), std::string::npos) << grammar;
+  r = run_program("check", {"house.grm", "house_6.obj", "house_8.obj"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  // The primitives infer writes declare their up axis, and read back so.
+  EXPECT_NE(read_file(dir / "house.prims.obj").find("\n# up y\n"), std::string::npos);
+  r = run_program("generate", {"house.grm", "-o", "again.obj", "-q"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_program("check", {"house.grm", "again.obj"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+
+  r = run_program("infer", {"house_6.obj", "--up", "z", "-o", "lying.grm"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  grammar = read_file(dir / "lying.grm");
+  EXPECT_NE(grammar.find("@scope 6, 3.9, 4\n"), std::string::npos) << grammar;  // lying on its back
+  r = run_program("check", {"house.grm", "house_6.obj", "--up", "x"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--up"), std::string::npos) << r.err;
+}
+
 TEST(InferCli, UsageErrors) {
   auto r = run_program("infer", {kExamples + "garage"});
   EXPECT_EQ(r.exit_code, 2);

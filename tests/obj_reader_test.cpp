@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -23,8 +24,16 @@ bool same_objects(const std::vector<ObjObject>& a, const std::vector<ObjObject>&
   return true;
 }
 
+// Coordinates as written: most tests here are about statements, not about
+// which way is up (UpAxisIsDeclaredOrAssumed below).
+ObjLimits as_written() {
+  ObjLimits limits;
+  limits.undeclared_up = UpAxis::Z;
+  return limits;
+}
+
 // Read with the lines read ahead on a second thread.
-std::vector<ObjObject> parse_ahead(const std::string& text, const ObjLimits& limits = {}) {
+std::vector<ObjObject> parse_ahead(const std::string& text, const ObjLimits& limits = as_written()) {
   std::istringstream in(text);
   std::vector<ObjObject> objects;
   read_obj(in, "test.obj", limits, [&](const ObjObject& o) { objects.push_back(o); }, true);
@@ -32,10 +41,10 @@ std::vector<ObjObject> parse_ahead(const std::string& text, const ObjLimits& lim
 }
 
 // Read both ways, which must agree.
-std::vector<ObjObject> parse(const std::string& text) {
+std::vector<ObjObject> parse(const std::string& text, const ObjLimits& limits = as_written()) {
   std::istringstream in(text);
-  std::vector<ObjObject> objects = read_obj(in, "test.obj");
-  EXPECT_TRUE(same_objects(objects, parse_ahead(text)));
+  std::vector<ObjObject> objects = read_obj(in, "test.obj", limits);
+  EXPECT_TRUE(same_objects(objects, parse_ahead(text, limits)));
   return objects;
 }
 
@@ -161,6 +170,37 @@ TEST(ObjReader, IgnoresMaterialsSmoothingLinesCommentsAndLineEndings) {
   EXPECT_EQ(objects[0].mesh.positions[2], glm::dvec3(0, 1, 0));
 }
 
+// Blender writes OBJ y-up (forward -Z, up Y) and says nothing about it;
+// Vernacular's files say which with `# up`. Either way objects come out
+// z-up, the grammar's frame: (x, y, z) of a y-up file is (x, -z, y).
+TEST(ObjReader, UpAxisIsDeclaredOrAssumed) {
+  const std::string body = "o wall\nv 1 2 3\nv 4 5 6\nv 7 8 9\nvn 0 1 0\nf 1//1 2//1 3//1\n";
+  const ObjLimits y_up;  // the default, as Blender exports
+  std::vector<ObjObject> objects = parse(body, y_up);
+  ASSERT_EQ(objects.size(), 1u);
+  EXPECT_EQ(objects[0].mesh.positions[0], glm::dvec3(1, -3, 2));
+  EXPECT_EQ(objects[0].mesh.normals[0], glm::dvec3(0, 0, 1));  // the file's up is up
+  // 0 stays 0, not -0 (which a grammar would print as "-0").
+  EXPECT_FALSE(std::signbit(parse("o a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", y_up)[0].mesh.positions[0].y));
+
+  EXPECT_EQ(parse("# up z\n" + body, y_up)[0].mesh.positions[0], glm::dvec3(1, 2, 3));
+  EXPECT_EQ(parse("# exported\n#   up   Y  \n" + body, as_written())[0].mesh.positions[0], glm::dvec3(1, -3, 2));
+  // Files an earlier Vernacular wrote, before it declared the axis, are z-up;
+  // a declaration after that first line still counts.
+  const std::string old_header = "# Written by Vernacular: one object per terminal, named by its label.\n";
+  EXPECT_EQ(parse(old_header + body, y_up)[0].mesh.positions[0], glm::dvec3(1, 2, 3));
+  EXPECT_EQ(parse(old_header + "# up y\n" + body, as_written())[0].mesh.positions[0], glm::dvec3(1, -3, 2));
+  EXPECT_EQ(parse("# Vernacular built-in primitive 'x'\n" + body, y_up)[0].mesh.positions[0], glm::dvec3(1, 2, 3));
+  // Other comments that start with "up" are only comments.
+  EXPECT_EQ(parse("# up to date\n" + body, y_up)[0].mesh.positions[0], glm::dvec3(1, -3, 2));
+
+  std::string e = error_of("# up x\n" + body);
+  EXPECT_NE(e.find("test.obj:1:6: error: '# up x' declares an up axis other than y or z"), std::string::npos) << e;
+  e = error_of("o wall\nv 1 2 3\n# up z\nv 4 5 6\nv 7 8 9\nf 1 2 3\n");
+  EXPECT_NE(e.find("test.obj:3:1: error: the up axis is declared after vertices"), std::string::npos) << e;
+  EXPECT_NE(e.find("move the `# up z` line to the top"), std::string::npos) << e;
+}
+
 TEST(ObjReader, ErrorsNameFileLineAndColumn) {
   const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   std::string e = error_of(tri + "o a\nf 1 2 4\n");
@@ -272,9 +312,9 @@ TEST(ObjReader, ReadAheadAgreesOnLargeTexts) {
   const std::string text = many_boxes(40000);
   ASSERT_GT(text.size(), std::size_t{5} << 20);
   std::istringstream in(text);
-  const std::vector<ObjObject> objects = read_obj(in, "test.obj");
+  const std::vector<ObjObject> objects = read_obj(in, "test.obj");  // y-up, turned by both
   ASSERT_EQ(objects.size(), 40000u);
-  EXPECT_TRUE(same_objects(objects, parse_ahead(text)));
+  EXPECT_TRUE(same_objects(objects, parse_ahead(text, {})));
   // An error far into the file, and a limit, name the same lines.
   const std::size_t middle = text.find('\n', text.size() / 2) + 1;
   for (const std::string& bad : {text + "f 1 2 999999999\n", text.substr(0, middle) + "v 1 x 2\n" + text}) {

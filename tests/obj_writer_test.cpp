@@ -73,15 +73,15 @@ TEST(ObjWriter, OneObjectPerTerminalWithItsMaterial) {
   }
   EXPECT_EQ(statements, (std::vector<std::string>{
                             "# Written by Vernacular: one object per terminal, named by its label.",
-                            "mtllib house.mtl", "# variant_000", "o rect", "usemtl rect", "o window",
+                            "# up y", "mtllib house.mtl", "# variant_000", "o rect", "usemtl rect", "o window",
                             "usemtl window"}));
 }
 
 TEST(ObjWriter, VerticesSitAtTheScopeCornersWithAbsoluteIndices) {
   const PrimitiveLibrary lib = PrimitiveLibrary::builtin();
-  const std::string text = obj_text(two_terminal_scene(), lib, "");
+  const std::string text = obj_text(two_terminal_scene(), lib, "", UpAxis::Z);
   const auto lines = lines_of(text);
-  // The box's vertices are exactly the scope's corners.
+  // The box's vertices are exactly the scope's corners (z-up: as the grammar has them).
   std::vector<std::string> box_vertices;
   std::size_t i = 0;
   while (lines[i] != "o rect") ++i;
@@ -213,10 +213,12 @@ TEST(ObjWriter, WritesObjAndSiblingMtl) {
   const auto objects = read_obj_file(dir / "house.obj");
   EXPECT_EQ(objects.size(), 2u);
   std::ifstream obj(dir / "house.obj");
-  std::string first, second;
+  std::string first, second, third;
   std::getline(obj, first);
   std::getline(obj, second);
-  EXPECT_EQ(second, "mtllib house.mtl");
+  std::getline(obj, third);
+  EXPECT_EQ(second, "# up y");
+  EXPECT_EQ(third, "mtllib house.mtl");
   std::ifstream mtl(dir / "house.mtl");
   const std::string mtl_contents((std::istreambuf_iterator<char>(mtl)), {});
   EXPECT_EQ(mtl_contents, mtl_text(scene));

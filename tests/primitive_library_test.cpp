@@ -265,7 +265,7 @@ TEST(PrimitiveLibrary, LoadedFolderReplacesBuiltinsAndAddsByFileStem) {
 TEST(PrimitiveLibrary, LoadedFileGivesOnePrimitivePerObjectName) {
   TempDir dir;
   const fs::path file = dir.write("style.prims.obj",
-                                  "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                  "# up z\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
                                   "f 1 3 2\n"  // before any `o`: named by the file's stem
                                   "o arch\nf 1 2 4\n"
                                   "o pillar\nf 1 4 3\n"

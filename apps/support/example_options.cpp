@@ -9,6 +9,9 @@ void add_example_options(CommandLine& cl) {
   cl.add({"--allow-outside-files", "", 0, "",
           "a glTF's URIs may name files outside its folder ('..', absolute paths, links out);\n"
           "without it they are refused: a glTF from elsewhere chooses them"});
+  cl.add({"--up", "", 1, "y|z",
+          "the up axis of OBJ examples that do not declare one with a `# up` line\n"
+          "(default y, as Blender exports OBJ; glTF is always y-up)"});
 }
 
 ExampleLimits example_limits(const ParsedCommandLine& args) {
@@ -21,6 +24,7 @@ ExampleLimits example_limits(const ParsedCommandLine& args) {
   if (args.has("--max-gltf-mib"))
     limits.gltf.max_bytes = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-gltf-mib", 1, 4095)) << 20;
   limits.gltf.outside_folder = args.has("--allow-outside-files");
+  if (args.has("--up")) limits.obj_up = *parse_up_axis(CommandLine::one_of(args, "--up", {"y", "z"}));
   return limits;
 }
 

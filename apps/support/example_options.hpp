@@ -7,7 +7,7 @@
 
 namespace vern {
 
-// --max-parts, --max-faces, --max-gltf-mib, --allow-outside-files.
+// --max-parts, --max-faces, --max-gltf-mib, --allow-outside-files, --up.
 void add_example_options(CommandLine& cl);
 
 // The limits those options give (Usage errors for values out of range).

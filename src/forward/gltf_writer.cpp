@@ -13,6 +13,7 @@
 #include "forward/gltf_container.hpp"
 #include "forward/json_text.hpp"
 #include "forward/palette.hpp"
+#include "forward/up_axis.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"
 #include "graph/spill_file.hpp"
@@ -235,6 +236,20 @@ std::array<double, 16> scope_matrix(const Scope& s) {
   return m;
 }
 
+// A variant's root: its offset, and the quarter turn from the grammar's
+// z-up frame to glTF's y-up (up_axis.hpp), column-major. Turned here, at
+// the root, the parts beneath keep their grammar-frame matrices and
+// instances; its entries are 0, 1 and -1, so reading back is exact.
+std::array<double, 16> y_up_root_matrix(const glm::dvec3& offset) {
+  std::array<double, 16> m{};
+  for (int c = 0; c < 4; ++c) {
+    const glm::dvec3 column = z_up_to_y_up(c < 3 ? glm::dvec3(glm::dmat3(1.0)[c]) : offset);
+    for (int r = 0; r < 3; ++r) m[static_cast<std::size_t>(4 * c + r)] = column[r];
+  }
+  m[15] = 1.0;
+  return m;
+}
+
 // One glTF mesh: a primitive's geometry with one material.
 struct MeshUse {
   std::string name;
@@ -322,9 +337,7 @@ struct GltfStream::State {
   void add_plain(const Variant& variant) {
     const std::size_t n = variant.terminals.size();
     nodes.open_object().field("name", variant.name);
-    if (variant.offset != glm::dvec3(0.0)) {
-      nodes.key("translation").numbers(std::array<double, 3>{variant.offset.x, variant.offset.y, variant.offset.z});
-    }
+    nodes.key("matrix").numbers(y_up_root_matrix(variant.offset));
     if (n > 0) {  // a node's children list must not be empty
       nodes.key("children").open_array();
       for (std::size_t c = 1; c <= n; ++c) nodes.integer(static_cast<std::int64_t>(next_node + c));
@@ -490,7 +503,7 @@ struct GltfStream::State {
     std::size_t node = 0, group = 0;
     for (const VariantHead& v : heads) {
       json.open_object().field("name", v.name);
-      if (v.offset != glm::dvec3(0.0)) json.key("translation").numbers(std::array<double, 3>{v.offset.x, v.offset.y, v.offset.z});
+      json.key("matrix").numbers(y_up_root_matrix(v.offset));
       if (v.groups > 0) {  // a node's children list must not be empty
         json.key("children").open_array();
         for (std::size_t c = 1; c <= v.groups; ++c) json.integer(static_cast<std::int64_t>(node + c));

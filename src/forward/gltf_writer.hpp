@@ -3,7 +3,8 @@
 // Each (primitive, material) pair in use is one glTF mesh whose triangles
 // (polygons fanned from their first corner; primitive faces are convex) are
 // stored once. Materials match the OBJ writer's (palette.hpp). The node tree
-// has one root per variant, named after it and translated by its offset.
+// has one root per variant, named after it, whose matrix moves it by its
+// offset and turns the grammar's z-up frame to glTF's y-up (up_axis.hpp).
 // Beneath it, one of two layouts:
 //   - plain (default): one child per terminal, named by its label, whose
 //     matrix maps the unit box onto the terminal's scope (columns
@@ -13,7 +14,10 @@
 //     terminals as EXT_mesh_gpu_instancing translations, rotations and
 //     scales (floats). Files are several times smaller and faster to write
 //     and to draw; the extension is marked required, so viewers without it
-//     refuse the file rather than show nothing.
+//     refuse the file rather than show one stray part per mesh. It cannot
+//     be optional: a fallback of plain nodes would be drawn twice by the
+//     viewers that read the extension, and would cost the plain layout's
+//     size on top (city, 10 buildings: 0.88 MB instanced, 3.04 MB plain).
 // Same scene, same bytes, whether given whole or variant by variant
 // (GltfStream: what `generate` does, so that its memory does not grow with
 // the number of buildings).

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <fstream>
 #include <string_view>
 
@@ -95,13 +96,17 @@ class Reader {
             "give a Wavefront OBJ text file (for glTF or GLB examples use a .gltf/.glb path)");
     }
     tokenize(line, tokens_);
-    if (tokens_.empty()) return;
+    if (tokens_.empty()) {
+      read_comment(line);
+      return;
+    }
     const std::string_view key = tokens_[0].text;
     if (key == "v") {
-      positions_.push_back(read_vector(3, 3, "vertex", kXyz));
-      check_magnitude(positions_.back());
+      const glm::dvec3 p = read_vector(3, 3, "vertex", kXyz);
+      check_magnitude(p);
+      positions_.push_back(to_z_up(p, up_));
     } else if (key == "vn") {
-      normals_.push_back(read_vector(3, 3, "normal", kXyz));
+      normals_.push_back(to_z_up(read_vector(3, 3, "normal", kXyz), up_));
     } else if (key == "vt") {
       const glm::dvec3 t = read_vector(1, 2, "texture coordinate", kUvw);
       uvs_.push_back({t.x, t.y});
@@ -251,6 +256,33 @@ class Reader {
     }
   }
 
+  // A comment may declare the file's up axis (obj_reader.hpp): `# up y`
+  // or `# up z` before the first vertex. The first line of a file an
+  // earlier Vernacular wrote, without one, means z.
+  void read_comment(std::string_view line) {
+    const std::size_t hash = line.find('#');
+    if (hash == std::string_view::npos) return;  // a blank line
+    const std::string_view text = line.substr(hash + 1);
+    if (line_ == 1 && (text.starts_with(" Written by Vernacular") || text.starts_with(" Vernacular built-in primitive"))) {
+      up_ = UpAxis::Z;
+      return;
+    }
+    std::vector<Token> words;
+    tokenize(text, words);
+    if (words.size() != 2 || words[0].text != "up") return;  // any other comment
+    const std::size_t column = hash + 1 + words[1].column;
+    const std::optional<UpAxis> up = parse_up_axis(words[1].text);
+    if (!up) {
+      error(column, "'# up " + std::string(words[1].text) + "' declares an up axis other than y or z",
+            "write `# up y` (as Blender exports OBJ by default) or `# up z`, or remove the line");
+    }
+    if (positions_.size() + normals_.size() > 0) {
+      error(hash + 1, "the up axis is declared after vertices, which were read with another",
+            "move the `# up " + std::string(words[1].text) + "` line to the top of the file");
+    }
+    up_ = *up;
+  }
+
   static bool is_ignored(std::string_view key) {
     for (std::string_view k : kIgnored) {
       if (k == key) return true;
@@ -381,7 +413,7 @@ class Reader {
   }
 
   void add_plain_vertex(const glm::dvec3& v) {
-    positions_.push_back(v);
+    positions_.push_back(to_z_up(v, up_));
     recognised_ = true;
   }
 
@@ -414,6 +446,7 @@ class Reader {
   const std::string& source_;
   const ObjLimits& limits_;
   const ObjObjectSink& each_;
+  UpAxis up_ = limits_.undeclared_up;  // the file's, once it declares one
   std::uint32_t line_ = 0;
   std::vector<Token> tokens_;
   std::vector<std::uint32_t> plain_indices_;  // a plain face's, reused

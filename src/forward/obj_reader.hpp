@@ -14,6 +14,13 @@
 // (counting back from the latest element), `\` line continuations.
 // Ignored: comments, mtllib, usemtl, s, l, p and the free-form geometry
 // statements. Names are kept exactly as written ("window.001" stays).
+//
+// Up axis (up_axis.hpp): objects come out z-up, the grammar's frame. A file
+// declares its own with a comment line `# up y` or `# up z` before its
+// first vertex (what the OBJ writer puts at its top); files Vernacular
+// wrote before it declared one (a first line "# Written by Vernacular..."
+// or "# Vernacular built-in primitive...") are z-up; any other file is
+// read with ObjLimits::undeclared_up, y by default, as Blender writes.
 #pragma once
 
 #include <cstdint>
@@ -24,6 +31,7 @@
 #include <vector>
 
 #include "forward/mesh.hpp"
+#include "forward/up_axis.hpp"
 
 namespace vern {
 
@@ -56,6 +64,9 @@ struct ObjLimits {
   // The same for the faces of one object (or group, in a file without `o`).
   std::size_t max_faces = 0;
   std::string too_many_faces_hint;
+  // Not a limit, but how every file is read: the up axis of a file that
+  // does not declare one (see the top of this file; infer/check --up).
+  UpAxis undeclared_up = UpAxis::Y;
 };
 
 // The objects of an OBJ text in file order, one per `o` (or `g`) statement
@@ -64,8 +75,9 @@ struct ObjLimits {
 // that is 0 or out of range, a coordinate that is not a finite number or
 // beyond kMaxObjCoordinate, a face with fewer than 3 corners, a name that
 // is not UTF-8, or text that is not OBJ (a NUL byte, an unknown statement
-// before any OBJ statement, a line longer than kMaxObjLine); (Limit) past
-// limits.max_objects or limits.max_faces.
+// before any OBJ statement, a line longer than kMaxObjLine), a `# up`
+// declaration naming another axis than y or z, or coming after a vertex;
+// (Limit) past limits.max_objects or limits.max_faces.
 std::vector<ObjObject> read_obj(std::istream& in, const std::string& source_name, const ObjLimits& limits = {});
 
 // The same for a file; throws vern::Error (Io) when it is missing, a folder

@@ -73,8 +73,8 @@ constexpr std::size_t kPiece = 1 << 20;
 }  // namespace
 
 ObjStream::ObjStream(std::vector<std::string> labels, const PrimitiveLibrary& library, const std::string& mtl_file_name,
-                     std::function<void(std::string_view)> write)
-    : labels_(std::move(labels)), materials_(labels_.size()), write_(std::move(write)) {
+                     std::function<void(std::string_view)> write, UpAxis up)
+    : labels_(std::move(labels)), materials_(labels_.size()), write_(std::move(write)), up_(up) {
   // The mesh each label inserts: the library's, or its box for unknown names.
   meshes_.resize(labels_.size());
   for (std::size_t i = 0; i < meshes_.size(); ++i) {
@@ -82,6 +82,9 @@ ObjStream::ObjStream(std::vector<std::string> labels, const PrimitiveLibrary& li
     meshes_[i] = m != nullptr ? m : &library.box();
   }
   out_ += "# Written by Vernacular: one object per terminal, named by its label.\n";
+  out_ += "# up ";
+  out_ += up_axis_name(up_);
+  out_ += '\n';
   if (!mtl_file_name.empty()) out_ += "mtllib " + mtl_file_name + "\n";
 }
 
@@ -96,7 +99,7 @@ void ObjStream::add(const Variant& variant) {
     out += "\nusemtl ";
     out += materials_.materials()[material].name;
     out += '\n';
-    for (const glm::dvec3& p : mesh.positions) append_vec3(out, "v", t.scope.to_world(p) + variant.offset);
+    for (const glm::dvec3& p : mesh.positions) append_vec3(out, "v", from_z_up(t.scope.to_world(p) + variant.offset, up_));
     for (const glm::dvec2& uv : mesh.uvs) {
       out += "vt ";
       append_number(out, uv.x);
@@ -105,7 +108,7 @@ void ObjStream::add(const Variant& variant) {
       out += '\n';
     }
     const NormalMap to_world(t.scope);
-    for (const glm::dvec3& n : mesh.normals) append_vec3(out, "vn", to_world(n));
+    for (const glm::dvec3& n : mesh.normals) append_vec3(out, "vn", from_z_up(to_world(n), up_));
 
     std::size_t corner = 0;
     for (std::uint32_t size : mesh.face_sizes) {
@@ -139,9 +142,10 @@ void ObjStream::flush() {
 
 std::string ObjStream::mtl_text() const { return mtl_text_of(materials_.materials()); }
 
-std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const std::string& mtl_file_name) {
+std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const std::string& mtl_file_name,
+                     UpAxis up) {
   std::string text;
-  ObjStream stream(scene.labels, library, mtl_file_name, [&](std::string_view piece) { text.append(piece); });
+  ObjStream stream(scene.labels, library, mtl_file_name, [&](std::string_view piece) { text.append(piece); }, up);
   for (const Variant& v : scene.variants) stream.add(v);
   stream.flush();
   return text;
@@ -161,16 +165,17 @@ void check_obj_path(const std::filesystem::path& obj_path) {
 }
 
 void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path,
-               OutputFiles& outputs) {
+               OutputFiles& outputs, UpAxis up) {
   check_obj_path(obj_path);
   const std::filesystem::path mtl_path = mtl_path_for(obj_path);
   outputs.stage(mtl_path, mtl_text(scene));
-  outputs.stage(obj_path, obj_text(scene, library, mtl_path.filename().string()));
+  outputs.stage(obj_path, obj_text(scene, library, mtl_path.filename().string(), up));
 }
 
-void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path) {
+void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path,
+               UpAxis up) {
   OutputFiles outputs;
-  write_obj(scene, library, obj_path, outputs);
+  write_obj(scene, library, obj_path, outputs, up);
   outputs.commit();
 }
 

@@ -5,7 +5,10 @@
 // by its scope (to_world) and moved by its variant's offset; indices are
 // absolute and 1-based. A `# <variant name>` comment starts each variant.
 // Materials: one per distinct colour for coloured terminals, one per label
-// otherwise (see palette.hpp). Same scene, same bytes.
+// otherwise (see palette.hpp). Coordinates are turned to the up axis asked
+// for (up_axis.hpp; y by default, as Blender imports OBJ), which a `# up y`
+// or `# up z` line at the top declares, so that the reader turns them back
+// whatever it would assume. Same scene, same bytes.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +21,7 @@
 #include "forward/palette.hpp"
 #include "forward/primitive_library.hpp"
 #include "forward/terminal.hpp"
+#include "forward/up_axis.hpp"
 #include "graph/atomic_file.hpp"
 
 namespace vern {
@@ -30,7 +34,7 @@ namespace vern {
 class ObjStream {
  public:
   ObjStream(std::vector<std::string> labels, const PrimitiveLibrary& library, const std::string& mtl_file_name,
-            std::function<void(std::string_view)> write);
+            std::function<void(std::string_view)> write, UpAxis up = UpAxis::Y);
   // Throws vern::Error (Internal) for a terminal's label outside `labels`.
   void add(const Variant& variant);
   // Writes what is still held; call after the last add().
@@ -46,6 +50,7 @@ class ObjStream {
   std::function<void(std::string_view)> write_;
   std::string out_;
   std::uint64_t positions_ = 0, uvs_ = 0, normals_ = 0;  // written so far
+  UpAxis up_;
 };
 
 // Throws vern::Error (Usage) when the path does not end in .obj (its MTL
@@ -54,7 +59,8 @@ void check_obj_path(const std::filesystem::path& obj_path);
 
 // The OBJ text; it names mtl_file_name in its `mtllib` line (omitted when
 // empty). Labels the library does not know are written as its box().
-std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const std::string& mtl_file_name);
+std::string obj_text(const Scene& scene, const PrimitiveLibrary& library, const std::string& mtl_file_name,
+                     UpAxis up = UpAxis::Y);
 
 // The MTL text defining the materials obj_text uses.
 std::string mtl_text(const Scene& scene);
@@ -67,9 +73,10 @@ std::filesystem::path mtl_path_for(const std::filesystem::path& obj_path);
 // Throws vern::Error: Io when a file cannot be written, Usage when the
 // path does not end in .obj (its MTL file would be itself).
 void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path,
-               OutputFiles& outputs);
+               OutputFiles& outputs, UpAxis up = UpAxis::Y);
 
 // The same as a run of its own: both files written, then both replaced.
-void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path);
+void write_obj(const Scene& scene, const PrimitiveLibrary& library, const std::filesystem::path& obj_path,
+               UpAxis up = UpAxis::Y);
 
 }  // namespace vern

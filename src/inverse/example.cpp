@@ -116,7 +116,8 @@ Example load_obj_example(const fs::path& path, const ExampleLimits& limits, bool
   // Objects arrive while the file is read: an unnamed one is reported once
   // the whole file has been read, so that errors further on come first.
   std::optional<std::uint32_t> unnamed;
-  const ObjLimits obj_limits{limits.max_parts, too_many_parts_hint(limits), limits.max_faces, too_many_faces_hint(limits)};
+  const ObjLimits obj_limits{limits.max_parts, too_many_parts_hint(limits), limits.max_faces, too_many_faces_hint(limits),
+                             limits.obj_up};
   read_obj_file(path, obj_limits, [&](const ObjObject& o) {
     if (o.name.empty()) {
       if (!unnamed) unnamed = o.line;
@@ -528,7 +529,11 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
   // Each node is visited once, so a malformed file with cycles still ends.
   std::vector<bool> visited(model.nodes.size(), false);
   std::vector<std::pair<int, glm::dmat4>> stack;
-  for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, glm::dmat4(1.0));
+  // glTF is y-up: the roots are turned z-up, exactly (a permutation with
+  // one sign), so a file `generate` wrote gives back its grammar's numbers.
+  glm::dmat4 z_up(1.0);
+  for (int c = 0; c < 3; ++c) z_up[c] = glm::dvec4(y_up_to_z_up(glm::dvec3(glm::dmat3(1.0)[c])), 0.0);
+  for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, z_up);
   while (!stack.empty()) {
     const auto [index, parent] = stack.back();
     stack.pop_back();

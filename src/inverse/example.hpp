@@ -11,8 +11,10 @@
 // and the whole mesh of the first part of each label, its canonical mesh:
 // only those meshes are kept, so that a million parts fit in little memory.
 //
-// Coordinates stay as the file has them (world space). "Each example is
-// placed at its own origin": callers translate by -min.
+// Coordinates are the file's world space turned z-up (forward/up_axis.hpp):
+// glTF is y-up by its specification; an OBJ declares its up axis with a
+// `# up` line or is read with ExampleLimits::obj_up (forward/obj_reader.hpp).
+// "Each example is placed at its own origin": callers translate by -min.
 #pragma once
 
 #include <cstdint>
@@ -24,6 +26,7 @@
 #include <glm/glm.hpp>
 
 #include "forward/mesh.hpp"
+#include "forward/up_axis.hpp"
 #include "inverse/gltf_files.hpp"
 #include "inverse/part_positions.hpp"
 
@@ -63,6 +66,9 @@ struct ExampleLimits {
   // Which files a glTF may have read, and how large (gltf_files.hpp;
   // infer/check --allow-outside-files, --max-gltf-mib).
   GltfFileRules gltf;
+  // Not a limit: the up axis of an OBJ that does not declare one
+  // (infer/check --up; y, as Blender exports OBJ by default).
+  UpAxis obj_up = UpAxis::Y;
 };
 
 // Reads a labelled example: .obj (each object one part), .glb or .gltf
