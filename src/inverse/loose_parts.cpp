@@ -44,22 +44,37 @@ bool meet(double lo_a, double hi_a, double lo_b, double hi_b, double tolerance) 
 std::vector<Mesh> loose_pieces(const Mesh& mesh) {
   const std::size_t n = mesh.positions.size();
   if (mesh.face_sizes.size() < 2 || n == 0) return {};
-  // Vertices at the same position are one vertex.
   UnionFind sets(n);
+  auto join_faces = [&] {
+    std::size_t start = 0;
+    for (const std::uint32_t size : mesh.face_sizes) {
+      for (std::uint32_t k = 1; k < size; ++k) sets.join(mesh.corners[start].position, mesh.corners[start + k].position);
+      start += size;
+    }
+  };
+  auto whole = [&] {
+    const std::uint32_t first = sets.find(mesh.corners.front().position);
+    std::size_t start = 0;
+    for (const std::uint32_t size : mesh.face_sizes) {
+      if (sets.find(mesh.corners[start].position) != first) return false;
+      start += size;
+    }
+    return true;
+  };
+  // Faces sharing vertices: most meshes (an OBJ box) are whole by this
+  // alone, without hashing every position (a million-part example).
+  join_faces();
+  if (whole()) return {};
+  // Vertices at the same position are one vertex.
   std::unordered_map<glm::dvec3, std::uint32_t, PositionHash> first_at;
   first_at.reserve(n);
   for (std::uint32_t i = 0; i < n; ++i) {
     const auto [it, fresh] = first_at.try_emplace(mesh.positions[i], i);
     if (!fresh) sets.join(i, it->second);
   }
-  std::size_t start = 0;
-  for (const std::uint32_t size : mesh.face_sizes) {
-    for (std::uint32_t k = 1; k < size; ++k) sets.join(mesh.corners[start].position, mesh.corners[start + k].position);
-    start += size;
-  }
   // Pieces in order of their first face.
   std::unordered_map<std::uint32_t, std::uint32_t> piece_of_root;
-  start = 0;
+  std::size_t start = 0;
   for (const std::uint32_t size : mesh.face_sizes) {
     piece_of_root.try_emplace(sets.find(mesh.corners[start].position), static_cast<std::uint32_t>(piece_of_root.size()));
     start += size;
