@@ -9,7 +9,8 @@
 
 namespace vern {
 
-NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book, double tolerance) {
+NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book, double tolerance,
+                  std::vector<std::pair<NodeId, NodeId>>* rebuilt) {
   std::vector<NodeId> replace;
   std::unordered_set<NodeId> seen;
   std::vector<NodeId> stack{root};
@@ -48,9 +49,10 @@ NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book
   }
   if (!any) return root;
   // Splits above a rewritten node are rebuilt: their values go with them.
-  std::vector<std::pair<NodeId, NodeId>> rebuilt;
-  root = substitute_until_settled(g, root, replace, &rebuilt);
-  carry_samples(rebuilt, book);
+  std::vector<std::pair<NodeId, NodeId>> moved;
+  root = substitute_until_settled(g, root, replace, &moved);
+  carry_samples(moved, book);
+  if (rebuilt) rebuilt->insert(rebuilt->end(), moved.begin(), moved.end());
   return root;
 }
 

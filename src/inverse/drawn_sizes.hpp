@@ -19,7 +19,10 @@ namespace vern {
 
 // Rewrites the splits below root that `rows` knows and whose plan changes
 // a size; the drawn sizes' values go into book, for fitting. Returns the
-// new root.
-NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book, double tolerance);
+// new root. Nodes above a rewritten split are rebuilt: each (old, new)
+// pair is appended to `rebuilt` when given, so that what else is noted
+// of the old node (a repeat's tile counts) can go with it.
+NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book, double tolerance,
+                  std::vector<std::pair<NodeId, NodeId>>* rebuilt = nullptr);
 
 }  // namespace vern

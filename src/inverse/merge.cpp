@@ -765,7 +765,12 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   // their share, and relative parts in fixed ratios where they keep them:
   // decided once the structure is settled, so that no unification above
   // is kept apart by it.
-  everywhere([&](NodeId n) { return draw_sizes(g, n, rows, book, options.tolerance); });
+  everywhere([&](NodeId n) {
+    std::vector<std::pair<NodeId, NodeId>> rebuilt;
+    const NodeId drawn = draw_sizes(g, n, rows, book, options.tolerance, &rebuilt);
+    carry_notes(rebuilt, book, tile_counts);  // a repeat above a drawn split keeps its counts
+    return drawn;
+  });
   everywhere([&](NodeId n) { return settle_repeats(g, n, tile_counts, book, options.tolerance); });
   Fitter fitter(g, options, book);
   everywhere([&](NodeId n) { return fitter.run(n); });

@@ -25,6 +25,22 @@ std::optional<double> shortest_decimal_in(double lo, double hi) {
   return std::nullopt;
 }
 
+// Whether tiles of size t give every count seen on its length, and still
+// do on a length a tolerance longer. A tile at the very end of a length's
+// range gives its count only on that length: a length known to the
+// tolerance (an example far from the origin, in single precision) may
+// come out a hair longer where the grammar derives it, and so one tile
+// more. Only a length the tile divides exactly (4 m tiles on 8 m) may be
+// at the end.
+bool gives_every_count_firmly(const std::vector<TileSeen>& seen, double t, double tolerance) {
+  return std::ranges::all_of(seen, [&](const TileSeen& s) {
+    const double n = s.count;
+    if (repeat_tile_count(s.length, t) != n) return false;
+    const double q = s.length / t;
+    return std::abs(q - std::round(q)) <= 1e-9 * std::max(1.0, q) || repeat_tile_count(s.length + tolerance, t) == n;
+  });
+}
+
 }  // namespace
 
 std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tolerance) {
@@ -44,9 +60,7 @@ std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tole
     if (!(hi > lo)) continue;
     const auto t = shortest_decimal_in(lo, hi);
     if (!t) continue;
-    const bool gives_every_count = std::ranges::all_of(
-        seen, [&](const TileSeen& s) { return repeat_tile_count(s.length, *t) == static_cast<double>(s.count); });
-    if (gives_every_count) return t;
+    if (gives_every_count_firmly(seen, *t, tolerance)) return t;
   }
   return std::nullopt;
 }
@@ -58,7 +72,11 @@ NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, Sa
     if (id >= replace.size() || seen.empty()) continue;
     const auto* r = std::get_if<Repeat>(&g.op(id));
     const auto tile = r ? literal_range(r->size) : std::nullopt;
-    if (!tile || tile->hi - tile->lo <= tolerance) continue;
+    if (!tile) continue;
+    // One size already: kept where it gives the counts firmly, else moved
+    // into their ranges (below).
+    const bool one_size = tile->hi - tile->lo <= tolerance;
+    if (one_size && gives_every_count_firmly(seen, tile->lo, tolerance)) continue;
     // One tile size that makes every count seen on its length explains the
     // examples in one number, where a range needs two and draws counts the
     // examples never had: the tile of the source, or as near as the
@@ -70,6 +88,7 @@ NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, Sa
       any = true;
       continue;
     }
+    if (one_size) continue;  // no firmer size: as it was
     const std::uint32_t n = seen[0].count;
     if (n >= 2 && std::all_of(seen.begin(), seen.end(), [&](const TileSeen& t) { return t.count == n; })) {
       RepeatN counted{r->axis, Expr::number(n), r->child};

@@ -13,7 +13,9 @@ namespace vern {
 // count seen there (n tiles on L: any size in [L/n, L/(n-1))), nearest the
 // middle of what they allow among those as short: the lengths as they are
 // first (4 m tiles on 4 and 8 m are 4), else each known only to the
-// tolerance (noisy files); none when no one size does.
+// tolerance (noisy files); either way the size must still give each count
+// on a length a tolerance longer, unless it divides the length exactly.
+// None when no one size does.
 std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tolerance);
 
 // Repeats whose tile sizes vary, once merging has settled (rows that
@@ -32,6 +34,11 @@ std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tole
 //     between them would make more tiles, on average, than the examples
 //     had. L/(n - 1/2) makes the same n tiles on L, and so does the
 //     shortest decimal near it.
+// A repeat of one tile size already keeps it where it gives every count
+// seen, and still on a length a tolerance longer (or one it divides
+// exactly); else it takes common_tile's: merging may have made one size
+// of tiles that agree within the tolerance, and on a row of thirty a
+// centimetre is one tile more.
 // Returns the new root; the centred tile sizes' values go into book, for
 // fitting.
 NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, SampleBook& book, double tolerance);
