@@ -44,6 +44,7 @@ MeasuredResult run_program_measured(const std::string& program, const std::vecto
                                     const fs::path& folder, ChildLimits limits) {
   ChildSetup setup;
   setup.limits = limits;
+  setup.measure_peak = true;
   ChildProcess child(program, args, folder, setup);
   const ChildProcess::Ended ended = child.wait();
   return {ended.result, ended.peak_kib};

@@ -8,14 +8,18 @@
 #include <unistd.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace vern::test {
 
 ChildProcess::ChildProcess(const std::string& program, const std::vector<std::string>& args,
                            const std::filesystem::path& folder, const ChildSetup& setup) {
   const std::string out = (capture_ / "out").string(), err = (capture_ / "err").string();
-  const std::string binary = std::string(VERN_BIN_DIR) + "/" + program;
+  const std::string tool = std::string(VERN_BIN_DIR) + "/" + program;
+  measured_ = setup.measure_peak;
+  const std::string binary = measured_ ? std::string(VERN_PEAK_METER) : tool;
   std::vector<std::string> words{binary};
+  if (measured_) words.insert(words.end(), {(capture_ / "peak").string(), tool});
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& w : words) argv.push_back(w.data());
@@ -60,15 +64,18 @@ ChildProcess::~ChildProcess() {
 
 ChildProcess::Ended ChildProcess::wait() {
   int status = 0;
-  rusage usage{};
-  if (wait4(pid_, &status, 0, &usage) != pid_) throw std::runtime_error("wait4 failed");
+  if (waitpid(pid_, &status, 0) != pid_) throw std::runtime_error("waitpid failed");
   pid_ = -1;
   Ended r;
   r.result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
   r.result.out = read_file(capture_ / "out");
   r.result.err = read_file(capture_ / "err");
-  r.peak_kib = usage.ru_maxrss;
+  if (measured_) {
+    const std::string peak = read_file(capture_ / "peak");
+    if (peak.empty()) throw std::runtime_error("vern_peak wrote no peak memory");
+    r.peak_kib = std::stol(peak);
+  }
   return r;
 }
 

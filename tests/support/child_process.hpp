@@ -27,6 +27,10 @@ struct ChildSetup {
   ChildLimits limits;
   int umask = -1;                   // the umask it starts with (-1: the test's own)
   std::vector<int> ignored_signals;  // SIG_IGN when it starts, as `nohup` leaves SIGHUP
+  // Started through vern_peak (tests/tools/peak_meter.cpp), so that
+  // Ended::peak_kib is the program's own and not the test process's: the
+  // process the test sends signals to is then vern_peak, not the program.
+  bool measure_peak = false;
 };
 
 class ChildProcess {
@@ -45,7 +49,7 @@ class ChildProcess {
   struct Ended {
     CommandResult result;  // exit_code -1 when a signal ended it
     int signal = 0;        // the signal that ended it, or 0
-    long peak_kib = 0;     // peak resident memory (getrusage of the waited child)
+    long peak_kib = 0;     // peak resident memory (ChildSetup::measure_peak), else 0
   };
   // Waits for the child to end.
   Ended wait();
@@ -53,6 +57,7 @@ class ChildProcess {
  private:
   TempFolder capture_;
   pid_t pid_ = -1;
+  bool measured_ = false;
 };
 
 }  // namespace vern::test
