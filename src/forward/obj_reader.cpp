@@ -267,7 +267,11 @@ class Reader {
       up_ = UpAxis::Z;
       return;
     }
-    std::vector<Token> words;
+    // Most comments are not declarations (exporters' remarks, a 200 MB
+    // file of them): a look at the first word before any tokenizing.
+    const std::size_t first = text.find_first_not_of(" \t");
+    if (first == std::string_view::npos || text.substr(first, 2) != "up") return;
+    std::vector<Token>& words = comment_words_;
     tokenize(text, words);
     if (words.size() != 2 || words[0].text != "up") return;  // any other comment
     const std::size_t column = hash + 1 + words[1].column;
@@ -449,6 +453,7 @@ class Reader {
   UpAxis up_ = limits_.undeclared_up;  // the file's, once it declares one
   std::uint32_t line_ = 0;
   std::vector<Token> tokens_;
+  std::vector<Token> comment_words_;  // a comment's, reused
   std::vector<std::uint32_t> plain_indices_;  // a plain face's, reused
   bool recognised_ = false;
   bool any_object_ = false;
