@@ -49,11 +49,7 @@ NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book
   }
   if (!any) return root;
   // Splits above a rewritten node are rebuilt: their values go with them.
-  std::vector<std::pair<NodeId, NodeId>> moved;
-  root = substitute_until_settled(g, root, replace, &moved);
-  carry_samples(moved, book);
-  if (rebuilt) rebuilt->insert(rebuilt->end(), moved.begin(), moved.end());
-  return root;
+  return substitute_keeping_samples(g, root, replace, book, rebuilt);
 }
 
 }  // namespace vern

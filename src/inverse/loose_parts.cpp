@@ -5,6 +5,8 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "graph/expr.hpp"
+
 namespace vern {
 
 namespace {
@@ -25,7 +27,7 @@ struct UnionFind {
 struct PositionHash {
   std::size_t operator()(const glm::dvec3& p) const {
     std::size_t h = 0;
-    for (int i = 0; i < 3; ++i) h = h * 1000003u ^ std::hash<double>()(p[i] == 0.0 ? 0.0 : p[i]);  // -0 == 0
+    for (int i = 0; i < 3; ++i) h = hash_combine(h, std::hash<double>()(p[i] == 0.0 ? 0.0 : p[i]));  // -0 == 0
     return h;
   }
 };

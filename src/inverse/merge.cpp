@@ -666,16 +666,21 @@ class Fitter {
 
 }  // namespace
 
+// A rebuilt repeat keeps the tile counts of the node it replaces.
+void carry_tile_counts(const std::vector<std::pair<NodeId, NodeId>>& rebuilt, TileCounts& tile_counts) {
+  for (const auto& [old, now] : rebuilt) {
+    const auto it = tile_counts.find(old);
+    if (it == tile_counts.end() || tile_counts.count(now)) continue;
+    std::vector<TileSeen> counts = it->second;  // a copy: inserting below may move it
+    tile_counts.emplace(now, std::move(counts));
+  }
+}
+
 // Nodes rebuilt with new children keep their sizes: the values behind
 // their ranges and their tile counts carry over to the new node.
 void carry_notes(const std::vector<std::pair<NodeId, NodeId>>& rebuilt, SampleBook& book, TileCounts& tile_counts) {
-  for (const auto& [old, now] : rebuilt) {
-    if (const auto it = book.find(old); it != book.end()) book.try_emplace(now, it->second);
-    if (const auto it = tile_counts.find(old); it != tile_counts.end() && !tile_counts.count(now)) {
-      std::vector<TileSeen> counts = it->second;  // a copy: inserting below may move it
-      tile_counts.emplace(now, std::move(counts));
-    }
-  }
+  carry_samples(rebuilt, book);
+  carry_tile_counts(rebuilt, tile_counts);
 }
 
 namespace {
@@ -768,7 +773,7 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   everywhere([&](NodeId n) {
     std::vector<std::pair<NodeId, NodeId>> rebuilt;
     const NodeId drawn = draw_sizes(g, n, rows, book, options.tolerance, &rebuilt);
-    carry_notes(rebuilt, book, tile_counts);  // a repeat above a drawn split keeps its counts
+    carry_tile_counts(rebuilt, tile_counts);  // a repeat above a drawn split keeps its counts
     return drawn;
   });
   everywhere([&](NodeId n) { return settle_repeats(g, n, tile_counts, book, options.tolerance); });

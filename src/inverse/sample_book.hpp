@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "graph/node.hpp"
+#include "inverse/substitute.hpp"
 #include "inverse/fit_distribution.hpp"
 
 namespace vern {
@@ -26,6 +27,18 @@ inline void carry_samples(const std::vector<std::pair<NodeId, NodeId>>& rebuilt,
     std::vector<std::vector<Observation>> copy = it->second;  // a copy: inserting below may move it
     book.emplace(now, std::move(copy));
   }
+}
+
+// substitute_until_settled, the nodes rebuilt above a replaced one keeping
+// their values (carry_samples); each (old, new) pair is also appended to
+// `rebuilt` when given, for whatever else is noted of the old node.
+inline NodeId substitute_keeping_samples(Grammar& g, NodeId root, const std::vector<NodeId>& replace, SampleBook& book,
+                                         std::vector<std::pair<NodeId, NodeId>>* rebuilt = nullptr) {
+  std::vector<std::pair<NodeId, NodeId>> moved;
+  root = substitute_until_settled(g, root, replace, &moved);
+  carry_samples(moved, book);
+  if (rebuilt) rebuilt->insert(rebuilt->end(), moved.begin(), moved.end());
+  return root;
 }
 
 // The lengths behind a split built from several: one row per split of the

@@ -117,10 +117,7 @@ NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, Sa
   }
   if (!any) return root;
   // Splits above a rewritten node are rebuilt: their values go with them.
-  std::vector<std::pair<NodeId, NodeId>> rebuilt;
-  root = substitute_until_settled(g, root, replace, &rebuilt);
-  carry_samples(rebuilt, book);
-  return root;
+  return substitute_keeping_samples(g, root, replace, book);
 }
 
 }  // namespace vern
