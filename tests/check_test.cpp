@@ -358,6 +358,53 @@ TEST(CheckOperations, ChoicesAreTriedInOrderAndReported) {
   EXPECT_FALSE(check_text("p --> I(a) : 0\np --> I(b) : 1\n", {box("a", {0, 0, 0}, {1, 1, 1})}, {1, 1, 1}).derivable);
 }
 
+// The fewest matching steps (CheckOptions::max_steps) with which the
+// example still checks, or 0 when it does not check at all.
+std::uint64_t fewest_steps(const Grammar& g, const std::vector<LabelledBox>& boxes, glm::dvec3 size, bool learned) {
+  CheckOptions o;
+  o.learned_order = learned;
+  auto derivable = [&](std::uint64_t steps) {
+    o.max_steps = steps;
+    try {
+      return check_example(g, boxes, size, o).derivable;
+    } catch (const Error&) {
+      return false;
+    }
+  };
+  std::uint64_t lo = 0, hi = 100'000;
+  if (!derivable(hi)) return 0;
+  while (hi - lo > 1) {
+    const std::uint64_t mid = (lo + hi) / 2;
+    (derivable(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+TEST(CheckOperations, ALearnedOrderTriesFirstTheAlternativeThatMatchedMost) {
+  // Twenty cells, each a plain box: the first alternative, a stack, is
+  // tried and fails at every cell in the written order.
+  const Grammar g = parse_grammar(
+      "p --> repeat(x, 1){ cell }\n"
+      "cell --> split(z){ ~1 : I(a) | ~1 : split(z){ ~1 : I(a) | ~1 : I(a) } } : 1\n"
+      "cell --> I(a) : 1\n",
+      "test.grm");
+  std::vector<LabelledBox> boxes;
+  for (int i = 0; i < 20; ++i) boxes.push_back(box("a", {i, 0, 0}, {i + 1, 1, 1}));
+  const glm::dvec3 size{20, 1, 1};
+  const std::uint64_t written = fewest_steps(g, boxes, size, false);
+  const std::uint64_t learned = fewest_steps(g, boxes, size, true);
+  ASSERT_GT(written, 0u);
+  ASSERT_GT(learned, 0u);
+  // Once the second alternative has matched, it is tried first.
+  EXPECT_LT(learned, written);
+  EXPECT_LE(learned * 3, written * 2) << "written " << written << ", learned " << learned;
+  // The written order stays what a witness reports.
+  CheckOptions o;
+  const CheckResult r = check_example(g, boxes, size, o);
+  ASSERT_TRUE(r.derivable) << r.mismatch;
+  EXPECT_NE(joined(r.witness).find("alternative 2 of 2"), std::string::npos) << joined(r.witness);
+}
+
 TEST(CheckOperations, TheStepLimitIsAnError) {
   const Grammar g = read_grammar_file(VERN_SOURCE_DIR "/data/grammars/garage.grm");
   const CheckedExample e = derive_example(g, 1);

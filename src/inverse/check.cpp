@@ -29,8 +29,15 @@ struct ConstantChoice {
 class Checker {
  public:
   Checker(const Grammar& g, const std::vector<LabelledBox>& boxes, double tol, Budget& budget, const Scope& start,
-          bool text)
-      : g_(g), boxes_(boxes), tol_(tol), budget_(budget), deterministic_(g), start_(start), text_(text) {
+          bool text, bool learned_order)
+      : g_(g),
+        boxes_(boxes),
+        tol_(tol),
+        budget_(budget),
+        deterministic_(g),
+        start_(start),
+        text_(text),
+        learned_order_(learned_order) {
     for (std::size_t k = 0; k < boxes.size(); ++k) all_.push_back(static_cast<std::uint32_t>(k));
   }
 
@@ -112,7 +119,7 @@ class Checker {
   }
 
   void attempt(const ConstantChoice& c) {
-    Matcher m(g_, boxes_, tol_, budget_, deterministic_, c.slots, c.unknowns, floating_);
+    Matcher m(g_, boxes_, tol_, budget_, deterministic_, c.slots, c.unknowns, floating_, learned_order_);
     if (m.run(start_, all_)) {
       found_ = true;
       // The first line says what was matched, so even a grammar without
@@ -150,6 +157,7 @@ class Checker {
   std::vector<MatchedPart> parts_;
   std::vector<CheckStep> steps_;
   bool text_ = true;  // spell the witness out
+  bool learned_order_ = false;
   Mismatch best_;
   std::string uncheckable_;
   bool open_ends_ = false;
@@ -179,7 +187,7 @@ CheckResult check_example(const Grammar& grammar, const std::vector<LabelledBox>
     return r;
   }
   Budget budget(options.max_steps);
-  return Checker(grammar, boxes, tol, budget, start, options.witness).run();
+  return Checker(grammar, boxes, tol, budget, start, options.witness, options.learned_order).run();
 }
 
 }  // namespace vern

@@ -86,6 +86,16 @@ struct CheckOptions {
   std::uint64_t max_steps = 10'000'000;
   // Spell the witness out (CheckResult::witness); parts are kept either way.
   bool witness = true;
+  // Where any derivation that reproduces the example will do (a rewrite
+  // checked, lengths read): each choose tries first the alternatives that
+  // have matched most often so far in this example, ties in the written
+  // order. A city's cells are mostly plain towers, and its nested
+  // courtyards, written first, were tried and failed at each. Where two
+  // alternatives match, another derivation than the written order's may
+  // be found (its witness and parts), and where an early choice fails
+  // later, the answer may be "no": derives_examples() then asks again in
+  // the written order.
+  bool learned_order = false;
 };
 
 // Where in a derivation a node runs: a hash of the chain of nodes from

@@ -4,6 +4,7 @@
 // have few values and become unknowns (check_bindings.hpp) otherwise.
 #include "inverse/check_matcher.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -41,7 +42,17 @@ std::optional<Matcher::Options> Matcher::options_of(NodeId id, const Choose& op,
 bool Matcher::match_choose(NodeId id, const Choose& op, const Scope& s, const BoxList& inside) {
   auto o = options_of(id, op, s);
   if (!o) return false;
-  for (std::size_t i = 0; i < op.options.size(); ++i) {
+  // The written order, or (learned_order_) the alternatives that matched
+  // most often first, ties in the written order.
+  std::vector<std::uint32_t> order(op.options.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::vector<std::uint32_t>* wins = nullptr;
+  if (learned_order_ && op.options.size() > 1) {
+    wins = &wins_[id];
+    wins->resize(op.options.size(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return (*wins)[a] > (*wins)[b]; });
+  }
+  for (const std::uint32_t i : order) {
     if (!o->applicable[i]) continue;
     const std::size_t mark = witness_.size();
     if (op.options.size() > 1) {
@@ -51,7 +62,10 @@ bool Matcher::match_choose(NodeId id, const Choose& op, const Scope& s, const Bo
       witness_.push_back(std::move(w));
     }
     slot_ = static_cast<std::uint32_t>(i + 1);
-    if (match(op.options[i].child, s, inside)) return true;
+    if (match(op.options[i].child, s, inside)) {
+      if (wins) ++(*wins)[i];
+      return true;
+    }
     witness_.resize(mark);
   }
   if (o->nil_possible && inside.empty()) {

@@ -20,7 +20,7 @@ namespace vern::check_detail {
 
 Matcher::Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double tolerance, Budget& budget,
                  DeterministicSubtrees& deterministic, std::vector<Slot> constants, std::vector<Unknown> unknowns,
-                 bool floating)
+                 bool floating, bool learned_order)
     : g_(g),
       boxes_(boxes),
       tol_(tolerance),
@@ -29,7 +29,8 @@ Matcher::Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double
       vars_(std::move(constants), std::move(unknowns)),
       cuts_(boxes, tolerance),
       empty_(g, lookup_),
-      floating_(floating) {
+      floating_(floating),
+      learned_order_(learned_order) {
   lookup_ = [this](ExprKind kind, std::uint32_t index) { return vars_.binding(kind, index); };
 }
 

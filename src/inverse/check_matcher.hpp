@@ -94,7 +94,7 @@ class Matcher {
   // example whose boundaries all lie on box faces.
   Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double tolerance, Budget& budget,
           DeterministicSubtrees& deterministic, std::vector<Slot> constants, std::vector<Unknown> unknowns,
-          bool floating);
+          bool floating, bool learned_order = false);
 
   // Does the start rule, run on `start`, derive exactly the boxes `all`?
   bool run(const Scope& start, const BoxList& all);
@@ -263,6 +263,10 @@ class Matcher {
   std::string uncheckable_;
   bool open_ends_unsupported_ = false;
   bool floating_ = true;
+  // CheckOptions::learned_order: per choose, how often each alternative
+  // has matched so far.
+  bool learned_order_ = false;
+  std::unordered_map<NodeId, std::vector<std::uint32_t>> wins_;
   int depth_ = 0;
   int quiet_ = 0;
 };

@@ -527,6 +527,7 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   CheckOptions check;
   check.tolerance = options.tolerance;
   check.witness = false;  // the parts' lengths are all this step reads
+  check.learned_order = true;  // any derivation's lengths will do
   auto check_all = [&](const Grammar& grammar, std::vector<CheckResult>& results) {
     return derives_examples(grammar, placed, check, options.threads, results);
   };
