@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <string_view>
 #include <unordered_set>
 #include <utility>
 
@@ -145,11 +146,29 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;
 }
 
+// How messages name a glTF part: "node 3 'window.001'", and " instance 2"
+// after it for one instance of an instanced node. The text is made only
+// for a message: a file holds thousands of parts and rarely an error.
+struct PartName {
+  int node;
+  const std::string& name;  // the node's (may be empty)
+  std::optional<std::size_t> instance = {};
+
+  std::string text() const {
+    std::string text = "node " + std::to_string(node) + (name.empty() ? "" : " '" + name + "'");
+    if (instance) text += " instance " + std::to_string(*instance);
+    return text;
+  }
+};
+
 // One accessor's elements, read as doubles whatever their storage.
+// `attribute` names the accessor in messages ("POSITION": "node 3
+// 'wall': its POSITION accessor ...").
 class AccessorReader {
  public:
-  AccessorReader(const tinygltf::Model& model, int index, const std::string& source, const std::string& what)
-      : source_(source), what_(what) {
+  AccessorReader(const tinygltf::Model& model, int index, const std::string& source, const PartName& who,
+                 std::string_view attribute)
+      : source_(source), who_(who), attribute_(attribute) {
     if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) broken("refers to a missing accessor");
     const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(index)];
     if (a.sparse.isSparse) broken("uses a sparse accessor, which is not supported");
@@ -230,11 +249,13 @@ class AccessorReader {
   }
 
   [[noreturn]] void broken(const std::string& problem) const {
-    fail(ErrorKind::Input, source_, {}, what_ + " " + problem, "export the file again, or check it with scripts/validate-gltf");
+    fail(ErrorKind::Input, source_, {}, who_.text() + ": its " + std::string(attribute_) + " accessor " + problem,
+         "export the file again, or check it with scripts/validate-gltf");
   }
 
   const std::string& source_;
-  std::string what_;
+  const PartName& who_;
+  std::string_view attribute_;
   const unsigned char* data_ = nullptr;
   std::size_t stride_ = 0, component_size_ = 0, count_ = 0;
   int component_type_ = 0, components_ = 0;
@@ -282,12 +303,12 @@ glm::dmat4 local_matrix(const tinygltf::Node& n) {
 // read) fail before their matrices are made (a small file can hold
 // millions, 128 bytes each).
 std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& model, const tinygltf::Node& node,
-                                                         const std::string& source, const std::string& who,
+                                                         const std::string& source, const PartName& who,
                                                          const ExampleLimits& limits, std::size_t parts) {
   const auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
   if (ext == node.extensions.end()) return std::nullopt;
   auto broken = [&](const std::string& problem) {
-    fail(ErrorKind::Input, source, {}, who + ": its EXT_mesh_gpu_instancing " + problem,
+    fail(ErrorKind::Input, source, {}, who.text() + ": its EXT_mesh_gpu_instancing " + problem,
          "export the file again, or check it with scripts/validate-gltf");
   };
   if (!ext->second.IsObject() || !ext->second.Has("attributes") || !ext->second.Get("attributes").IsObject())
@@ -295,16 +316,19 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
   const tinygltf::Value& attributes = ext->second.Get("attributes");
   struct Attribute {
     const char* name;
+    const char* accessor;  // how messages name its accessor
     int components;
     std::optional<AccessorReader> reader;
   };
-  Attribute wanted[3] = {{"TRANSLATION", 3, {}}, {"ROTATION", 4, {}}, {"SCALE", 3, {}}};
+  Attribute wanted[3] = {{"TRANSLATION", "instance TRANSLATION", 3, {}},
+                         {"ROTATION", "instance ROTATION", 4, {}},
+                         {"SCALE", "instance SCALE", 3, {}}};
   std::optional<std::size_t> count;
   for (Attribute& a : wanted) {
     if (!attributes.Has(a.name)) continue;
     const tinygltf::Value& index = attributes.Get(a.name);
     if (!index.IsInt()) broken(std::string(a.name) + " is not an accessor index");
-    a.reader.emplace(model, index.GetNumberAsInt(), source, who + ": its instance " + a.name + " accessor");
+    a.reader.emplace(model, index.GetNumberAsInt(), source, who, a.accessor);
     if (a.reader->components() != a.components)
       broken(std::string(a.name) + " must hold " + std::to_string(a.components) + " numbers per instance");
     if (count && *count != a.reader->count()) broken("attributes hold different numbers of instances");
@@ -313,7 +337,7 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
   if (!count) broken("extension names none of TRANSLATION, ROTATION and SCALE");
   if (*count > limits.max_parts - std::min(parts, limits.max_parts)) {
     fail(ErrorKind::Limit, source, {},
-         who + " has " + std::to_string(*count) + " instances, more than " + std::to_string(limits.max_parts) +
+         who.text() + " has " + std::to_string(*count) + " instances, more than " + std::to_string(limits.max_parts) +
              " labelled parts" + (parts == 0 ? "" : " with the " + std::to_string(parts) + " before them"),
          too_many_parts_hint(limits));
   }
@@ -333,9 +357,9 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
 }
 
 // OBJ refuses such numbers where it reads them (obj_reader.hpp); so does glTF.
-[[noreturn]] void not_finite(const std::string& source, const std::string& who, const char* attribute, std::size_t i) {
+[[noreturn]] void not_finite(const std::string& source, const PartName& who, const char* attribute, std::size_t i) {
   fail(ErrorKind::Input, source, {},
-       who + ": its " + attribute + " accessor holds a value that is not a finite number (element " + std::to_string(i) +
+       who.text() + ": its " + attribute + " accessor holds a value that is not a finite number (element " + std::to_string(i) +
            ")",
        "export the file again, or check it with scripts/validate-gltf");
 }
@@ -350,16 +374,16 @@ std::size_t triangle_count(int mode, std::size_t n) {
 // Appends one glTF mesh, transformed to world space, to `out`; more than
 // limits.max_faces faces fail before they are made.
 void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, const glm::dmat4& world,
-                 const std::string& source, const std::string& who, const ExampleLimits& limits, Mesh& out) {
+                 const std::string& source, const PartName& who, const ExampleLimits& limits, Mesh& out) {
   const glm::dmat3 linear(world);
   const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
   const bool mirrored = glm::determinant(linear) < 0.0;  // keep faces turned outwards
   for (const tinygltf::Primitive& p : gmesh.primitives) {
     const auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) continue;  // nothing to place
-    const AccessorReader positions(model, pos->second, source, who + ": its POSITION accessor");
+    const AccessorReader positions(model, pos->second, source, who, "POSITION");
     if (positions.components() != 3) {
-      fail(ErrorKind::Input, source, {}, who + ": POSITION must hold 3 numbers per vertex",
+      fail(ErrorKind::Input, source, {}, who.text() + ": POSITION must hold 3 numbers per vertex",
            "export the file again, or check it with scripts/validate-gltf");
     }
     const auto base = static_cast<std::uint32_t>(out.positions.size());
@@ -370,7 +394,7 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
       for (int k = 0; k < 3; ++k) {
         if (!(std::abs(w[k]) <= kMaxObjCoordinate)) {
           fail(ErrorKind::Input, source, {},
-               who + ": vertex " + std::to_string(i) + " lies at (" + format_number(w.x) + ", " + format_number(w.y) +
+               who.text() + ": vertex " + std::to_string(i) + " lies at (" + format_number(w.x) + ", " + format_number(w.y) +
                    ", " + format_number(w.z) + ") after the node transforms: not finite, or beyond 1e12",
                "check the node's matrix, scale and translation and its parents', or export the file again");
         }
@@ -380,7 +404,7 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
 
     std::uint32_t normal_base = Mesh::kNone;
     if (const auto nrm = p.attributes.find("NORMAL"); nrm != p.attributes.end()) {
-      const AccessorReader normals(model, nrm->second, source, who + ": its NORMAL accessor");
+      const AccessorReader normals(model, nrm->second, source, who, "NORMAL");
       if (normals.components() == 3 && normals.count() == positions.count()) {
         std::vector<glm::dvec3> turned;
         for (std::size_t i = 0; i < normals.count(); ++i) {
@@ -404,7 +428,7 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
     }
     std::uint32_t uv_base = Mesh::kNone;
     if (const auto tex = p.attributes.find("TEXCOORD_0"); tex != p.attributes.end()) {
-      const AccessorReader uvs(model, tex->second, source, who + ": its TEXCOORD_0 accessor");
+      const AccessorReader uvs(model, tex->second, source, who, "TEXCOORD_0");
       if (uvs.components() == 2 && uvs.count() == positions.count()) {
         uv_base = static_cast<std::uint32_t>(out.uvs.size());
         // glTF's v points down, OBJ's (and Mesh's) up.
@@ -418,13 +442,13 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
 
     std::vector<std::uint32_t> indices;
     if (p.indices >= 0) {
-      const AccessorReader reader(model, p.indices, source, who + ": its index accessor");
+      const AccessorReader reader(model, p.indices, source, who, "index");
       indices.reserve(reader.count());
       for (std::size_t i = 0; i < reader.count(); ++i) {
         const std::uint32_t index = reader.index(i);
         if (index >= positions.count()) {
           fail(ErrorKind::Input, source, {},
-               who + ": index " + std::to_string(index) + " is past the " + std::to_string(positions.count()) +
+               who.text() + ": index " + std::to_string(index) + " is past the " + std::to_string(positions.count()) +
                    " vertices",
                "export the file again, or check it with scripts/validate-gltf");
         }
@@ -449,7 +473,7 @@ void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, cons
     const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
     const std::size_t n = indices.size();
     if (out.face_sizes.size() + triangle_count(mode, n) > limits.max_faces) {
-      fail(ErrorKind::Limit, source, {}, who + " has more than " + std::to_string(limits.max_faces) + " faces",
+      fail(ErrorKind::Limit, source, {}, who.text() + " has more than " + std::to_string(limits.max_faces) + " faces",
            too_many_faces_hint(limits));
     }
     if (mode == TINYGLTF_MODE_TRIANGLES) {
@@ -539,12 +563,12 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     stack.pop_back();
     if (index < 0 || static_cast<std::size_t>(index) >= model.nodes.size()) continue;
     const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(index)];
-    const std::string who = "node " + std::to_string(index) + (node.name.empty() ? "" : " '" + node.name + "'");
+    const PartName who{index, node.name};
     // glTF nodes form trees: a node reached twice is a cycle or a node with
     // two parents, and its part would be counted twice.
     if (visited[static_cast<std::size_t>(index)]) {
       fail(ErrorKind::Input, ex.source, {},
-           who + " is reached twice from the scene: it is its own ancestor or the child of two nodes",
+           who.text() + " is reached twice from the scene: it is its own ancestor or the child of two nodes",
            "glTF nodes must form trees; export the file again");
     }
     visited[static_cast<std::size_t>(index)] = true;
@@ -553,12 +577,12 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     if (node.mesh < 0) continue;
     if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
       fail(ErrorKind::Input, ex.source, {},
-           who + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
+           who.text() + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
                std::to_string(model.meshes.size()) + " mesh" + (model.meshes.size() == 1 ? "" : "es"),
            "export the file again, or check it with scripts/validate-gltf");
     }
     if (node.name.empty()) {
-      fail(ErrorKind::Input, ex.source, {}, who + " has a mesh but no name: inference cannot tell which primitive it is",
+      fail(ErrorKind::Input, ex.source, {}, who.text() + " has a mesh but no name: inference cannot tell which primitive it is",
            "name each part's node after its primitive (e.g. `window.001`)");
     }
     const tinygltf::Mesh& gmesh = model.meshes[static_cast<std::size_t>(node.mesh)];
@@ -569,21 +593,21 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     const std::size_t parts = instances ? instances->size() : 1;
     const std::string name = instances ? node.name.substr(0, node.name.find(' ')) : node.name;
     for (std::size_t i = 0; i < parts; ++i) {
-      const std::string part = instances ? who + " instance " + std::to_string(i) : who;
+      const PartName part{index, node.name, instances ? std::optional<std::size_t>(i) : std::nullopt};
       if (ex.boxes.size() >= limits.max_parts) {
         fail(ErrorKind::Limit, ex.source, {},
-             "more than " + std::to_string(limits.max_parts) + " labelled parts: reading stopped at " + part,
+             "more than " + std::to_string(limits.max_parts) + " labelled parts: reading stopped at " + part.text(),
              too_many_parts_hint(limits));
       }
       Mesh mesh;
       append_mesh(model, gmesh, instances ? world * (*instances)[i] : world, ex.source, part, limits, mesh);
       if (mesh.positions.empty()) {
-        fail(ErrorKind::Input, ex.source, {}, part + " has a mesh without vertex positions",
+        fail(ErrorKind::Input, ex.source, {}, part.text() + " has a mesh without vertex positions",
              "export the file again with geometry for every named part");
       }
       // The part's shape becomes its primitive's mesh, which needs faces.
       if (mesh.face_sizes.empty()) {
-        fail(ErrorKind::Input, ex.source, {}, part + " has no triangles: its mesh holds only points or lines",
+        fail(ErrorKind::Input, ex.source, {}, part.text() + " has no triangles: its mesh holds only points or lines",
              "export the part as a surface (triangles), or leave it out");
       }
       adder.add(name, 0, mesh, instances ? node.name + " (instance " + std::to_string(i) + ")" : std::string());
