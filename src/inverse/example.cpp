@@ -366,8 +366,8 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
 // OBJ refuses such numbers where it reads them (obj_reader.hpp); so does glTF.
 [[noreturn]] void not_finite(const std::string& source, const PartName& who, const char* attribute, std::size_t i) {
   fail(ErrorKind::Input, source, {},
-       who.text() + ": its " + attribute + " accessor holds a value that is not a finite number (element " + std::to_string(i) +
-           ")",
+       who.text() + ": its " + attribute + " accessor holds a value that is not a finite number (element " +
+           std::to_string(i) + ")",
        "export the file again, or check it with scripts/validate-gltf");
 }
 
@@ -499,7 +499,8 @@ void place_positions(const LocalPrimitive& p, const glm::dmat4& world, const std
       if (!(std::abs(w[k]) <= kMaxObjCoordinate)) {
         fail(ErrorKind::Input, source, {},
              who.text() + ": vertex " + std::to_string(i) + " lies at (" + format_number(w.x) + ", " +
-                 format_number(w.y) + ", " + format_number(w.z) + ") after the node transforms: not finite, or beyond 1e12",
+                 format_number(w.y) + ", " + format_number(w.z) +
+                 ") after the node transforms: not finite, or beyond 1e12",
              "check the node's matrix, scale and translation and its parents', or export the file again");
       }
     }
@@ -563,7 +564,8 @@ Mesh local_shape(const LocalMesh& local) {
     const auto base = static_cast<std::uint32_t>(shape.positions.size());
     shape.positions.insert(shape.positions.end(), p.positions.begin(), p.positions.end());
     for_each_triangle(p.mode, p.indices, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-      shape.corners.insert(shape.corners.end(), {Mesh::Corner{base + a}, Mesh::Corner{base + b}, Mesh::Corner{base + c}});
+      shape.corners.insert(shape.corners.end(),
+                           {Mesh::Corner{base + a}, Mesh::Corner{base + b}, Mesh::Corner{base + c}});
       shape.face_sizes.push_back(3);
     });
   }
@@ -748,7 +750,8 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
            "export the file again, or check it with scripts/validate-gltf");
     }
     if (node.name.empty()) {
-      fail(ErrorKind::Input, ex.source, {}, who.text() + " has a mesh but no name: inference cannot tell which primitive it is",
+      fail(ErrorKind::Input, ex.source, {},
+           who.text() + " has a mesh but no name: inference cannot tell which primitive it is",
            "name each part's node after its primitive (e.g. `window.001`)");
     }
     // An instanced node is one part per instance. Its name is the mesh's,
