@@ -460,6 +460,82 @@ TEST(Example, InstancingErrors) {
   EXPECT_TRUE(contains(load_error(dir / "rotation.gltf"), "ROTATION must hold 4 numbers per instance"));
 }
 
+// Two meshes in the xy plane (y-up): "pair", two triangles apart, and
+// "quad", two triangles whose corners meet at equal positions (not shared
+// indices). Each node of `nodes` names a mesh of `meshes`, a list of
+// POSITION accessors: 0 for the pair's, 1 for the quad's.
+std::string two_meshes_gltf(const std::string& meshes, const std::string& nodes) {
+  const float v[36] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 3, 0, 0, 4, 0, 0, 3, 1, 0,   // pair
+                       0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0};  // quad
+  std::string bytes(sizeof v, '\0');
+  std::memcpy(bytes.data(), v, sizeof v);
+  std::string mesh_list;
+  for (const char accessor : meshes) {
+    mesh_list += std::string(mesh_list.empty() ? "" : ", ") + R"({"primitives": [{"attributes": {"POSITION": )" +
+                 accessor + "}}]}";
+  }
+  return R"({"asset": {"version": "2.0"},
+  "buffers": [{"byteLength": 144, "uri": "data:application/octet-stream;base64,)" + base64(bytes) + R"("}],
+  "bufferViews": [{"buffer": 0, "byteLength": 72}, {"buffer": 0, "byteOffset": 72, "byteLength": 72}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 6, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5126, "count": 6, "type": "VEC3"}],
+  "meshes": [)" + mesh_list + R"(],
+  "nodes": [)" + nodes + R"(],
+  "scenes": [{"nodes": [0, 1, 2, 3]}], "scene": 0})";
+}
+
+// A mesh that several nodes use is read once and placed for each
+// (example.cpp, MeshReader): the parts are those copies of it would make,
+// loose pieces apart split into parts, a mirrored node's faces turned.
+TEST(Example, AMeshSharedByNodesReadsAsCopiesOfIt) {
+  TempFolder dir;
+  const std::string nodes[4] = {R"("name": "pair")",
+                                R"("name": "pair.001", "translation": [10, 0, 0], "scale": [-1, 1, 1])",
+                                R"("name": "quad")",
+                                R"("name": "quad.001", "translation": [0, 5, 0], "scale": [2, 0.5, 1])"};
+  auto node_list = [&](const int (&mesh)[4]) {
+    std::string text;
+    for (int i = 0; i < 4; ++i)
+      text += std::string(i ? ", " : "") + "{" + nodes[i] + ", \"mesh\": " + std::to_string(mesh[i]) + "}";
+    return text;
+  };
+  write_text(dir / "shared.gltf", two_meshes_gltf("01", node_list({0, 0, 1, 1})));
+  write_text(dir / "copies.gltf", two_meshes_gltf("0011", node_list({0, 1, 2, 3})));
+  const Example shared = load_example(dir / "shared.gltf");
+  const Example copies = load_example(dir / "copies.gltf");
+  ASSERT_EQ(shared.boxes.size(), 6u);
+  ASSERT_EQ(copies.boxes.size(), 6u);
+  const char* objects[6] = {"pair (loose part 1 of 2)", "pair (loose part 2 of 2)", "pair.001 (loose part 1 of 2)",
+                            "pair.001 (loose part 2 of 2)", "quad", "quad.001"};
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(shared.boxes[i].object, objects[i]);
+    EXPECT_EQ(shared.boxes[i].object, copies.boxes[i].object);
+    EXPECT_EQ(shared.boxes[i].min, copies.boxes[i].min);
+    EXPECT_EQ(shared.boxes[i].max, copies.boxes[i].max);
+    EXPECT_EQ(shared.boxes[i].loose_pieces, 1u);
+  }
+  ASSERT_EQ(shared.meshes.size(), copies.meshes.size());
+  for (std::size_t i = 0; i < shared.meshes.size(); ++i) {
+    EXPECT_EQ(shared.meshes[i].positions, copies.meshes[i].positions);
+    EXPECT_EQ(shared.meshes[i].corners, copies.meshes[i].corners);
+  }
+}
+
+// A shared mesh is read by its first part, and each node after it is
+// placed anew: a vertex placed too far names the node that placed it.
+TEST(Example, ASharedMeshFailsAtTheFirstNodeThatCannotBePlaced) {
+  TempFolder dir;
+  const std::string far = R"("scale": [1e300, 1, 1])";
+  write_text(dir / "first.gltf",
+             two_meshes_gltf("0", R"({"name": "a", "mesh": 0, )" + far + R"(}, {"name": "b", "mesh": 0})"));
+  std::string e = load_error(dir / "first.gltf");
+  EXPECT_TRUE(contains(e, "node 0 'a': vertex 1 lies at (1e+300, 0, 0)")) << e;
+  write_text(dir / "second.gltf",
+             two_meshes_gltf("0", R"({"name": "a", "mesh": 0}, {"name": "b", "mesh": 0, )" + far + "}"));
+  e = load_error(dir / "second.gltf");
+  EXPECT_TRUE(contains(e, "node 1 'b': vertex 1 lies at (1e+300, 0, 0)")) << e;
+}
+
 TEST(Example, GltfErrors) {
   TempFolder dir;
   write_text(dir / "unnamed.gltf", triangle_gltf(""));

@@ -4,7 +4,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <optional>
+#include <string_view>
 #include <unordered_set>
 #include <utility>
 
@@ -82,6 +84,12 @@ class PartAdder {
     }
   }
 
+  // A part known to be one loose piece (a glTF mesh whole in its own
+  // coordinates, LocalMesh): there are no pieces to look for.
+  void add_whole(const std::string& name, std::uint32_t line, const Mesh& mesh, const std::string& object) {
+    add_one(name, line, mesh, object.empty() ? name : object);
+  }
+
  private:
   LabelledBox& add_one(const std::string& name, std::uint32_t line, const Mesh& mesh, const std::string& object) {
     if (example_.boxes.size() >= limits_.max_parts) {
@@ -145,11 +153,29 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;
 }
 
+// How messages name a glTF part: "node 3 'window.001'", and " instance 2"
+// after it for one instance of an instanced node. The text is made only
+// for a message: a file holds thousands of parts and rarely an error.
+struct PartName {
+  int node;
+  const std::string& name;  // the node's (may be empty)
+  std::optional<std::size_t> instance = {};
+
+  std::string text() const {
+    std::string text = "node " + std::to_string(node) + (name.empty() ? "" : " '" + name + "'");
+    if (instance) text += " instance " + std::to_string(*instance);
+    return text;
+  }
+};
+
 // One accessor's elements, read as doubles whatever their storage.
+// `attribute` names the accessor in messages ("POSITION": "node 3
+// 'wall': its POSITION accessor ...").
 class AccessorReader {
  public:
-  AccessorReader(const tinygltf::Model& model, int index, const std::string& source, const std::string& what)
-      : source_(source), what_(what) {
+  AccessorReader(const tinygltf::Model& model, int index, const std::string& source, const PartName& who,
+                 std::string_view attribute)
+      : source_(source), who_(who), attribute_(attribute) {
     if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) broken("refers to a missing accessor");
     const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(index)];
     if (a.sparse.isSparse) broken("uses a sparse accessor, which is not supported");
@@ -230,11 +256,13 @@ class AccessorReader {
   }
 
   [[noreturn]] void broken(const std::string& problem) const {
-    fail(ErrorKind::Input, source_, {}, what_ + " " + problem, "export the file again, or check it with scripts/validate-gltf");
+    fail(ErrorKind::Input, source_, {}, who_.text() + ": its " + std::string(attribute_) + " accessor " + problem,
+         "export the file again, or check it with scripts/validate-gltf");
   }
 
   const std::string& source_;
-  std::string what_;
+  const PartName& who_;
+  std::string_view attribute_;
   const unsigned char* data_ = nullptr;
   std::size_t stride_ = 0, component_size_ = 0, count_ = 0;
   int component_type_ = 0, components_ = 0;
@@ -282,12 +310,12 @@ glm::dmat4 local_matrix(const tinygltf::Node& n) {
 // read) fail before their matrices are made (a small file can hold
 // millions, 128 bytes each).
 std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& model, const tinygltf::Node& node,
-                                                         const std::string& source, const std::string& who,
+                                                         const std::string& source, const PartName& who,
                                                          const ExampleLimits& limits, std::size_t parts) {
   const auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
   if (ext == node.extensions.end()) return std::nullopt;
   auto broken = [&](const std::string& problem) {
-    fail(ErrorKind::Input, source, {}, who + ": its EXT_mesh_gpu_instancing " + problem,
+    fail(ErrorKind::Input, source, {}, who.text() + ": its EXT_mesh_gpu_instancing " + problem,
          "export the file again, or check it with scripts/validate-gltf");
   };
   if (!ext->second.IsObject() || !ext->second.Has("attributes") || !ext->second.Get("attributes").IsObject())
@@ -295,16 +323,19 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
   const tinygltf::Value& attributes = ext->second.Get("attributes");
   struct Attribute {
     const char* name;
+    const char* accessor;  // how messages name its accessor
     int components;
     std::optional<AccessorReader> reader;
   };
-  Attribute wanted[3] = {{"TRANSLATION", 3, {}}, {"ROTATION", 4, {}}, {"SCALE", 3, {}}};
+  Attribute wanted[3] = {{"TRANSLATION", "instance TRANSLATION", 3, {}},
+                         {"ROTATION", "instance ROTATION", 4, {}},
+                         {"SCALE", "instance SCALE", 3, {}}};
   std::optional<std::size_t> count;
   for (Attribute& a : wanted) {
     if (!attributes.Has(a.name)) continue;
     const tinygltf::Value& index = attributes.Get(a.name);
     if (!index.IsInt()) broken(std::string(a.name) + " is not an accessor index");
-    a.reader.emplace(model, index.GetNumberAsInt(), source, who + ": its instance " + a.name + " accessor");
+    a.reader.emplace(model, index.GetNumberAsInt(), source, who, a.accessor);
     if (a.reader->components() != a.components)
       broken(std::string(a.name) + " must hold " + std::to_string(a.components) + " numbers per instance");
     if (count && *count != a.reader->count()) broken("attributes hold different numbers of instances");
@@ -313,7 +344,7 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
   if (!count) broken("extension names none of TRANSLATION, ROTATION and SCALE");
   if (*count > limits.max_parts - std::min(parts, limits.max_parts)) {
     fail(ErrorKind::Limit, source, {},
-         who + " has " + std::to_string(*count) + " instances, more than " + std::to_string(limits.max_parts) +
+         who.text() + " has " + std::to_string(*count) + " instances, more than " + std::to_string(limits.max_parts) +
              " labelled parts" + (parts == 0 ? "" : " with the " + std::to_string(parts) + " before them"),
          too_many_parts_hint(limits));
   }
@@ -333,10 +364,10 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
 }
 
 // OBJ refuses such numbers where it reads them (obj_reader.hpp); so does glTF.
-[[noreturn]] void not_finite(const std::string& source, const std::string& who, const char* attribute, std::size_t i) {
+[[noreturn]] void not_finite(const std::string& source, const PartName& who, const char* attribute, std::size_t i) {
   fail(ErrorKind::Input, source, {},
-       who + ": its " + attribute + " accessor holds a value that is not a finite number (element " + std::to_string(i) +
-           ")",
+       who.text() + ": its " + attribute + " accessor holds a value that is not a finite number (element " +
+           std::to_string(i) + ")",
        "export the file again, or check it with scripts/validate-gltf");
 }
 
@@ -347,124 +378,284 @@ std::size_t triangle_count(int mode, std::size_t n) {
   return 0;
 }
 
-// Appends one glTF mesh, transformed to world space, to `out`; more than
-// limits.max_faces faces fail before they are made.
-void append_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, const glm::dmat4& world,
-                 const std::string& source, const std::string& who, const ExampleLimits& limits, Mesh& out) {
-  const glm::dmat3 linear(world);
-  const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
-  const bool mirrored = glm::determinant(linear) < 0.0;  // keep faces turned outwards
+// Calls f(a, b, c) for each triangle of a primitive's indices, in order.
+template <class F>
+void for_each_triangle(int mode, const std::vector<std::uint32_t>& indices, F f) {
+  const std::size_t n = indices.size();
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    for (std::size_t i = 0; i + 2 < n; i += 3) f(indices[i], indices[i + 1], indices[i + 2]);
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    for (std::size_t i = 0; i + 2 < n; ++i) {
+      if (i % 2 == 0) f(indices[i], indices[i + 1], indices[i + 2]);
+      else f(indices[i + 1], indices[i], indices[i + 2]);
+    }
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+    for (std::size_t i = 1; i + 1 < n; ++i) f(indices[0], indices[i], indices[i + 1]);
+  }
+}
+
+// A glTF mesh is read from its accessors once, in its own coordinates, and
+// placed for each part that uses it: a city's thousands of nodes share one
+// box. One primitive as read:
+struct LocalPrimitive {
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::dvec3> normals;     // one per position, or none
+  std::vector<glm::dvec2> uvs;         // one per position (v up, as in Mesh), or none
+  std::vector<std::uint32_t> indices;  // into positions
+  int mode = TINYGLTF_MODE_TRIANGLES;
+};
+
+struct LocalMesh {
+  std::vector<LocalPrimitive> primitives;  // those with positions
+  // One loose piece (loose_parts.hpp) in its own coordinates. Positions
+  // equal there stay equal wherever a part is placed (the same arithmetic
+  // on the same numbers), so every part made of it is one piece too.
+  // Decided for the meshes MeshReader keeps.
+  bool whole = false;
+};
+
+// A part's world matrix, and what follows from it for normals and faces.
+struct Placement {
+  explicit Placement(const glm::dmat4& matrix)
+      : world(matrix),
+        normal_matrix(glm::transpose(glm::inverse(glm::dmat3(matrix)))),
+        mirrored(glm::determinant(glm::dmat3(matrix)) < 0.0) {}
+
+  glm::dmat4 world;
+  glm::dmat3 normal_matrix;
+  bool mirrored;  // faces are turned back to keep them facing outwards
+};
+
+// A primitive's positions as its accessor holds them.
+void read_positions(const tinygltf::Model& model, int accessor, const std::string& source, const PartName& who,
+                    LocalPrimitive& out) {
+  const AccessorReader positions(model, accessor, source, who, "POSITION");
+  if (positions.components() != 3) {
+    fail(ErrorKind::Input, source, {}, who.text() + ": POSITION must hold 3 numbers per vertex",
+         "export the file again, or check it with scripts/validate-gltf");
+  }
+  out.positions.reserve(positions.count());
+  for (std::size_t i = 0; i < positions.count(); ++i)
+    out.positions.emplace_back(positions.get(i, 0), positions.get(i, 1), positions.get(i, 2));
+}
+
+// The rest of a primitive whose positions are read: normals and texture
+// coordinates (kept when there is one per position, as Mesh needs them)
+// and indices.
+void read_surface(const tinygltf::Model& model, const tinygltf::Primitive& p, const std::string& source,
+                  const PartName& who, LocalPrimitive& out) {
+  const std::size_t count = out.positions.size();
+  if (const auto nrm = p.attributes.find("NORMAL"); nrm != p.attributes.end()) {
+    const AccessorReader normals(model, nrm->second, source, who, "NORMAL");
+    if (normals.components() == 3 && normals.count() == count) {
+      out.normals.reserve(count);
+      for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 stored(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
+        if (!std::isfinite(stored.x) || !std::isfinite(stored.y) || !std::isfinite(stored.z))
+          not_finite(source, who, "NORMAL", i);
+        out.normals.push_back(stored);
+      }
+    }
+  }
+  if (const auto tex = p.attributes.find("TEXCOORD_0"); tex != p.attributes.end()) {
+    const AccessorReader uvs(model, tex->second, source, who, "TEXCOORD_0");
+    if (uvs.components() == 2 && uvs.count() == count) {
+      out.uvs.reserve(count);
+      // glTF's v points down, OBJ's (and Mesh's) up.
+      for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec2 uv(uvs.get(i, 0), 1.0 - uvs.get(i, 1));
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) not_finite(source, who, "TEXCOORD_0", i);
+        out.uvs.push_back(uv);
+      }
+    }
+  }
+  out.mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+  if (p.indices < 0) {
+    out.indices.resize(count);
+    std::iota(out.indices.begin(), out.indices.end(), 0u);
+    return;
+  }
+  const AccessorReader reader(model, p.indices, source, who, "index");
+  out.indices.reserve(reader.count());
+  for (std::size_t i = 0; i < reader.count(); ++i) {
+    const std::uint32_t index = reader.index(i);
+    if (index >= count) {
+      fail(ErrorKind::Input, source, {},
+           who.text() + ": index " + std::to_string(index) + " is past the " + std::to_string(count) + " vertices",
+           "export the file again, or check it with scripts/validate-gltf");
+    }
+    out.indices.push_back(index);
+  }
+}
+
+// Places a primitive's positions in world space; fails for one that lands
+// beyond 1e12 (`i`, in the message, counts within the primitive).
+void place_positions(const LocalPrimitive& p, const glm::dmat4& world, const std::string& source, const PartName& who,
+                     Mesh& out) {
+  for (std::size_t i = 0; i < p.positions.size(); ++i) {
+    const glm::dvec3 w = glm::dvec3(world * glm::dvec4(p.positions[i], 1.0));
+    // As in OBJ (obj_reader.hpp): such coordinates would make extents inf.
+    for (int k = 0; k < 3; ++k) {
+      if (!(std::abs(w[k]) <= kMaxObjCoordinate)) {
+        fail(ErrorKind::Input, source, {},
+             who.text() + ": vertex " + std::to_string(i) + " lies at (" + format_number(w.x) + ", " +
+                 format_number(w.y) + ", " + format_number(w.z) +
+                 ") after the node transforms: not finite, or beyond 1e12",
+             "check the node's matrix, scale and translation and its parents', or export the file again");
+      }
+    }
+    out.positions.push_back(w);
+  }
+}
+
+// Adds a placed primitive's normals, texture coordinates and triangles
+// (its positions start at `base`); more than limits.max_faces faces fail
+// before they are made.
+void place_surface(const LocalPrimitive& p, const Placement& placement, std::uint32_t base, const std::string& source,
+                   const PartName& who, const ExampleLimits& limits, Mesh& out) {
+  std::uint32_t normal_base = Mesh::kNone;
+  if (!p.normals.empty()) {
+    normal_base = static_cast<std::uint32_t>(out.normals.size());
+    for (const glm::dvec3& stored : p.normals) {
+      const glm::dvec3 n = placement.normal_matrix * stored;
+      const double len = glm::length(n);
+      out.normals.push_back(len > 0.0 ? n / len : n);
+    }
+    // A node scaled flat (a panel made from a cube) has no normal
+    // matrix: its normals are dropped, not made up.
+    const bool usable = std::all_of(out.normals.begin() + normal_base, out.normals.end(), [](const glm::dvec3& n) {
+      return std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z);
+    });
+    if (!usable) {
+      out.normals.resize(normal_base);
+      normal_base = Mesh::kNone;
+    }
+  }
+  std::uint32_t uv_base = Mesh::kNone;
+  if (!p.uvs.empty()) {
+    uv_base = static_cast<std::uint32_t>(out.uvs.size());
+    out.uvs.insert(out.uvs.end(), p.uvs.begin(), p.uvs.end());
+  }
+
+  if (out.face_sizes.size() + triangle_count(p.mode, p.indices.size()) > limits.max_faces) {
+    fail(ErrorKind::Limit, source, {}, who.text() + " has more than " + std::to_string(limits.max_faces) + " faces",
+         too_many_faces_hint(limits));
+  }
+  auto corner = [&](std::uint32_t i) {
+    Mesh::Corner c;
+    c.position = base + i;
+    if (normal_base != Mesh::kNone) c.normal = normal_base + i;
+    if (uv_base != Mesh::kNone) c.uv = uv_base + i;
+    return c;
+  };
+  for_each_triangle(p.mode, p.indices, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    if (placement.mirrored) std::swap(b, c);
+    out.corners.insert(out.corners.end(), {corner(a), corner(b), corner(c)});
+    out.face_sizes.push_back(3);
+  });
+  // Points and lines have no faces; their vertices still count for the box.
+}
+
+// The mesh in its own coordinates, positions and faces only: enough for
+// loose_pieces to tell whether it is whole.
+Mesh local_shape(const LocalMesh& local) {
+  Mesh shape;
+  for (const LocalPrimitive& p : local.primitives) {
+    const auto base = static_cast<std::uint32_t>(shape.positions.size());
+    shape.positions.insert(shape.positions.end(), p.positions.begin(), p.positions.end());
+    for_each_triangle(p.mode, p.indices, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+      shape.corners.insert(shape.corners.end(),
+                           {Mesh::Corner{base + a}, Mesh::Corner{base + b}, Mesh::Corner{base + c}});
+      shape.face_sizes.push_back(3);
+    });
+  }
+  return shape;
+}
+
+// Reads a glTF mesh for the first part that uses it, placing each
+// primitive for that part as soon as it is read, so that the part's errors
+// come in the order they always did (a vertex placed beyond 1e12 before a
+// broken NORMAL accessor of its primitive). Any error in what is read
+// stops reading at this first part: later ones only place the mesh.
+// Whether it is whole is left to MeshReader.
+LocalMesh read_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, const Placement& placement,
+                    const std::string& source, const PartName& who, const ExampleLimits& limits, Mesh& out) {
+  LocalMesh local;
   for (const tinygltf::Primitive& p : gmesh.primitives) {
     const auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) continue;  // nothing to place
-    const AccessorReader positions(model, pos->second, source, who + ": its POSITION accessor");
-    if (positions.components() != 3) {
-      fail(ErrorKind::Input, source, {}, who + ": POSITION must hold 3 numbers per vertex",
-           "export the file again, or check it with scripts/validate-gltf");
-    }
+    LocalPrimitive& primitive = local.primitives.emplace_back();
+    read_positions(model, pos->second, source, who, primitive);
     const auto base = static_cast<std::uint32_t>(out.positions.size());
-    for (std::size_t i = 0; i < positions.count(); ++i) {
-      const glm::dvec4 v(positions.get(i, 0), positions.get(i, 1), positions.get(i, 2), 1.0);
-      const glm::dvec3 w = glm::dvec3(world * v);
-      // As in OBJ (obj_reader.hpp): such coordinates would make extents inf.
-      for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(w[k]) <= kMaxObjCoordinate)) {
-          fail(ErrorKind::Input, source, {},
-               who + ": vertex " + std::to_string(i) + " lies at (" + format_number(w.x) + ", " + format_number(w.y) +
-                   ", " + format_number(w.z) + ") after the node transforms: not finite, or beyond 1e12",
-               "check the node's matrix, scale and translation and its parents', or export the file again");
-        }
-      }
-      out.positions.push_back(w);
-    }
+    place_positions(primitive, placement.world, source, who, out);
+    read_surface(model, p, source, who, primitive);
+    place_surface(primitive, placement, base, source, who, limits, out);
+  }
+  return local;
+}
 
-    std::uint32_t normal_base = Mesh::kNone;
-    if (const auto nrm = p.attributes.find("NORMAL"); nrm != p.attributes.end()) {
-      const AccessorReader normals(model, nrm->second, source, who + ": its NORMAL accessor");
-      if (normals.components() == 3 && normals.count() == positions.count()) {
-        std::vector<glm::dvec3> turned;
-        for (std::size_t i = 0; i < normals.count(); ++i) {
-          const glm::dvec3 stored(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
-          if (!std::isfinite(stored.x) || !std::isfinite(stored.y) || !std::isfinite(stored.z))
-            not_finite(source, who, "NORMAL", i);
-          const glm::dvec3 n = normal_matrix * stored;
-          const double len = glm::length(n);
-          turned.push_back(len > 0.0 ? n / len : n);
-        }
-        // A node scaled flat (a panel made from a cube) has no normal
-        // matrix: its normals are dropped, not made up.
-        const bool usable = std::all_of(turned.begin(), turned.end(), [](const glm::dvec3& n) {
-          return std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z);
-        });
-        if (usable) {
-          normal_base = static_cast<std::uint32_t>(out.normals.size());
-          out.normals.insert(out.normals.end(), turned.begin(), turned.end());
-        }
-      }
-    }
-    std::uint32_t uv_base = Mesh::kNone;
-    if (const auto tex = p.attributes.find("TEXCOORD_0"); tex != p.attributes.end()) {
-      const AccessorReader uvs(model, tex->second, source, who + ": its TEXCOORD_0 accessor");
-      if (uvs.components() == 2 && uvs.count() == positions.count()) {
-        uv_base = static_cast<std::uint32_t>(out.uvs.size());
-        // glTF's v points down, OBJ's (and Mesh's) up.
-        for (std::size_t i = 0; i < uvs.count(); ++i) {
-          const glm::dvec2 uv(uvs.get(i, 0), 1.0 - uvs.get(i, 1));
-          if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) not_finite(source, who, "TEXCOORD_0", i);
-          out.uvs.push_back(uv);
-        }
-      }
-    }
-
-    std::vector<std::uint32_t> indices;
-    if (p.indices >= 0) {
-      const AccessorReader reader(model, p.indices, source, who + ": its index accessor");
-      indices.reserve(reader.count());
-      for (std::size_t i = 0; i < reader.count(); ++i) {
-        const std::uint32_t index = reader.index(i);
-        if (index >= positions.count()) {
-          fail(ErrorKind::Input, source, {},
-               who + ": index " + std::to_string(index) + " is past the " + std::to_string(positions.count()) +
-                   " vertices",
-               "export the file again, or check it with scripts/validate-gltf");
-        }
-        indices.push_back(index);
-      }
-    } else {
-      for (std::size_t i = 0; i < positions.count(); ++i) indices.push_back(static_cast<std::uint32_t>(i));
-    }
-
-    auto corner = [&](std::uint32_t i) {
-      Mesh::Corner c;
-      c.position = base + i;
-      if (normal_base != Mesh::kNone) c.normal = normal_base + i;
-      if (uv_base != Mesh::kNone) c.uv = uv_base + i;
-      return c;
-    };
-    auto triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-      if (mirrored) std::swap(b, c);
-      out.corners.insert(out.corners.end(), {corner(a), corner(b), corner(c)});
-      out.face_sizes.push_back(3);
-    };
-    const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
-    const std::size_t n = indices.size();
-    if (out.face_sizes.size() + triangle_count(mode, n) > limits.max_faces) {
-      fail(ErrorKind::Limit, source, {}, who + " has more than " + std::to_string(limits.max_faces) + " faces",
-           too_many_faces_hint(limits));
-    }
-    if (mode == TINYGLTF_MODE_TRIANGLES) {
-      for (std::size_t i = 0; i + 2 < n; i += 3) triangle(indices[i], indices[i + 1], indices[i + 2]);
-    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
-      for (std::size_t i = 0; i + 2 < n; ++i) {
-        if (i % 2 == 0) triangle(indices[i], indices[i + 1], indices[i + 2]);
-        else triangle(indices[i + 1], indices[i], indices[i + 2]);
-      }
-    } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
-      for (std::size_t i = 1; i + 1 < n; ++i) triangle(indices[0], indices[i], indices[i + 1]);
-    }
-    // Points and lines have no faces; their vertices still count for the box.
+// Places a mesh read for an earlier part, transformed to world space.
+void place_mesh(const LocalMesh& local, const Placement& placement, const std::string& source, const PartName& who,
+                const ExampleLimits& limits, Mesh& out) {
+  std::size_t positions = 0, normals = 0, uvs = 0, triangles = 0;
+  for (const LocalPrimitive& p : local.primitives) {
+    positions += p.positions.size();
+    normals += p.normals.size();
+    uvs += p.uvs.size();
+    triangles += triangle_count(p.mode, p.indices.size());
+  }
+  out.positions.reserve(positions);
+  out.normals.reserve(normals);
+  out.uvs.reserve(uvs);
+  out.corners.reserve(3 * triangles);
+  out.face_sizes.reserve(triangles);
+  for (const LocalPrimitive& p : local.primitives) {
+    const auto base = static_cast<std::uint32_t>(out.positions.size());
+    place_positions(p, placement.world, source, who, out);
+    place_surface(p, placement, base, source, who, limits, out);
   }
 }
+
+// The meshes of a glTF file, each read by the first part that uses it.
+// One that several parts use is kept (LocalMesh) and only placed for the
+// others; one used once is not kept, as a scanned statue's copy would
+// double the memory reading it takes.
+class MeshReader {
+ public:
+  MeshReader(const tinygltf::Model& model, const std::string& source, const ExampleLimits& limits)
+      : model_(model), source_(source), limits_(limits), uses_(model.meshes.size(), 0), kept_(model.meshes.size()) {
+    for (const tinygltf::Node& n : model.nodes) {
+      if (n.mesh < 0 || static_cast<std::size_t>(n.mesh) >= uses_.size()) continue;
+      // An instanced node is a part per instance.
+      uses_[static_cast<std::size_t>(n.mesh)] += n.extensions.count("EXT_mesh_gpu_instancing") != 0 ? 2 : 1;
+    }
+  }
+
+  // Makes a part's mesh (`mesh`: an index the file has) in world space.
+  // Returns whether the part is known to be one loose piece.
+  bool place(int mesh, const Placement& placement, const PartName& who, Mesh& out) {
+    const auto m = static_cast<std::size_t>(mesh);
+    std::optional<LocalMesh>& kept = kept_[m];
+    if (kept) {
+      place_mesh(*kept, placement, source_, who, limits_, out);
+      return kept->whole;
+    }
+    LocalMesh read = read_mesh(model_, model_.meshes[m], placement, source_, who, limits_, out);
+    if (uses_[m] < 2) return false;  // loose pieces are looked for as in any part
+    read.whole = loose_pieces(local_shape(read)).empty();
+    kept = std::move(read);
+    return kept->whole;
+  }
+
+ private:
+  const tinygltf::Model& model_;
+  const std::string& source_;
+  const ExampleLimits& limits_;
+  // 2 or more: more than one part may use the mesh (an instanced node,
+  // or nodes the scene does not reach, count too: keeping is harmless).
+  std::vector<std::size_t> uses_;
+  std::vector<std::optional<LocalMesh>> kept_;
+};
 
 // tinygltf's file system: every file it opens is one GltfFiles allows.
 bool gltf_file_exists(const std::string& path, void* files) { return static_cast<GltfFiles*>(files)->may_read(path); }
@@ -528,6 +719,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
   // Depth first, children in order: parts come out in the file's node order.
   // Each node is visited once, so a malformed file with cycles still ends.
   std::vector<bool> visited(model.nodes.size(), false);
+  MeshReader meshes(model, ex.source, limits);
   std::vector<std::pair<int, glm::dmat4>> stack;
   // glTF is y-up: the roots are turned z-up, exactly (a permutation with
   // one sign), so a file `generate` wrote gives back its grammar's numbers.
@@ -539,12 +731,12 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     stack.pop_back();
     if (index < 0 || static_cast<std::size_t>(index) >= model.nodes.size()) continue;
     const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(index)];
-    const std::string who = "node " + std::to_string(index) + (node.name.empty() ? "" : " '" + node.name + "'");
+    const PartName who{index, node.name};
     // glTF nodes form trees: a node reached twice is a cycle or a node with
     // two parents, and its part would be counted twice.
     if (visited[static_cast<std::size_t>(index)]) {
       fail(ErrorKind::Input, ex.source, {},
-           who + " is reached twice from the scene: it is its own ancestor or the child of two nodes",
+           who.text() + " is reached twice from the scene: it is its own ancestor or the child of two nodes",
            "glTF nodes must form trees; export the file again");
     }
     visited[static_cast<std::size_t>(index)] = true;
@@ -553,15 +745,15 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     if (node.mesh < 0) continue;
     if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
       fail(ErrorKind::Input, ex.source, {},
-           who + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
+           who.text() + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
                std::to_string(model.meshes.size()) + " mesh" + (model.meshes.size() == 1 ? "" : "es"),
            "export the file again, or check it with scripts/validate-gltf");
     }
     if (node.name.empty()) {
-      fail(ErrorKind::Input, ex.source, {}, who + " has a mesh but no name: inference cannot tell which primitive it is",
+      fail(ErrorKind::Input, ex.source, {},
+           who.text() + " has a mesh but no name: inference cannot tell which primitive it is",
            "name each part's node after its primitive (e.g. `window.001`)");
     }
-    const tinygltf::Mesh& gmesh = model.meshes[static_cast<std::size_t>(node.mesh)];
     // An instanced node is one part per instance. Its name is the mesh's,
     // "label" or "label colour_xxxxxx" (gltf_writer.hpp): the label is the
     // first word.
@@ -569,24 +761,27 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     const std::size_t parts = instances ? instances->size() : 1;
     const std::string name = instances ? node.name.substr(0, node.name.find(' ')) : node.name;
     for (std::size_t i = 0; i < parts; ++i) {
-      const std::string part = instances ? who + " instance " + std::to_string(i) : who;
+      const PartName part{index, node.name, instances ? std::optional<std::size_t>(i) : std::nullopt};
       if (ex.boxes.size() >= limits.max_parts) {
         fail(ErrorKind::Limit, ex.source, {},
-             "more than " + std::to_string(limits.max_parts) + " labelled parts: reading stopped at " + part,
+             "more than " + std::to_string(limits.max_parts) + " labelled parts: reading stopped at " + part.text(),
              too_many_parts_hint(limits));
       }
+      const Placement placement(instances ? world * (*instances)[i] : world);
       Mesh mesh;
-      append_mesh(model, gmesh, instances ? world * (*instances)[i] : world, ex.source, part, limits, mesh);
+      const bool whole = meshes.place(node.mesh, placement, part, mesh);
       if (mesh.positions.empty()) {
-        fail(ErrorKind::Input, ex.source, {}, part + " has a mesh without vertex positions",
+        fail(ErrorKind::Input, ex.source, {}, part.text() + " has a mesh without vertex positions",
              "export the file again with geometry for every named part");
       }
       // The part's shape becomes its primitive's mesh, which needs faces.
       if (mesh.face_sizes.empty()) {
-        fail(ErrorKind::Input, ex.source, {}, part + " has no triangles: its mesh holds only points or lines",
+        fail(ErrorKind::Input, ex.source, {}, part.text() + " has no triangles: its mesh holds only points or lines",
              "export the part as a surface (triangles), or leave it out");
       }
-      adder.add(name, 0, mesh, instances ? node.name + " (instance " + std::to_string(i) + ")" : std::string());
+      const std::string object = instances ? node.name + " (instance " + std::to_string(i) + ")" : std::string();
+      if (whole) adder.add_whole(name, 0, mesh, object);
+      else adder.add(name, 0, mesh, object);
     }
   }
   if (ex.boxes.empty()) {
