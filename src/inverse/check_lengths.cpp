@@ -220,8 +220,7 @@ bool SplitSearch::collect_across(const ScaleState&) {
   if (st_.solve_for >= 0) {
     const auto v = solve();
     if (!v) return false;
-    m_.vars_.bind(st_.solve_for, *v);
-    refresh_shares();
+    m_.vars_.bind(st_.solve_for, *v);  // the sizes are evaluated at it already
   }
   auto part_scope = [&](double from, double len) {
     return compose(*free_, [a = axis_, from, len](const Scope& sc) { return sc.slice(a, from, len); });

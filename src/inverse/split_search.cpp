@@ -186,8 +186,7 @@ bool SplitSearch::complete(const ScaleState& sized) {
   if (st_.solve_for >= 0) {
     const auto v = solve();
     if (!v) return false;
-    m_.vars_.bind(st_.solve_for, *v);
-    refresh_shares();
+    m_.vars_.bind(st_.solve_for, *v);  // the sizes are evaluated at it already
     sc = replay();
     const Unknown& u = m_.vars_.unknown(st_.solve_for);
     m_.note_value(id_, u.name, *v, u.origin);

@@ -184,11 +184,15 @@ class SplitSearch {
   // Where the unknown enters the sizes of parts holding boxes linearly (a
   // share ~s1 beside ~(10 - s1), a height 0.5 * s1 + 1), their lengths pin
   // it down: the values solving those equations, to try before scanning.
-  // Only a shortcut: each is still tried in full.
+  // Only a shortcut: each is still tried in full. Leaves the part sizes
+  // as the last guess made them (solve() evaluates them again).
   std::vector<double> linear_guesses(Unknown& u);
   // Finds a value of the unknown st_.solve_for that makes this placement
   // fit: a scan of its support, then a golden-section refinement around the
   // best point (the misfit is piecewise linear and V-shaped at a solution).
+  // The unknown is left unbound, the part sizes evaluated at the value
+  // found (the caller binds it: no second evaluation), or over the
+  // unknown's support when none is found.
   std::optional<double> solve();
   // The middle of the stretch of values around v that fit, found by
   // bisection: a value at the edge of what fits would leave no slack for

@@ -53,7 +53,6 @@ std::vector<double> SplitSearch::linear_guesses(Unknown& u) {
     }
   }
   u.value.reset();
-  refresh_shares();
   struct SizeLine {  // size = a + b * unknown, on a part this long
     double a, b, length;
     bool relative;
@@ -145,6 +144,7 @@ std::optional<double> SplitSearch::solve() {
     return ok;
   };
   std::optional<double> found;
+  // A guess that fits leaves the sizes evaluated at it.
   if (!u.support.values(256) && u.support.bounded())
     for (double v : linear_guesses(u))
       if (fits(v)) return v;
@@ -212,7 +212,9 @@ std::optional<double> SplitSearch::solve() {
     const double mid = centre(*found, zero);
     if (fits(mid)) found = mid;
   }
+  if (found) u.value = *found;
   refresh_shares();
+  u.value.reset();
   return found;
 }
 
