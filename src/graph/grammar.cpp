@@ -46,6 +46,47 @@ void Grammar::rehash(std::size_t slots) {
   }
 }
 
+void Grammar::copy_headers(const Grammar& from) {
+  source_name = from.source_name;
+  start_rule = from.start_rule;
+  start_written = from.start_written;
+  scope = from.scope;
+  primitives = from.primitives;
+  constants = from.constants;
+  rules = from.rules;
+}
+
+Grammar::Checkpoint Grammar::checkpoint() const {
+  Checkpoint c{nodes_.size(), labels_.size(), {}};
+  c.headers.copy_headers(*this);
+  return c;
+}
+
+void Grammar::rollback(const Checkpoint& c) {
+  if (c.nodes < nodes_.size()) {
+    nodes_.erase(nodes_.begin() + static_cast<std::ptrdiff_t>(c.nodes), nodes_.end());
+    // Slots of forgotten nodes cannot simply be emptied (a probe would stop
+    // short of entries placed after them): the table is refilled, same size.
+    std::vector<InternSlot> kept(interned_.size());
+    kept.swap(interned_);
+    interned_count_ = 0;
+    const std::size_t mask = interned_.size() - 1;
+    for (const InternSlot& slot : kept) {
+      if (slot.node == kEmptySlot || slot.node >= c.nodes) continue;
+      std::size_t i = slot.hash & mask;
+      while (interned_[i].node != kEmptySlot) i = (i + 1) & mask;
+      interned_[i] = slot;
+      ++interned_count_;
+    }
+  }
+  if (c.labels < labels_.size()) {
+    labels_.resize(c.labels);
+    label_ids_.clear();
+    for (std::size_t k = 0; k < labels_.size(); ++k) label_ids_.add(labels_[k], static_cast<LabelId>(k));
+  }
+  copy_headers(c.headers);
+}
+
 LabelId Grammar::label_id(std::string_view name) {
   if (auto found = find_label(name)) return *found;
   const auto id = static_cast<LabelId>(labels_.size());

@@ -64,6 +64,19 @@ class Grammar {
   const Operation& op(NodeId id) const { return nodes_[id].op; }
   std::size_t node_count() const { return nodes_.size(); }
 
+  // What the grammar held at one moment, to go back to: the arena only
+  // grows and its nodes never change, so the nodes are kept as a count
+  // and the rest (rules, constants, headers: small) as a copy. Inference
+  // keeps one of its unmerged graph to merge again (a copy of every node
+  // cost a tenth of a second per million parts, and their memory).
+  struct Checkpoint;
+  Checkpoint checkpoint() const;
+  // Forgets every node, label, rule and constant added since (ids taken
+  // since are free again) and restores the headers: node ids below the
+  // checkpoint's count, and what intern() returns for their operations,
+  // are as they were.
+  void rollback(const Checkpoint& c);
+
   // Primitive names are interned so terminals carry a small id.
   LabelId label_id(std::string_view name);
   std::optional<LabelId> find_label(std::string_view name) const;
@@ -86,12 +99,19 @@ class Grammar {
   static constexpr NodeId kEmptySlot = ~NodeId{0};
   void grow_intern_table();
   void rehash(std::size_t slots);  // a power of two, more than twice the nodes interned
+  // Everything but the arena and the labels: what a checkpoint copies.
+  void copy_headers(const Grammar& from);
 
   std::vector<Node> nodes_;
   std::vector<std::string> labels_;
   NameIndex<LabelId> label_ids_;  // labels_ by name
   std::vector<InternSlot> interned_;  // size a power of two, at most half full
   std::size_t interned_count_ = 0;
+};
+
+struct Grammar::Checkpoint {
+  std::size_t nodes = 0, labels = 0;
+  Grammar headers;  // rules, constants, @start, @scope, ...: no nodes
 };
 
 }  // namespace vern

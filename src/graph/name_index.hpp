@@ -25,6 +25,7 @@ class NameIndex {
 
   // name -> id, unless the name has an id already (which it keeps).
   void add(std::string_view name, Id id) { ids_.try_emplace(std::string(name), id); }
+  void clear() { ids_.clear(); }
 
  private:
   struct Hash {

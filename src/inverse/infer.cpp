@@ -1,7 +1,6 @@
 #include "inverse/infer.hpp"
 
 #include <algorithm>
-#include <optional>
 
 #include "graph/alongside.hpp"
 #include "graph/parallel_for.hpp"
@@ -143,8 +142,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   // examples as they are: where it does not, it is made again merging
   // within the smallest tolerance, where every example is held to its own.
   const bool verify = smallest < out.tolerance && parts <= kJoinedPartsLimit;
-  std::optional<Grammar> unmerged;
-  if (verify) unmerged = graph;
+  const Grammar::Checkpoint unmerged = graph.checkpoint();
   generalise(graph, out.tolerance);
   // Joining sizes has checked every example within the smallest tolerance,
   // stricter than each one's own: a grammar it passed needs no second
@@ -155,7 +153,8 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
     out.tolerance = smallest;
     out.joint = {};
     out.twins = {};
-    generalise(*unmerged, smallest);
+    graph.rollback(unmerged);
+    generalise(graph, smallest);
   }
 
   // The first mesh seen for each label stands for all its parts.
