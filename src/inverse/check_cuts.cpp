@@ -41,6 +41,16 @@ std::optional<AxisMap> axis_map(const Scope& s, Axis a) {
 Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, const AxisMap& am, double length,
                double tol) {
   Cuts c;
+  make_cuts(boxes, inside, am, length, tol, c);
+  return c;
+}
+
+void make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, const AxisMap& am, double length,
+               double tol, Cuts& c) {
+  c.at.clear();
+  c.in_order.clear();
+  c.prefix.clear();
+  c.outside.clear();
   thread_local CutsScratch scratch;
   // Every face and both ends, snapped: a run of positions within the
   // tolerance becomes one, the scope's end if the run holds one, else
@@ -144,20 +154,28 @@ Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
   next.assign(c.prefix.begin(), c.prefix.end() - 1);
   for (std::size_t k = 0; k < inside.size(); ++k)
     if (seg_of[k] != kNoSegment) c.in_order[next[seg_of[k]]++] = inside[k];
-  return c;
 }
 
 std::shared_ptr<const Cuts> CutsCache::of(const BoxList& inside, const AxisMap& am, double length) {
   for (const Entry& c : entries_)
     if (c.world == am.world && c.sign == am.sign && c.origin == am.origin && c.length == length && c.boxes == inside)
       return c.cuts;
-  auto cuts = std::make_shared<const Cuts>(make_cuts(boxes_, inside, am, length, tol_));
-  Entry entry{inside, am.world, am.sign, am.origin, length, cuts};
-  if (entries_.size() < 8)
-    entries_.push_back(std::move(entry));
-  else
-    entries_[next_++ % entries_.size()] = std::move(entry);
-  return cuts;
+  Entry* slot = nullptr;
+  if (entries_.size() < 8) {
+    slot = &entries_.emplace_back();
+  } else {
+    slot = &entries_[next_++ % entries_.size()];
+  }
+  Entry& e = *slot;
+  // A split still matching may hold the old cuts: then they stay its own.
+  if (!e.cuts || e.cuts.use_count() > 1) e.cuts = std::make_shared<Cuts>();
+  make_cuts(boxes_, inside, am, length, tol_, *e.cuts);
+  e.boxes.assign(inside.begin(), inside.end());
+  e.world = am.world;
+  e.sign = am.sign;
+  e.origin = am.origin;
+  e.length = length;
+  return e.cuts;
 }
 
 std::string cuts_text(const Cuts& c, const AxisMap& am) {
