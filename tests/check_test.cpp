@@ -405,6 +405,26 @@ TEST(CheckOperations, ALearnedOrderTriesFirstTheAlternativeThatMatchedMost) {
   EXPECT_NE(joined(r.witness).find("alternative 2 of 2"), std::string::npos) << joined(r.witness);
 }
 
+TEST(CheckOperations, AnAnswerOnlyCheckKeepsNoRecordAndGivesTheSameAnswer) {
+  const Grammar g = read_grammar_file(VERN_SOURCE_DIR "/data/grammars/modern_houses.grm");
+  CheckOptions full, answer;
+  answer.answer_only = true;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    CheckedExample e = derive_example(g, seed);
+    const CheckResult r = check_example(g, e.boxes, e.size, full);
+    const CheckResult a = check_example(g, e.boxes, e.size, answer);
+    ASSERT_TRUE(r.derivable) << r.mismatch;
+    EXPECT_FALSE(r.parts.empty());
+    EXPECT_TRUE(a.derivable) << a.mismatch;
+    EXPECT_TRUE(a.parts.empty());
+    EXPECT_TRUE(a.steps.empty());
+    EXPECT_TRUE(a.witness.empty());
+    // A box moved: no derivation either way.
+    ASSERT_TRUE(move_box(e, e.boxes.size() / 2));
+    EXPECT_EQ(check_example(g, e.boxes, e.size, answer).derivable, check_example(g, e.boxes, e.size, full).derivable);
+  }
+}
+
 TEST(CheckOperations, TheStepLimitIsAnError) {
   const Grammar g = read_grammar_file(VERN_SOURCE_DIR "/data/grammars/garage.grm");
   const CheckedExample e = derive_example(g, 1);

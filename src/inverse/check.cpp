@@ -29,7 +29,7 @@ struct ConstantChoice {
 class Checker {
  public:
   Checker(const Grammar& g, const std::vector<LabelledBox>& boxes, double tol, Budget& budget, const Scope& start,
-          bool text, bool learned_order)
+          bool text, bool learned_order, bool answer_only)
       : g_(g),
         boxes_(boxes),
         tol_(tol),
@@ -37,7 +37,8 @@ class Checker {
         deterministic_(g),
         start_(start),
         text_(text),
-        learned_order_(learned_order) {
+        learned_order_(learned_order),
+        answer_only_(answer_only) {
     for (std::size_t k = 0; k < boxes.size(); ++k) all_.push_back(static_cast<std::uint32_t>(k));
   }
 
@@ -119,9 +120,11 @@ class Checker {
   }
 
   void attempt(const ConstantChoice& c) {
-    Matcher m(g_, boxes_, tol_, budget_, deterministic_, c.slots, c.unknowns, floating_, learned_order_);
+    Matcher m(g_, boxes_, tol_, budget_, deterministic_, c.slots, c.unknowns, floating_, learned_order_,
+              answer_only_);
     if (m.run(start_, all_)) {
       found_ = true;
+      if (answer_only_) return;
       // The first line says what was matched, so even a grammar without
       // choices has a witness.
       parts_ = m.matched_parts();
@@ -158,6 +161,7 @@ class Checker {
   std::vector<CheckStep> steps_;
   bool text_ = true;  // spell the witness out
   bool learned_order_ = false;
+  bool answer_only_ = false;
   Mismatch best_;
   std::string uncheckable_;
   bool open_ends_ = false;
@@ -187,7 +191,9 @@ CheckResult check_example(const Grammar& grammar, const std::vector<LabelledBox>
     return r;
   }
   Budget budget(options.max_steps);
-  return Checker(grammar, boxes, tol, budget, start, options.witness, options.learned_order).run();
+  return Checker(grammar, boxes, tol, budget, start, options.witness && !options.answer_only, options.learned_order,
+                 options.answer_only)
+      .run();
 }
 
 }  // namespace vern

@@ -96,6 +96,11 @@ struct CheckOptions {
   // later, the answer may be "no": derives_examples() then asks again in
   // the written order.
   bool learned_order = false;
+  // Only whether the example derives (a rewrite verified): the result
+  // keeps no witness, parts or steps, and matching keeps no record of them
+  // (a city's check copied 850,000 witness lines into the memos of splits
+  // it never tried twice).
+  bool answer_only = false;
 };
 
 // Where in a derivation a node runs: a hash of the chain of nodes from

@@ -20,7 +20,7 @@ namespace vern::check_detail {
 
 Matcher::Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double tolerance, Budget& budget,
                  DeterministicSubtrees& deterministic, std::vector<Slot> constants, std::vector<Unknown> unknowns,
-                 bool floating, bool learned_order)
+                 bool floating, bool learned_order, bool answer_only)
     : g_(g),
       boxes_(boxes),
       tol_(tolerance),
@@ -30,7 +30,8 @@ Matcher::Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double
       cuts_(boxes, tolerance),
       empty_(g, lookup_),
       floating_(floating),
-      learned_order_(learned_order) {
+      learned_order_(learned_order),
+      answer_only_(answer_only) {
   lookup_ = [this](ExprKind kind, std::uint32_t index) { return vars_.binding(kind, index); };
 }
 

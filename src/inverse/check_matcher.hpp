@@ -94,7 +94,7 @@ class Matcher {
   // example whose boundaries all lie on box faces.
   Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double tolerance, Budget& budget,
           DeterministicSubtrees& deterministic, std::vector<Slot> constants, std::vector<Unknown> unknowns,
-          bool floating, bool learned_order = false);
+          bool floating, bool learned_order = false, bool answer_only = false);
 
   // Does the start rule, run on `start`, derive exactly the boxes `all`?
   bool run(const Scope& start, const BoxList& all);
@@ -267,6 +267,8 @@ class Matcher {
   // has matched so far.
   bool learned_order_ = false;
   std::unordered_map<NodeId, std::vector<std::uint32_t>> wins_;
+  // CheckOptions::answer_only: no values, parts or memoised lines recorded.
+  bool answer_only_ = false;
   int depth_ = 0;
   int quiet_ = 0;
 };

@@ -579,6 +579,7 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   splits_shared();
   if (out.joined == 0) return out;
   drop_unused_rules(g);
+  check.answer_only = true;  // from here on, only whether every example derives
   std::vector<CheckResult> again;
   if (check_all(g, again)) return out;
   // Most likely a region's order of draws that check cannot follow: the

@@ -223,8 +223,9 @@ bool SplitSearch::children_match(bool lone_runs) {
     const bool ok = m_.match(parts_[i].child, s_.slice(axis_, from, len), cuts_.boxes(pl.from, pl.to));
     // Remember the result unless it pinned down an unknown from outside.
     if (memo && m_.vars_.trail_size() == trail)
-      memo_[key] = {
-          ok, std::vector<WitnessLine>(m_.witness_.begin() + static_cast<std::ptrdiff_t>(mark), m_.witness_.end())};
+      memo_[key] = {ok, m_.answer_only_ ? std::vector<WitnessLine>{}
+                                        : std::vector<WitnessLine>(m_.witness_.begin() + static_cast<std::ptrdiff_t>(mark),
+                                                                   m_.witness_.end())};
     if (!ok) return false;
   }
   if (!lone_runs) return true;
@@ -240,6 +241,7 @@ bool SplitSearch::children_match(bool lone_runs) {
 }
 
 void SplitSearch::add_witness(double k) {
+  if (m_.answer_only_) return;
   std::vector<double> value(parts_.size(), 0.0), length(parts_.size(), 0.0);
   for (std::size_t i = 0; i < parts_.size(); ++i) {
     const Placement& pl = placement_[i];
