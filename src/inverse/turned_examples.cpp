@@ -37,14 +37,21 @@ void layout(const SplitTree& t, const std::vector<LabelledBox>& boxes, std::stri
   }
   out += static_cast<char>('x' + t.axis);
   out += '(';
-  std::string previous;
+  // Each child is written in place and taken back when it repeats the one
+  // before: no string per child (each level copied all below it).
+  std::size_t previous = std::string::npos, previous_size = 0;
   for (const SplitTree& c : t.children) {
-    std::string child;
-    layout(c, boxes, child);
-    if (child == previous) continue;
-    out += child;
+    const std::size_t start = out.size();
+    layout(c, boxes, out);
+    const std::size_t size = out.size() - start;
+    // (Before the first, the one before is empty.)
+    if (size == previous_size && (previous == std::string::npos || out.compare(start, size, out, previous, size) == 0)) {
+      out.resize(start);
+      continue;
+    }
     out += '|';
-    previous = std::move(child);
+    previous = start;
+    previous_size = size;
   }
   out += ')';
 }
