@@ -27,9 +27,9 @@ class Folder {
     const auto [done, changed] = map_children(g_.op(id), [&](NodeId c) { return run(c); });
     NodeId out = id;
     if (std::holds_alternative<Split>(g_.op(id))) {
-      Split s = std::get<Split>(g_.op(id));
+      Split s = std::get<Split>(g_.op(id));  // a copy: folding interns, which may move the arena
       for (std::size_t i = 0; i < s.parts.size(); ++i) s.parts[i].child = done[i];
-      out = fold_split(s, changed);
+      out = fold_split(std::move(s), changed);
       if (out == kNotYet) out = id;
     } else if (changed) {
       Operation copy = g_.op(id);
@@ -50,10 +50,28 @@ class Folder {
 
   bool same(const SplitPart& a, const SplitPart& b) const {
     const auto x = a.size.value.literal(), y = b.size.value.literal();
-    // Inference interns its graphs, so equal children are one node; a
-    // grammar read from text is compared structurally.
     return a.size.relative == b.size.relative && x && y && std::abs(*x - *y) <= tol_ &&
-           (a.child == b.child || structurally_equal(g_, a.child, g_, b.child));
+           same_node(a.child, b.child);
+  }
+
+  // Inference interns its graphs, so equal children are one node; a
+  // grammar read from text is compared structurally. Most pairs differ
+  // in their own fields already, which say so without the deep
+  // comparison's memo (a set, allocated per call).
+  bool same_node(NodeId a, NodeId b) const {
+    if (a == b) return true;
+    const Operation& x = g_.op(a);
+    const Operation& y = g_.op(b);
+    if (x.index() != y.index()) return false;
+    if (const auto* s = std::get_if<Split>(&x)) {
+      const auto& t = std::get<Split>(y);
+      if (s->axis != t.axis || s->parts.size() != t.parts.size()) return false;
+      for (std::size_t i = 0; i < s->parts.size(); ++i)
+        if (s->parts[i].size != t.parts[i].size) return false;
+    } else if (const auto* p = std::get_if<Primitive>(&x)) {
+      return g_.label(p->label) == g_.label(std::get<Primitive>(y).label);
+    }
+    return structurally_equal(g_, a, g_, b);
   }
 
   // How many times parts[start, start + period) repeats from start on.
@@ -130,7 +148,7 @@ class Folder {
         const SplitPart& a = parts[r->start + j];
         const SplitPart& b = parts[i + j];
         if (a.size.relative != b.size.relative || !b.size.value.literal() ||
-            !(a.child == b.child || structurally_equal(g_, a.child, g_, b.child)))
+            !same_node(a.child, b.child))
           return false;
       }
       return true;
@@ -264,13 +282,13 @@ class Folder {
       const std::size_t a = from + starts[t], b = from + starts[t + 1];
       NodeId piece = parts[a].child;
       if (b - a > 1) {
-        const Split grouped = std::get<Split>(g_.op(group(axis, parts, a, b)));
-        piece = fold_split(grouped, true);
+        Split grouped = std::get<Split>(g_.op(group(axis, parts, a, b)));
+        piece = fold_split(std::move(grouped), true);
       }
       built = built || !is_primitive(piece);
       empty = empty || is_nil(piece);
       auto it = std::find_if(held.begin(), held.end(), [&](const auto& h) {
-        return h.first == piece || structurally_equal(g_, h.first, g_, piece);
+        return same_node(h.first, piece);
       });
       if (it == held.end()) held.emplace_back(piece, 1.0);
       else it->second += 1;
@@ -317,26 +335,34 @@ class Folder {
     return std::holds_alternative<Primitive>(op) || std::holds_alternative<Nil>(op);
   }
 
+  // Adjacent empty parts are one empty part, in place; whether any were.
+  bool join_empty_parts(std::vector<SplitPart>& parts) const {
+    std::size_t kept = 0;
+    bool joined = false;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      if (kept > 0 && is_nil(parts[i].child) && is_nil(parts[kept - 1].child) &&
+          parts[kept - 1].size.relative == parts[i].size.relative) {
+        Expr& last = parts[kept - 1].size.value;
+        last = Expr::number(*last.literal() + *parts[i].size.value.literal());
+        joined = true;
+        continue;
+      }
+      if (kept != i) parts[kept] = std::move(parts[i]);
+      ++kept;
+    }
+    parts.resize(kept);
+    return joined;
+  }
+
   // The split with its parts' children already folded; kNotYet when
   // nothing changes (children_changed false and no run folded).
-  NodeId fold_split(const Split& s, bool children_changed) {
-    std::vector<SplitPart> parts = s.parts;
+  NodeId fold_split(Split s, bool children_changed) {
+    std::vector<SplitPart> parts = std::move(s.parts);
     bool literal = s.axis.nodes().size() == 1 && s.axis.node(0).kind == ExprKind::Axis;
     for (const SplitPart& p : parts) literal = literal && p.size.value.literal();
     bool changed = children_changed;
     if (literal) {
-      // Adjacent empty parts are one empty part.
-      std::vector<SplitPart> joined;
-      for (const SplitPart& p : parts) {
-        if (!joined.empty() && is_nil(p.child) && is_nil(joined.back().child) &&
-            joined.back().size.relative == p.size.relative) {
-          joined.back().size.value = Expr::number(*joined.back().size.value.literal() + *p.size.value.literal());
-          changed = true;
-        } else {
-          joined.push_back(p);
-        }
-      }
-      parts = std::move(joined);
+      changed = join_empty_parts(parts) || changed;
       // Only a run of three parts or more that is (almost) the whole split
       // is folded: the walls or margins at its ends may differ. A run
       // inside a mixed row (a | a | b) is left to merging, which lines
