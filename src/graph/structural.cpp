@@ -1,9 +1,9 @@
 #include "graph/structural.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <set>
 #include <string>
-#include <unordered_map>
 #include <utility>
 
 #include "graph/overload.hpp"
@@ -151,18 +151,22 @@ std::size_t shallow_hash(const Operation& op) {
       [](RuleId id) { return std::size_t{id}; });
 }
 
-std::size_t structural_hash(const Grammar& g, NodeId node) {
-  std::unordered_map<NodeId, std::size_t> memo;
-  std::function<std::size_t(NodeId)> deep = [&](NodeId id) -> std::size_t {
-    if (auto it = memo.find(id); it != memo.end()) return it->second;
-    const std::size_t h = hash_operation(
-        g.op(id), deep, [&](LabelId l) { return std::hash<std::string>{}(g.label(l)); },
-        [&](RuleId r) { return std::hash<std::string>{}(g.rules[r].label); });
-    memo.emplace(id, h);
-    return h;
-  };
-  return deep(node);
+std::size_t StructuralHashes::operator()(NodeId id) {
+  if (id < known_.size() && known_[id]) return memo_[id];
+  const std::size_t h = hash_operation(
+      g_.op(id), [&](NodeId c) { return (*this)(c); },
+      [&](LabelId l) { return std::hash<std::string>{}(g_.label(l)); },
+      [&](RuleId r) { return std::hash<std::string>{}(g_.rules[r].label); });
+  if (id >= known_.size()) {
+    known_.resize(std::max<std::size_t>(g_.node_count(), id + 1), false);
+    memo_.resize(known_.size());
+  }
+  known_[id] = true;
+  memo_[id] = h;
+  return h;
 }
+
+std::size_t structural_hash(const Grammar& g, NodeId node) { return StructuralHashes(g)(node); }
 
 bool structurally_equal(const Grammar& ga, NodeId a, const Grammar& gb, NodeId b) {
   return Comparer(ga, gb).nodes(a, b);

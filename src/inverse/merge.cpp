@@ -102,7 +102,7 @@ class Unifier {
     for (std::size_t l = 0; l + 1 < level_starts.size(); ++l)
       settle(order.data() + level_starts[l], order.data() + level_starts[l + 1]);
     std::vector<NodeId> built(groups_.size(), 0);
-    for (std::size_t k = 0; k < groups_.size(); ++k) built[k] = build(groups_[k], built);
+    for (std::size_t k = 0; k < groups_.size(); ++k) built[k] = build(groups_[k], built);  // each group once
     return built[group_of_.at(root)];
   }
 
@@ -402,7 +402,9 @@ class Unifier {
   }
 
 
-  NodeId build(const Group& group, const std::vector<NodeId>& built) {
+  // Builds the group's node; its rows move into the row book (the group
+  // is done with once built).
+  NodeId build(Group& group, const std::vector<NodeId>& built) {
     if (!group.weights.empty()) {
       Choose choose;
       for (std::size_t k = 0; k < group.children.size(); ++k)
@@ -439,7 +441,9 @@ class Unifier {
     if (planned) {
       std::vector<LengthRow>& rows = rows_[out];
       rows.clear();
-      for (std::size_t m = 0; m < group.lengths.size(); ++m) rows.push_back({group.lengths[m], group.row_weights[m]});
+      rows.reserve(group.lengths.size());
+      for (std::size_t m = 0; m < group.lengths.size(); ++m)
+        rows.push_back({std::move(group.lengths[m]), group.row_weights[m]});
     }
     if (std::holds_alternative<Repeat>(g_.op(out)) && group.counted && !group.tile_counts.empty())
       tile_counts_[out] = group.tile_counts;

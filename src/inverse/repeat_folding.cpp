@@ -18,7 +18,7 @@ namespace {
 class Folder {
  public:
   Folder(Grammar& g, double tolerance, UnlikeTiles unlike, TileCounts* counts)
-      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts) {}
+      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts), hashes_(g) {}
 
   NodeId run(NodeId id) {
     if (id < memo_.size() && memo_[id] != kNotYet) return memo_[id];
@@ -37,7 +37,8 @@ class Folder {
       for (std::size_t i = 0; i < slots.size(); ++i) *slots[i] = done[i];
       out = g_.intern({std::move(copy), {}});
     }
-    if (memo_.size() <= id) memo_.resize(std::max<std::size_t>(g_.node_count(), id + 1), kNotYet);
+    // Grown by half again, not by the few nodes folding added since.
+    if (memo_.size() <= id) memo_.resize(std::max<std::size_t>(g_.node_count() + g_.node_count() / 2, id + 1), kNotYet);
     memo_[id] = out;
     return out;
   }
@@ -55,13 +56,18 @@ class Folder {
   }
 
   // Inference interns its graphs, so equal children are one node; a
-  // grammar read from text is compared structurally. Most pairs differ
-  // in their own fields already, which say so without the deep
-  // comparison's memo (a set, allocated per call).
+  // grammar read from text is compared structurally. Most pairs differ,
+  // which their own fields or else their hashes say without the deep
+  // comparison (and its memo, a set allocated per call).
   bool same_node(NodeId a, NodeId b) const {
     if (a == b) return true;
-    const Operation& x = g_.op(a);
-    const Operation& y = g_.op(b);
+    if (!same_fields(g_.op(a), g_.op(b))) return false;
+    return hashes_(a) == hashes_(b) && structurally_equal(g_, a, g_, b);
+  }
+
+  // What structurally_equal compares first, for the kinds that fill rows:
+  // false when they differ (true says nothing about their children).
+  bool same_fields(const Operation& x, const Operation& y) const {
     if (x.index() != y.index()) return false;
     if (const auto* s = std::get_if<Split>(&x)) {
       const auto& t = std::get<Split>(y);
@@ -71,7 +77,7 @@ class Folder {
     } else if (const auto* p = std::get_if<Primitive>(&x)) {
       return g_.label(p->label) == g_.label(std::get<Primitive>(y).label);
     }
-    return structurally_equal(g_, a, g_, b);
+    return true;
   }
 
   // How many times parts[start, start + period) repeats from start on.
@@ -318,12 +324,14 @@ class Folder {
     if (const auto it = labels_.find(id); it != labels_.end()) return it->second;
     std::vector<LabelId> out;
     if (const auto* p = std::get_if<Primitive>(&g_.op(id))) out.push_back(p->label);
+    // All the children's labels, then sorted once: a union per child made
+    // a vector per child. (References into labels_ stay valid as it grows.)
     for_each_child(g_.op(id), [&](NodeId c) {
       const std::vector<LabelId>& below = labels_below(c);
-      std::vector<LabelId> both;
-      std::set_union(out.begin(), out.end(), below.begin(), below.end(), std::back_inserter(both));
-      out = std::move(both);
+      out.insert(out.end(), below.begin(), below.end());
     });
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
     return labels_[id] = std::move(out);
   }
 
@@ -413,6 +421,7 @@ class Folder {
   TileCounts* counts_;  // where to note each repeat's tile count, or null
   std::vector<NodeId> memo_;  // by node id; kNotYet until folded
   std::unordered_map<NodeId, std::vector<LabelId>> labels_;  // labels_below, by node
+  mutable StructuralHashes hashes_;  // a memo: same_node asks from const members
 };
 
 }  // namespace
