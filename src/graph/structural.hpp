@@ -8,7 +8,6 @@
 #pragma once
 
 #include <cstddef>
-#include <vector>
 
 #include "graph/grammar.hpp"
 
@@ -21,21 +20,6 @@ std::size_t shallow_hash(const Operation& op);
 // Hash of the whole subgraph below a node; primitives by name, calls by the
 // called rule's label. Equal subgraphs hash equally across grammars.
 std::size_t structural_hash(const Grammar& g, NodeId node);
-
-// structural_hash of many nodes of one grammar, each node hashed once
-// however many ask: a pass comparing many pairs rejects most by their
-// hashes (equal subgraphs hash equally) without hashing shared subgraphs
-// again per pair. Nodes added to the grammar later may be asked too.
-class StructuralHashes {
- public:
-  explicit StructuralHashes(const Grammar& g) : g_(g) {}
-  std::size_t operator()(NodeId node);
-
- private:
-  const Grammar& g_;
-  std::vector<std::size_t> memo_;  // by node id
-  std::vector<bool> known_;        // by node id: memo_ holds its hash
-};
 
 // Are the subgraphs below a (in ga) and b (in gb) structurally equal?
 bool structurally_equal(const Grammar& ga, NodeId a, const Grammar& gb, NodeId b);

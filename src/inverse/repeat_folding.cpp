@@ -18,7 +18,7 @@ namespace {
 class Folder {
  public:
   Folder(Grammar& g, double tolerance, UnlikeTiles unlike, TileCounts* counts)
-      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts), hashes_(g) {}
+      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts) {}
 
   NodeId run(NodeId id) {
     if (id < memo_.size() && memo_[id] != kNotYet) return memo_[id];
@@ -56,29 +56,8 @@ class Folder {
   }
 
   // Inference interns its graphs, so equal children are one node; a
-  // grammar read from text is compared structurally. Most pairs differ,
-  // which their own fields or else their hashes say without the deep
-  // comparison (and its memo, a set allocated per call).
-  bool same_node(NodeId a, NodeId b) const {
-    if (a == b) return true;
-    if (!same_fields(g_.op(a), g_.op(b))) return false;
-    return hashes_(a) == hashes_(b) && structurally_equal(g_, a, g_, b);
-  }
-
-  // What structurally_equal compares first, for the kinds that fill rows:
-  // false when they differ (true says nothing about their children).
-  bool same_fields(const Operation& x, const Operation& y) const {
-    if (x.index() != y.index()) return false;
-    if (const auto* s = std::get_if<Split>(&x)) {
-      const auto& t = std::get<Split>(y);
-      if (s->axis != t.axis || s->parts.size() != t.parts.size()) return false;
-      for (std::size_t i = 0; i < s->parts.size(); ++i)
-        if (s->parts[i].size != t.parts[i].size) return false;
-    } else if (const auto* p = std::get_if<Primitive>(&x)) {
-      return g_.label(p->label) == g_.label(std::get<Primitive>(y).label);
-    }
-    return true;
-  }
+  // grammar read from text is compared structurally.
+  bool same_node(NodeId a, NodeId b) const { return a == b || structurally_equal(g_, a, g_, b); }
 
   // How many times parts[start, start + period) repeats from start on.
   std::size_t copies(const std::vector<SplitPart>& parts, std::size_t start, std::size_t period) const {
@@ -141,9 +120,9 @@ class Folder {
   // structure but for where the runs are, and each bay one node, not a
   // long split per example (issue 15, "compound tiles"). False, leaving
   // parts as they were, when there is no such row or a repeat would move
-  // a cut by more than the tolerance.
-  bool segment_row(const Expr& axis, std::vector<SplitPart>& parts) {
-    const auto r = best_run(parts);
+  // a cut by more than the tolerance. r is best_run(parts), which the
+  // caller has already found.
+  bool segment_row(const Expr& axis, std::vector<SplitPart>& parts, const std::optional<Run>& r) {
     if (!r || r->period < 2) return false;
     // An occurrence has the pattern's children and kinds of size; its
     // sizes may differ (a bay 4 m wide before the entrance, 3.4 m after).
@@ -321,17 +300,22 @@ class Folder {
 
   // The labels of the primitives below a node, ascending (memoised).
   const std::vector<LabelId>& labels_below(NodeId id) {
-    if (const auto it = labels_.find(id); it != labels_.end()) return it->second;
+    if (id < labels_known_.size() && labels_known_[id]) return labels_[id];
     std::vector<LabelId> out;
     if (const auto* p = std::get_if<Primitive>(&g_.op(id))) out.push_back(p->label);
     // All the children's labels, then sorted once: a union per child made
-    // a vector per child. (References into labels_ stay valid as it grows.)
+    // a vector per child.
     for_each_child(g_.op(id), [&](NodeId c) {
       const std::vector<LabelId>& below = labels_below(c);
       out.insert(out.end(), below.begin(), below.end());
     });
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
+    if (id >= labels_.size()) {
+      labels_.resize(std::max<std::size_t>(g_.node_count(), id + 1));
+      labels_known_.resize(labels_.size(), false);
+    }
+    labels_known_[id] = true;
     return labels_[id] = std::move(out);
   }
 
@@ -381,7 +365,8 @@ class Folder {
         changed = true;
       };
       bool folded = false;
-      if (const auto r = best_run(parts); r && r->parts() >= 3 && r->parts() + 2 >= parts.size()) {
+      const auto r = best_run(parts);
+      if (r && r->parts() >= 3 && r->parts() + 2 >= parts.size()) {
         if (const std::optional<SplitPart> part = fold(s.axis, parts, *r)) {
           replace(r->start, r->start + r->parts(), *part);
           folded = true;
@@ -390,7 +375,7 @@ class Folder {
       // Else a row of compound tiles with other parts among them (a shop
       // front of bays with the entrance bay after some of them): each run
       // of the tiles a repeat, each stretch between runs one group.
-      if (!folded && segment_row(s.axis, parts)) {
+      if (!folded && segment_row(s.axis, parts, r)) {
         folded = true;
         changed = true;
       }
@@ -420,8 +405,8 @@ class Folder {
   UnlikeTiles unlike_;
   TileCounts* counts_;  // where to note each repeat's tile count, or null
   std::vector<NodeId> memo_;  // by node id; kNotYet until folded
-  std::unordered_map<NodeId, std::vector<LabelId>> labels_;  // labels_below, by node
-  mutable StructuralHashes hashes_;  // a memo: same_node asks from const members
+  std::vector<std::vector<LabelId>> labels_;  // labels_below, by node id
+  std::vector<bool> labels_known_;            // by node id: labels_ holds its labels
 };
 
 }  // namespace
