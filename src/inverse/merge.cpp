@@ -159,22 +159,34 @@ class Unifier {
   }
 
   void visit_choose(NodeId id, const Choose& c, const std::vector<std::size_t>& children) {
-    std::map<std::size_t, double> weight;  // child group -> weight; ordered, so the key is canonical
-    for (std::size_t i = 0; i < children.size(); ++i) weight[children[i]] += *c.options[i].priority.literal();
-    Key key{kChooseForm, {}};
+    // Each child group's weight, the groups ascending so the key is
+    // canonical: options sorted by group, stably, and summed in their
+    // order (buffers reused across chooses, not a map per choose).
+    auto& weight = choose_weights_;
+    weight.clear();
+    for (std::size_t i = 0; i < children.size(); ++i) weight.push_back({children[i], *c.options[i].priority.literal()});
+    std::stable_sort(weight.begin(), weight.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::size_t distinct = 0;
+    for (std::size_t i = 0; i < weight.size(); ++i) {
+      if (distinct > 0 && weight[distinct - 1].first == weight[i].first) weight[distinct - 1].second += weight[i].second;
+      else weight[distinct++] = weight[i];
+    }
+    weight.resize(distinct);
+    Key& key = choose_key_;
+    key.form = kChooseForm;
+    key.children.clear();
     for (const auto& [child, w] : weight) key.children.push_back(child);
-    auto [it, fresh] = group_by_key_.emplace(std::move(key), groups_.size());
-    if (fresh) {
+    auto it = group_by_key_.find(key);
+    if (it == group_by_key_.end()) {
+      it = group_by_key_.emplace(key, groups_.size()).first;
       Group group;
       group.first = id;
-      for (const auto& [child, w] : weight) {
-        group.children.push_back(child);
-        group.weights.push_back(0);
-      }
+      group.children = key.children;
+      group.weights.assign(key.children.size(), 0);
       groups_.push_back(std::move(group));
     }
     Group& group = groups_[it->second];
-    for (std::size_t k = 0; k < group.children.size(); ++k) group.weights[k] += weight[group.children[k]];
+    for (std::size_t k = 0; k < group.children.size(); ++k) group.weights[k] += weight[k].second;
     group_of_[id] = it->second;
   }
 
@@ -484,6 +496,8 @@ class Unifier {
   std::vector<SizedMember> sized_;
   std::vector<std::uint8_t> split_key_;
   std::vector<double> row_;
+  Key choose_key_;
+  std::vector<std::pair<std::size_t, double>> choose_weights_;
 };
 
 // ---- simplification ----

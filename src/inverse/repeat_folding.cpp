@@ -228,6 +228,7 @@ class Folder {
                                        std::size_t to) {
     if (to - from < 3) return std::nullopt;
     std::vector<double> at{0};  // cut positions from parts[from]
+    at.reserve(to - from + 1);
     for (std::size_t i = from; i < to; ++i) at.push_back(at.back() + *parts[i].size.value.literal());
     const double total = at.back();
     // The first tile ends at one of the first cuts; the largest count wins.
@@ -236,6 +237,7 @@ class Folder {
       if (k < 3 || k > to - from) continue;
       const double tile = total / static_cast<double>(k);
       std::vector<std::size_t> starts{0};  // each tile's first part, from `from`
+      starts.reserve(k + 1);
       for (std::size_t j = 1, i = 1; j < k && i < at.size(); ++j) {
         while (i < at.size() && at[i] < static_cast<double>(j) * tile - tol_) ++i;
         if (i == at.size() || std::abs(at[i] - static_cast<double>(j) * tile) > tol_) break;
@@ -282,6 +284,7 @@ class Folder {
     NodeId body = held[0].first;
     if (held.size() > 1) {
       Choose choose;
+      choose.options.reserve(held.size());
       for (const auto& [piece, count] : held) choose.options.push_back({Expr{}, Expr::number(count), piece});
       body = g_.intern({std::move(choose), {}});
     }
@@ -305,6 +308,9 @@ class Folder {
     if (const auto* p = std::get_if<Primitive>(&g_.op(id))) out.push_back(p->label);
     // All the children's labels, then sorted once: a union per child made
     // a vector per child.
+    std::size_t count = out.size();
+    for_each_child(g_.op(id), [&](NodeId c) { count += labels_below(c).size(); });
+    out.reserve(count);
     for_each_child(g_.op(id), [&](NodeId c) {
       const std::vector<LabelId>& below = labels_below(c);
       out.insert(out.end(), below.begin(), below.end());

@@ -71,11 +71,11 @@ std::optional<std::vector<PartPlan>> plan_sizes(const std::vector<std::vector<do
   }
   // The absolute lengths are means: every member's absolute parts, and
   // with fixed shares its relative ones, must still land within tolerance.
+  double fixed_shares = 0;  // the fixed relative parts' weights
+  for (std::size_t i = 0; i < parts; ++i) fixed_shares += !plan[i].absolute && plan[i].fixed ? plan[i].value : 0.0;
   for (std::size_t m = 0; m < lengths.size(); ++m) {
     double weights = 0;  // the ranged parts' weights: this member's own lengths
     for (std::size_t i = 0; i < parts; ++i) weights += plan[i].absolute || plan[i].fixed ? 0.0 : lengths[m][i];
-    double fixed_shares = 0;  // the fixed relative parts' weights
-    for (std::size_t i = 0; i < parts; ++i) fixed_shares += !plan[i].absolute && plan[i].fixed ? plan[i].value : 0.0;
     double at = 0, expected = 0;
     for (std::size_t i = 0; i < parts; ++i) {
       expected += lengths[m][i];
