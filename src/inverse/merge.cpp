@@ -279,25 +279,34 @@ class Unifier {
     // One member is one kind (size_clusters would say so too).
     if (members.size() == 1) kinds_.assign(1, 0);
     else kinds_ = size_clusters(sized_members(members));
+    std::size_t g = kNoGroup;
     for (std::size_t m = 0; m < members.size(); ++m) {
-      key.sizes = kinds_[m];
-      auto it = group_by_key_.find(key);
-      if (it == group_by_key_.end()) {
-        it = group_by_key_.emplace(key, groups_.size()).first;
-        groups_.emplace_back();
-        groups_.back().first = members[m];
-        groups_.back().children = key.children;
-      }
+      // Members of one kind in a row are one group: looked up once.
+      if (m == 0 || kinds_[m] != kinds_[m - 1]) g = group_of_key(key, kinds_[m], members[m]);
       const Sized sized(g_.op(members[m]));
-      if (!sized.empty()) add_member(groups_[it->second], members[m], sized);
+      if (!sized.empty()) add_member(groups_[g], members[m], sized);
       if (std::holds_alternative<Repeat>(g_.op(members[m]))) {
-        Group& group = groups_[it->second];
+        Group& group = groups_[g];
         const auto counted = tile_counts_.find(members[m]);
         if (counted == tile_counts_.end()) group.counted = false;
         else group.tile_counts.insert(group.tile_counts.end(), counted->second.begin(), counted->second.end());
       }
-      group_of_[members[m]] = it->second;
+      group_of_[members[m]] = g;
     }
+  }
+
+  // The group of the key with this kind of sizes; a new one, first is its
+  // first member, if there is none yet.
+  std::size_t group_of_key(Key& key, std::size_t kind, NodeId first) {
+    key.sizes = kind;
+    auto it = group_by_key_.find(key);
+    if (it == group_by_key_.end()) {
+      it = group_by_key_.emplace(key, groups_.size()).first;
+      groups_.emplace_back();
+      groups_.back().first = first;
+      groups_.back().children = key.children;
+    }
+    return it->second;
   }
 
   // The members' sizes as size_clusters reads them.

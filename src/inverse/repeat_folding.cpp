@@ -318,7 +318,8 @@ class Folder {
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     if (id >= labels_.size()) {
-      labels_.resize(std::max<std::size_t>(g_.node_count(), id + 1));
+      // Grown by half again: folding adds nodes as it goes.
+      labels_.resize(std::max<std::size_t>(g_.node_count() + g_.node_count() / 2, id + 1));
       labels_known_.resize(labels_.size(), false);
     }
     labels_known_[id] = true;
