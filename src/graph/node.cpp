@@ -42,7 +42,10 @@ const char* operation_name(const Operation& op) {
 }
 
 std::vector<NodeId> node_children(const Operation& op) {
+  std::size_t count = 0;
+  for_each_child(op, [&](NodeId) { ++count; });
   std::vector<NodeId> out;
+  out.reserve(count);  // one allocation, not one per doubling (long splits)
   for_each_child(op, [&](NodeId c) { out.push_back(c); });
   return out;
 }

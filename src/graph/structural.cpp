@@ -74,9 +74,23 @@ class Comparer {
 
   bool nodes(NodeId x, NodeId y) {
     if (&a_ == &b_ && x == y) return true;
-    if (!same_.insert({x, y}).second) return true;
     const Operation& ox = a_.op(x);
     const Operation& oy = b_.op(y);
+    // Own fields first: most unequal pairs differ there already, and need
+    // no memo entry then. A pair met again was found equal (a DAG holds
+    // no node below itself), so checking its fields again changes nothing.
+    if (!same_fields(ox, oy)) return false;
+    if (!same_.insert({x, y}).second) return true;
+    // The same kind with the same fields has as many children.
+    bool equal = true;
+    std::size_t i = 0;
+    for_each_child(ox, [&](NodeId c) { equal = equal && nodes(c, child_at(oy, i++)); });
+    return equal;
+  }
+
+ private:
+  // Everything but the children.
+  bool same_fields(const Operation& ox, const Operation& oy) const {
     if (ox.index() != oy.index()) return false;
     return std::visit(
         Overload{
@@ -84,16 +98,16 @@ class Comparer {
               const auto& t = std::get<Split>(oy);
               if (s.axis != t.axis || s.parts.size() != t.parts.size()) return false;
               for (std::size_t i = 0; i < s.parts.size(); ++i)
-                if (s.parts[i].size != t.parts[i].size || !nodes(s.parts[i].child, t.parts[i].child)) return false;
+                if (s.parts[i].size != t.parts[i].size) return false;
               return true;
             },
             [&](const Repeat& r) {
               const auto& t = std::get<Repeat>(oy);
-              return r.axis == t.axis && r.size == t.size && nodes(r.child, t.child);
+              return r.axis == t.axis && r.size == t.size;
             },
             [&](const RepeatN& r) {
               const auto& t = std::get<RepeatN>(oy);
-              return r.axis == t.axis && r.count == t.count && nodes(r.child, t.child);
+              return r.axis == t.axis && r.count == t.count;
             },
             [&](const Choose& c) {
               const auto& t = std::get<Choose>(oy);
@@ -101,7 +115,7 @@ class Comparer {
               for (std::size_t i = 0; i < c.options.size(); ++i) {
                 const auto& p = c.options[i];
                 const auto& q = t.options[i];
-                if (p.condition != q.condition || p.priority != q.priority || !nodes(p.child, q.child)) return false;
+                if (p.condition != q.condition || p.priority != q.priority) return false;
               }
               return true;
             },
@@ -111,23 +125,17 @@ class Comparer {
             },
             [&](const Primitive& p) { return a_.label(p.label) == b_.label(std::get<Primitive>(oy).label); },
             [&](const Nil&) { return true; },
-            [&](const Translate& tr) {
-              const auto& t = std::get<Translate>(oy);
-              return tr.offset == t.offset && nodes(tr.child, t.child);
-            },
-            [&](const Scale& s) {
-              const auto& t = std::get<Scale>(oy);
-              return s.size == t.size && nodes(s.child, t.child);
-            },
+            [&](const Translate& tr) { return tr.offset == std::get<Translate>(oy).offset; },
+            [&](const Scale& s) { return s.size == std::get<Scale>(oy).size; },
             [&](const Rotate& r) {
               const auto& t = std::get<Rotate>(oy);
-              return r.axis == t.axis && r.angle == t.angle && nodes(r.child, t.child);
+              return r.axis == t.axis && r.angle == t.angle;
             },
             [&](const Comp& c) {
               const auto& t = std::get<Comp>(oy);
               if (c.parts.size() != t.parts.size()) return false;
               for (std::size_t i = 0; i < c.parts.size(); ++i)
-                if (c.parts[i].face != t.parts[i].face || !nodes(c.parts[i].child, t.parts[i].child)) return false;
+                if (c.parts[i].face != t.parts[i].face) return false;
               return true;
             },
             [&](const Colour& c) { return c == std::get<Colour>(oy); },
@@ -135,7 +143,16 @@ class Comparer {
         ox);
   }
 
- private:
+  // The i-th child, in for_each_child's order.
+  static NodeId child_at(const Operation& op, std::size_t i) {
+    if (const auto* s = std::get_if<Split>(&op)) return s->parts[i].child;
+    if (const auto* c = std::get_if<Choose>(&op)) return c->options[i].child;
+    if (const auto* m = std::get_if<Comp>(&op)) return m->parts[i].child;
+    NodeId only = 0;  // the others have one child
+    for_each_child(op, [&](NodeId c) { only = c; });
+    return only;
+  }
+
   const Grammar& a_;
   const Grammar& b_;
   // Pairs already compared or being compared; a mismatch anywhere makes the

@@ -18,6 +18,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <unordered_map>
 
@@ -97,15 +98,11 @@ class Unifier {
     std::vector<std::uint32_t> height(g_.node_count(), 0);
     for (NodeId id : order)
       for_each_child(g_.op(id), [&](NodeId c) { height[id] = std::max(height[id], height[c] + 1); });
-    std::stable_sort(order.begin(), order.end(), [&](NodeId a, NodeId b) { return height[a] < height[b]; });
-    for (std::size_t i = 0; i < order.size();) {
-      std::size_t j = i;
-      while (j < order.size() && height[order[j]] == height[order[i]]) ++j;
-      settle(order.data() + i, order.data() + j);
-      i = j;
-    }
+    const std::vector<std::size_t> level_starts = sort_by_height(order, height);
+    for (std::size_t l = 0; l + 1 < level_starts.size(); ++l)
+      settle(order.data() + level_starts[l], order.data() + level_starts[l + 1]);
     std::vector<NodeId> built(groups_.size(), 0);
-    for (std::size_t k = 0; k < groups_.size(); ++k) built[k] = build(groups_[k], built);
+    for (std::size_t k = 0; k < groups_.size(); ++k) built[k] = build(groups_[k], built);  // each group once
     return built[group_of_.at(root)];
   }
 
@@ -162,23 +159,51 @@ class Unifier {
   }
 
   void visit_choose(NodeId id, const Choose& c, const std::vector<std::size_t>& children) {
-    std::map<std::size_t, double> weight;  // child group -> weight; ordered, so the key is canonical
-    for (std::size_t i = 0; i < children.size(); ++i) weight[children[i]] += *c.options[i].priority.literal();
-    Key key{kChooseForm, {}};
+    // Each child group's weight, the groups ascending so the key is
+    // canonical: options sorted by group, stably, and summed in their
+    // order (buffers reused across chooses, not a map per choose).
+    auto& weight = choose_weights_;
+    weight.clear();
+    for (std::size_t i = 0; i < children.size(); ++i) weight.push_back({children[i], *c.options[i].priority.literal()});
+    std::stable_sort(weight.begin(), weight.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::size_t distinct = 0;
+    for (std::size_t i = 0; i < weight.size(); ++i) {
+      if (distinct > 0 && weight[distinct - 1].first == weight[i].first) weight[distinct - 1].second += weight[i].second;
+      else weight[distinct++] = weight[i];
+    }
+    weight.resize(distinct);
+    Key& key = choose_key_;
+    key.form = kChooseForm;
+    key.children.clear();
     for (const auto& [child, w] : weight) key.children.push_back(child);
-    auto [it, fresh] = group_by_key_.emplace(std::move(key), groups_.size());
-    if (fresh) {
+    auto it = group_by_key_.find(key);
+    if (it == group_by_key_.end()) {
+      it = group_by_key_.emplace(key, groups_.size()).first;
       Group group;
       group.first = id;
-      for (const auto& [child, w] : weight) {
-        group.children.push_back(child);
-        group.weights.push_back(0);
-      }
+      group.children = key.children;
+      group.weights.assign(key.children.size(), 0);
       groups_.push_back(std::move(group));
     }
     Group& group = groups_[it->second];
-    for (std::size_t k = 0; k < group.children.size(); ++k) group.weights[k] += weight[group.children[k]];
+    for (std::size_t k = 0; k < group.children.size(); ++k) group.weights[k] += weight[k].second;
     group_of_[id] = it->second;
+  }
+
+  // Sorts nodes by height, keeping their order within a height (what a
+  // stable sort does, by counting: no merge buffers); returns where each
+  // height starts, and the end.
+  static std::vector<std::size_t> sort_by_height(std::vector<NodeId>& order, const std::vector<std::uint32_t>& height) {
+    std::uint32_t top = 0;
+    for (NodeId id : order) top = std::max(top, height[id]);
+    std::vector<std::size_t> starts(order.empty() ? 1 : top + 2, 0);
+    for (NodeId id : order) ++starts[height[id] + 1];
+    for (std::size_t h = 1; h < starts.size(); ++h) starts[h] += starts[h - 1];
+    std::vector<std::size_t> at(starts.begin(), starts.end() - 1);
+    std::vector<NodeId> sorted(order.size());
+    for (NodeId id : order) sorted[at[height[id]]++] = id;
+    order = std::move(sorted);
+    return starts;
   }
 
   // Every node below id once, children before parents.
@@ -189,89 +214,136 @@ class Unifier {
     order.push_back(id);
   }
 
-  // What ranges in a node: split part sizes, a repeat's tile size.
-  static std::vector<const Expr*> sized(const Operation& op) {
-    std::vector<const Expr*> sizes;
-    if (const auto* s = std::get_if<Split>(&op)) {
-      for (const auto& p : s->parts) sizes.push_back(&p.size.value);
-    } else if (const auto* r = std::get_if<Repeat>(&op)) {
-      sizes.push_back(&r->size);
+  // What ranges in a node: split part sizes, a repeat's tile size. Read
+  // in place, not gathered into a vector per member.
+  class Sized {
+   public:
+    explicit Sized(const Operation& op) {
+      if (const auto* s = std::get_if<Split>(&op)) parts_ = s->parts;
+      else if (const auto* r = std::get_if<Repeat>(&op)) tile_ = &r->size;
     }
-    return sizes;
-  }
+    std::size_t size() const { return tile_ ? 1 : parts_.size(); }
+    bool empty() const { return size() == 0; }
+    const Expr& operator[](std::size_t i) const { return tile_ ? *tile_ : parts_[i].size.value; }
+
+   private:
+    std::span<const SplitPart> parts_;
+    const Expr* tile_ = nullptr;
+  };
 
   // Groups the nodes of one level: by key (operation form, child groups),
-  // then each key's members by the kinds of their sizes.
+  // then each key's members by the kinds of their sizes. The level's
+  // buckets, its members and the key being looked up live in buffers kept
+  // across levels and nodes: allocating them per node was most of the cost.
   void settle(const NodeId* begin, const NodeId* end) {
-    std::unordered_map<Key, std::size_t, KeyHash> bucket_of;
-    std::vector<std::pair<Key, std::vector<NodeId>>> buckets;  // in order of first member
+    bucket_of_.clear();
+    bucket_keys_.clear();
+    bucket_at_.clear();
     for (const NodeId* at = begin; at != end; ++at) {
       const NodeId id = *at;
       const Operation& op = g_.op(id);
-      std::vector<std::size_t> children;
-      for_each_child(op, [&](NodeId c) { children.push_back(group_of_[c]); });
+      probe_.children.clear();
+      for_each_child(op, [&](NodeId c) { probe_.children.push_back(group_of_[c]); });
       if (const auto* c = std::get_if<Choose>(&op); c && plain(*c)) {
-        visit_choose(id, *c, children);
+        visit_choose(id, *c, probe_.children);
+        bucket_at_.push_back(kNoGroup);
         continue;
       }
-      std::size_t lengths = 0;
-      if (const auto* r = std::get_if<Repeat>(&op)) lengths = tile_lengths_.kind(*r);
-      Key key{form_id(op), std::move(children), lengths, 0};
-      auto [it, fresh] = bucket_of.try_emplace(key, buckets.size());
-      if (fresh) buckets.emplace_back(std::move(key), std::vector<NodeId>{});
-      buckets[it->second].second.push_back(id);
+      probe_.form = form_id(op);
+      probe_.lengths = 0;
+      if (const auto* r = std::get_if<Repeat>(&op)) probe_.lengths = tile_lengths_.kind(*r);
+      probe_.sizes = 0;
+      auto it = bucket_of_.find(probe_);
+      if (it == bucket_of_.end()) {
+        it = bucket_of_.emplace(probe_, bucket_keys_.size()).first;
+        bucket_keys_.push_back(probe_);
+      }
+      bucket_at_.push_back(it->second);
     }
-    for (auto& [key, members] : buckets) {
-      std::vector<SizedMember> sizes;
-      for (NodeId id : members) {
-        SizedMember m;
-        for (const Expr* e : sized(g_.op(id))) m.sizes.push_back(literal_range(*e));
-        // Empty space is what the other parts leave: 0.2 m or 1 m of air
-        // above a house are not two kinds of house.
-        if (const auto* s = std::get_if<Split>(&g_.op(id))) {
-          // Shares of the split: of its relative parts' total, for relative
-          // parts (what the absolute ones leave is what they share).
-          bool literal = true;
-          for (std::size_t i = 0; i < s->parts.size(); ++i) {
-            literal = literal && m.sizes[i] && m.sizes[i]->lo == m.sizes[i]->hi;
-            if (literal && s->parts[i].size.relative) m.total += m.sizes[i]->lo;
-          }
-          if (!literal) m.total = 0;
-          for (std::size_t i = 0; i < s->parts.size(); ++i) {
-            if (std::holds_alternative<Nil>(g_.op(s->parts[i].child))) m.sizes[i].reset();
-            // An absolute part is a length, not a share.
-            else if (!s->parts[i].size.relative && m.total > 0) m.total = -1;
-          }
-          if (m.total < 0) m.total = 0;
-        }
-        m.weight = id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0;
-        sizes.push_back(std::move(m));
+    // Each bucket's members together, in order of their first member and
+    // in level order within a bucket (a counting sort).
+    bucket_starts_.assign(bucket_keys_.size() + 1, 0);
+    for (std::size_t b : bucket_at_)
+      if (b != kNoGroup) ++bucket_starts_[b + 1];
+    for (std::size_t b = 1; b < bucket_starts_.size(); ++b) bucket_starts_[b] += bucket_starts_[b - 1];
+    members_.resize(bucket_starts_.back());
+    fill_at_.assign(bucket_starts_.begin(), bucket_starts_.end() - 1);
+    for (std::size_t i = 0; i < bucket_at_.size(); ++i)
+      if (bucket_at_[i] != kNoGroup) members_[fill_at_[bucket_at_[i]]++] = begin[i];
+    for (std::size_t b = 0; b < bucket_keys_.size(); ++b)
+      settle_bucket(bucket_keys_[b], {members_.data() + bucket_starts_[b], members_.data() + bucket_starts_[b + 1]});
+  }
+
+  // One key's members become groups, one per kind of their sizes.
+  void settle_bucket(Key& key, std::span<const NodeId> members) {
+    // One member is one kind (size_clusters would say so too).
+    if (members.size() == 1) kinds_.assign(1, 0);
+    else kinds_ = size_clusters(sized_members(members));
+    std::size_t g = kNoGroup;
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      // Members of one kind in a row are one group: looked up once.
+      if (m == 0 || kinds_[m] != kinds_[m - 1]) g = group_of_key(key, kinds_[m], members[m]);
+      const Sized sized(g_.op(members[m]));
+      if (!sized.empty()) add_member(groups_[g], members[m], sized);
+      if (std::holds_alternative<Repeat>(g_.op(members[m]))) {
+        Group& group = groups_[g];
+        const auto counted = tile_counts_.find(members[m]);
+        if (counted == tile_counts_.end()) group.counted = false;
+        else group.tile_counts.insert(group.tile_counts.end(), counted->second.begin(), counted->second.end());
       }
-      const std::vector<std::size_t> kinds = size_clusters(sizes);
-      for (std::size_t m = 0; m < members.size(); ++m) {
-        Key k = key;
-        k.sizes = kinds[m];
-        auto [it, fresh] = group_by_key_.emplace(std::move(k), groups_.size());
-        if (fresh) {
-          groups_.emplace_back();
-          groups_.back().first = members[m];
-          groups_.back().children = key.children;
-        }
-        const std::vector<const Expr*> exprs = sized(g_.op(members[m]));
-        if (!exprs.empty()) add_member(groups_[it->second], members[m], exprs);
-        if (std::holds_alternative<Repeat>(g_.op(members[m]))) {
-          Group& group = groups_[it->second];
-          const auto counted = tile_counts_.find(members[m]);
-          if (counted == tile_counts_.end()) group.counted = false;
-          else group.tile_counts.insert(group.tile_counts.end(), counted->second.begin(), counted->second.end());
-        }
-        group_of_[members[m]] = it->second;
-      }
+      group_of_[members[m]] = g;
     }
   }
 
+  // The group of the key with this kind of sizes; a new one, first is its
+  // first member, if there is none yet.
+  std::size_t group_of_key(Key& key, std::size_t kind, NodeId first) {
+    key.sizes = kind;
+    auto it = group_by_key_.find(key);
+    if (it == group_by_key_.end()) {
+      it = group_by_key_.emplace(key, groups_.size()).first;
+      groups_.emplace_back();
+      groups_.back().first = first;
+      groups_.back().children = key.children;
+    }
+    return it->second;
+  }
+
+  // The members' sizes as size_clusters reads them.
+  const std::vector<SizedMember>& sized_members(std::span<const NodeId> members) {
+    sized_.resize(members.size());
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      const NodeId id = members[k];
+      SizedMember& m = sized_[k];
+      m.sizes.clear();
+      m.total = 0;
+      const Sized sized(g_.op(id));
+      for (std::size_t i = 0; i < sized.size(); ++i) m.sizes.push_back(literal_range(sized[i]));
+      // Empty space is what the other parts leave: 0.2 m or 1 m of air
+      // above a house are not two kinds of house.
+      if (const auto* s = std::get_if<Split>(&g_.op(id))) {
+        // Shares of the split: of its relative parts' total, for relative
+        // parts (what the absolute ones leave is what they share).
+        bool literal = true;
+        for (std::size_t i = 0; i < s->parts.size(); ++i) {
+          literal = literal && m.sizes[i] && m.sizes[i]->lo == m.sizes[i]->hi;
+          if (literal && s->parts[i].size.relative) m.total += m.sizes[i]->lo;
+        }
+        if (!literal) m.total = 0;
+        for (std::size_t i = 0; i < s->parts.size(); ++i) {
+          if (std::holds_alternative<Nil>(g_.op(s->parts[i].child))) m.sizes[i].reset();
+          // An absolute part is a length, not a share.
+          else if (!s->parts[i].size.relative && m.total > 0) m.total = -1;
+        }
+        if (m.total < 0) m.total = 0;
+      }
+      m.weight = id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0;
+    }
+    return sized_;
+  }
+
   // Widens the group's ranges by a member's sizes and notes their values.
-  void add_member(Group& group, NodeId id, const std::vector<const Expr*>& sizes) {
+  void add_member(Group& group, NodeId id, const Sized& sizes) {
     // Each range starts at the first member's own value.
     const bool first_member = group.ranges.empty();
     if (first_member) {
@@ -281,9 +353,10 @@ class Unifier {
     }
     ++group.members;
     const auto booked = book_.find(id);
-    std::vector<double> row;
+    std::vector<double>& row = row_;
+    row.clear();
     for (std::size_t i = 0; i < sizes.size(); ++i) {
-      const auto r = literal_range(*sizes[i]);
+      const auto r = literal_range(sizes[i]);
       if (!r) continue;  // non-literal sizes are part of the key
       Range& range = group.ranges[i];
       range = first_member ? *r : Range{std::min(range.lo, r->lo), std::max(range.hi, r->hi)};
@@ -298,7 +371,7 @@ class Unifier {
       if (r->lo == r->hi) row.push_back(r->lo);
     }
     if (row.size() == sizes.size()) {
-      group.lengths.push_back(std::move(row));
+      group.lengths.push_back(row);
       group.row_weights.push_back(id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0);
     } else if (const auto rows = rows_.find(id); rows != rows_.end()) {
       for (const LengthRow& r : rows->second) {
@@ -323,11 +396,12 @@ class Unifier {
       const ExprNode& axis = s->axis.node(s->axis.root());
       if (s->axis.nodes().size() == 1 && axis == ExprNode{.kind = ExprKind::Axis, .op = axis.op} &&
           std::all_of(s->parts.begin(), s->parts.end(), [](const SplitPart& p) { return literal_range(p.size.value); })) {
-        std::vector<std::uint8_t> key{axis.op};
+        std::vector<std::uint8_t>& key = split_key_;  // reused: most nodes' form is known
+        key.assign(1, axis.op);
         for (const auto& p : s->parts) key.push_back(p.size.relative ? 1 : 0);
-        auto [it, fresh] = split_forms_.try_emplace(std::move(key), forms_);
-        if (fresh) ++forms_;
-        return it->second;
+        if (const auto it = split_forms_.find(key); it != split_forms_.end()) return it->second;
+        split_forms_.emplace(key, forms_);
+        return forms_++;
       }
     }
     Operation blank = op;
@@ -349,7 +423,9 @@ class Unifier {
   }
 
 
-  NodeId build(const Group& group, const std::vector<NodeId>& built) {
+  // Builds the group's node; its rows move into the row book (the group
+  // is done with once built).
+  NodeId build(Group& group, const std::vector<NodeId>& built) {
     if (!group.weights.empty()) {
       Choose choose;
       for (std::size_t k = 0; k < group.children.size(); ++k)
@@ -386,7 +462,9 @@ class Unifier {
     if (planned) {
       std::vector<LengthRow>& rows = rows_[out];
       rows.clear();
-      for (std::size_t m = 0; m < group.lengths.size(); ++m) rows.push_back({group.lengths[m], group.row_weights[m]});
+      rows.reserve(group.lengths.size());
+      for (std::size_t m = 0; m < group.lengths.size(); ++m)
+        rows.push_back({std::move(group.lengths[m]), group.row_weights[m]});
     }
     if (std::holds_alternative<Repeat>(g_.op(out)) && group.counted && !group.tile_counts.empty())
       tile_counts_[out] = group.tile_counts;
@@ -416,6 +494,19 @@ class Unifier {
   };
   std::unordered_map<std::vector<std::uint8_t>, std::size_t, BytesHash> split_forms_;  // axis, relative flags
   std::size_t forms_ = 0;
+  // Buffers reused across levels and nodes (settle, form_id, add_member).
+  Key probe_;                                        // the key of the node being settled
+  std::unordered_map<Key, std::size_t, KeyHash> bucket_of_;  // this level's keys -> bucket
+  std::vector<Key> bucket_keys_;                     // in order of first member
+  std::vector<std::size_t> bucket_at_;               // per node of the level: its bucket, or kNoGroup
+  std::vector<std::size_t> bucket_starts_, fill_at_;
+  std::vector<NodeId> members_;                      // the level's nodes, bucket by bucket
+  std::vector<std::size_t> kinds_;
+  std::vector<SizedMember> sized_;
+  std::vector<std::uint8_t> split_key_;
+  std::vector<double> row_;
+  Key choose_key_;
+  std::vector<std::pair<std::size_t, double>> choose_weights_;
 };
 
 // ---- simplification ----

@@ -27,9 +27,9 @@ class Folder {
     const auto [done, changed] = map_children(g_.op(id), [&](NodeId c) { return run(c); });
     NodeId out = id;
     if (std::holds_alternative<Split>(g_.op(id))) {
-      Split s = std::get<Split>(g_.op(id));
+      Split s = std::get<Split>(g_.op(id));  // a copy: folding interns, which may move the arena
       for (std::size_t i = 0; i < s.parts.size(); ++i) s.parts[i].child = done[i];
-      out = fold_split(s, changed);
+      out = fold_split(std::move(s), changed);
       if (out == kNotYet) out = id;
     } else if (changed) {
       Operation copy = g_.op(id);
@@ -37,7 +37,8 @@ class Folder {
       for (std::size_t i = 0; i < slots.size(); ++i) *slots[i] = done[i];
       out = g_.intern({std::move(copy), {}});
     }
-    if (memo_.size() <= id) memo_.resize(std::max<std::size_t>(g_.node_count(), id + 1), kNotYet);
+    // Grown by half again, not by the few nodes folding added since.
+    if (memo_.size() <= id) memo_.resize(std::max<std::size_t>(g_.node_count() + g_.node_count() / 2, id + 1), kNotYet);
     memo_[id] = out;
     return out;
   }
@@ -50,11 +51,13 @@ class Folder {
 
   bool same(const SplitPart& a, const SplitPart& b) const {
     const auto x = a.size.value.literal(), y = b.size.value.literal();
-    // Inference interns its graphs, so equal children are one node; a
-    // grammar read from text is compared structurally.
     return a.size.relative == b.size.relative && x && y && std::abs(*x - *y) <= tol_ &&
-           (a.child == b.child || structurally_equal(g_, a.child, g_, b.child));
+           same_node(a.child, b.child);
   }
+
+  // Inference interns its graphs, so equal children are one node; a
+  // grammar read from text is compared structurally.
+  bool same_node(NodeId a, NodeId b) const { return a == b || structurally_equal(g_, a, g_, b); }
 
   // How many times parts[start, start + period) repeats from start on.
   std::size_t copies(const std::vector<SplitPart>& parts, std::size_t start, std::size_t period) const {
@@ -117,9 +120,9 @@ class Folder {
   // structure but for where the runs are, and each bay one node, not a
   // long split per example (issue 15, "compound tiles"). False, leaving
   // parts as they were, when there is no such row or a repeat would move
-  // a cut by more than the tolerance.
-  bool segment_row(const Expr& axis, std::vector<SplitPart>& parts) {
-    const auto r = best_run(parts);
+  // a cut by more than the tolerance. r is best_run(parts), which the
+  // caller has already found.
+  bool segment_row(const Expr& axis, std::vector<SplitPart>& parts, const std::optional<Run>& r) {
     if (!r || r->period < 2) return false;
     // An occurrence has the pattern's children and kinds of size; its
     // sizes may differ (a bay 4 m wide before the entrance, 3.4 m after).
@@ -130,7 +133,7 @@ class Folder {
         const SplitPart& a = parts[r->start + j];
         const SplitPart& b = parts[i + j];
         if (a.size.relative != b.size.relative || !b.size.value.literal() ||
-            !(a.child == b.child || structurally_equal(g_, a.child, g_, b.child)))
+            !same_node(a.child, b.child))
           return false;
       }
       return true;
@@ -225,6 +228,7 @@ class Folder {
                                        std::size_t to) {
     if (to - from < 3) return std::nullopt;
     std::vector<double> at{0};  // cut positions from parts[from]
+    at.reserve(to - from + 1);
     for (std::size_t i = from; i < to; ++i) at.push_back(at.back() + *parts[i].size.value.literal());
     const double total = at.back();
     // The first tile ends at one of the first cuts; the largest count wins.
@@ -233,6 +237,7 @@ class Folder {
       if (k < 3 || k > to - from) continue;
       const double tile = total / static_cast<double>(k);
       std::vector<std::size_t> starts{0};  // each tile's first part, from `from`
+      starts.reserve(k + 1);
       for (std::size_t j = 1, i = 1; j < k && i < at.size(); ++j) {
         while (i < at.size() && at[i] < static_cast<double>(j) * tile - tol_) ++i;
         if (i == at.size() || std::abs(at[i] - static_cast<double>(j) * tile) > tol_) break;
@@ -264,13 +269,13 @@ class Folder {
       const std::size_t a = from + starts[t], b = from + starts[t + 1];
       NodeId piece = parts[a].child;
       if (b - a > 1) {
-        const Split grouped = std::get<Split>(g_.op(group(axis, parts, a, b)));
-        piece = fold_split(grouped, true);
+        Split grouped = std::get<Split>(g_.op(group(axis, parts, a, b)));
+        piece = fold_split(std::move(grouped), true);
       }
       built = built || !is_primitive(piece);
       empty = empty || is_nil(piece);
       auto it = std::find_if(held.begin(), held.end(), [&](const auto& h) {
-        return h.first == piece || structurally_equal(g_, h.first, g_, piece);
+        return same_node(h.first, piece);
       });
       if (it == held.end()) held.emplace_back(piece, 1.0);
       else it->second += 1;
@@ -279,6 +284,7 @@ class Folder {
     NodeId body = held[0].first;
     if (held.size() > 1) {
       Choose choose;
+      choose.options.reserve(held.size());
       for (const auto& [piece, count] : held) choose.options.push_back({Expr{}, Expr::number(count), piece});
       body = g_.intern({std::move(choose), {}});
     }
@@ -297,15 +303,26 @@ class Folder {
 
   // The labels of the primitives below a node, ascending (memoised).
   const std::vector<LabelId>& labels_below(NodeId id) {
-    if (const auto it = labels_.find(id); it != labels_.end()) return it->second;
+    if (id < labels_known_.size() && labels_known_[id]) return labels_[id];
     std::vector<LabelId> out;
     if (const auto* p = std::get_if<Primitive>(&g_.op(id))) out.push_back(p->label);
+    // All the children's labels, then sorted once: a union per child made
+    // a vector per child.
+    std::size_t count = out.size();
+    for_each_child(g_.op(id), [&](NodeId c) { count += labels_below(c).size(); });
+    out.reserve(count);
     for_each_child(g_.op(id), [&](NodeId c) {
       const std::vector<LabelId>& below = labels_below(c);
-      std::vector<LabelId> both;
-      std::set_union(out.begin(), out.end(), below.begin(), below.end(), std::back_inserter(both));
-      out = std::move(both);
+      out.insert(out.end(), below.begin(), below.end());
     });
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    if (id >= labels_.size()) {
+      // Grown by half again: folding adds nodes as it goes.
+      labels_.resize(std::max<std::size_t>(g_.node_count() + g_.node_count() / 2, id + 1));
+      labels_known_.resize(labels_.size(), false);
+    }
+    labels_known_[id] = true;
     return labels_[id] = std::move(out);
   }
 
@@ -317,26 +334,34 @@ class Folder {
     return std::holds_alternative<Primitive>(op) || std::holds_alternative<Nil>(op);
   }
 
+  // Adjacent empty parts are one empty part, in place; whether any were.
+  bool join_empty_parts(std::vector<SplitPart>& parts) const {
+    std::size_t kept = 0;
+    bool joined = false;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      if (kept > 0 && is_nil(parts[i].child) && is_nil(parts[kept - 1].child) &&
+          parts[kept - 1].size.relative == parts[i].size.relative) {
+        Expr& last = parts[kept - 1].size.value;
+        last = Expr::number(*last.literal() + *parts[i].size.value.literal());
+        joined = true;
+        continue;
+      }
+      if (kept != i) parts[kept] = std::move(parts[i]);
+      ++kept;
+    }
+    parts.resize(kept);
+    return joined;
+  }
+
   // The split with its parts' children already folded; kNotYet when
   // nothing changes (children_changed false and no run folded).
-  NodeId fold_split(const Split& s, bool children_changed) {
-    std::vector<SplitPart> parts = s.parts;
+  NodeId fold_split(Split s, bool children_changed) {
+    std::vector<SplitPart> parts = std::move(s.parts);
     bool literal = s.axis.nodes().size() == 1 && s.axis.node(0).kind == ExprKind::Axis;
     for (const SplitPart& p : parts) literal = literal && p.size.value.literal();
     bool changed = children_changed;
     if (literal) {
-      // Adjacent empty parts are one empty part.
-      std::vector<SplitPart> joined;
-      for (const SplitPart& p : parts) {
-        if (!joined.empty() && is_nil(p.child) && is_nil(joined.back().child) &&
-            joined.back().size.relative == p.size.relative) {
-          joined.back().size.value = Expr::number(*joined.back().size.value.literal() + *p.size.value.literal());
-          changed = true;
-        } else {
-          joined.push_back(p);
-        }
-      }
-      parts = std::move(joined);
+      changed = join_empty_parts(parts) || changed;
       // Only a run of three parts or more that is (almost) the whole split
       // is folded: the walls or margins at its ends may differ. A run
       // inside a mixed row (a | a | b) is left to merging, which lines
@@ -347,7 +372,8 @@ class Folder {
         changed = true;
       };
       bool folded = false;
-      if (const auto r = best_run(parts); r && r->parts() >= 3 && r->parts() + 2 >= parts.size()) {
+      const auto r = best_run(parts);
+      if (r && r->parts() >= 3 && r->parts() + 2 >= parts.size()) {
         if (const std::optional<SplitPart> part = fold(s.axis, parts, *r)) {
           replace(r->start, r->start + r->parts(), *part);
           folded = true;
@@ -356,7 +382,7 @@ class Folder {
       // Else a row of compound tiles with other parts among them (a shop
       // front of bays with the entrance bay after some of them): each run
       // of the tiles a repeat, each stretch between runs one group.
-      if (!folded && segment_row(s.axis, parts)) {
+      if (!folded && segment_row(s.axis, parts, r)) {
         folded = true;
         changed = true;
       }
@@ -386,7 +412,8 @@ class Folder {
   UnlikeTiles unlike_;
   TileCounts* counts_;  // where to note each repeat's tile count, or null
   std::vector<NodeId> memo_;  // by node id; kNotYet until folded
-  std::unordered_map<NodeId, std::vector<LabelId>> labels_;  // labels_below, by node
+  std::vector<std::vector<LabelId>> labels_;  // labels_below, by node id
+  std::vector<bool> labels_known_;            // by node id: labels_ holds its labels
 };
 
 }  // namespace

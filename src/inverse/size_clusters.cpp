@@ -89,7 +89,11 @@ double reading_cost(const std::vector<SizedMember>& members, std::size_t part, c
 }  // namespace
 
 std::vector<std::size_t> size_clusters(const std::vector<SizedMember>& members) {
-  std::vector<std::vector<std::size_t>> rows(members.size());
+  // Members are one kind where every part agrees: each part's kinds
+  // refine the kinds so far, renumbered in order of first member, which
+  // numbers the rows of part kinds as a whole. A part of one kind leaves
+  // them as they are.
+  std::vector<std::size_t> out(members.size(), 0);
   const std::size_t parts = members.empty() ? 0 : members[0].sizes.size();
   const auto metres = [](const SizedMember&, const Range& r) -> std::optional<Range> { return r; };
   const auto shares = [](const SizedMember& m, const Range& r) -> std::optional<Range> {
@@ -106,11 +110,11 @@ std::vector<std::size_t> size_clusters(const std::vector<SizedMember>& members) 
       const std::vector<std::size_t> by_share = clusters_of_part(members, p, shares);
       if (reading_cost(members, p, by_share, shares) < reading_cost(members, p, kinds, metres)) kinds = by_share;
     }
-    for (std::size_t m = 0; m < members.size(); ++m) rows[m].push_back(kinds[m]);
+    if (std::all_of(kinds.begin(), kinds.end(), [](std::size_t k) { return k == 0; })) continue;
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> numbered;  // (kind so far, part's kind) -> kind
+    for (std::size_t m = 0; m < members.size(); ++m)
+      out[m] = numbered.try_emplace({out[m], kinds[m]}, numbered.size()).first->second;
   }
-  std::map<std::vector<std::size_t>, std::size_t> numbered;  // a row of part kinds -> its kind
-  std::vector<std::size_t> out;
-  for (const auto& row : rows) out.push_back(numbered.try_emplace(row, numbered.size()).first->second);
   return out;
 }
 

@@ -41,11 +41,16 @@ std::optional<std::vector<PartPlan>> plan_sizes(const std::vector<std::vector<do
   // Shares of what the absolute parts leave, taken from the member with the
   // most room (the best-conditioned ratio).
   const std::size_t widest = static_cast<std::size_t>(std::max_element(totals.begin(), totals.end()) - totals.begin());
-  auto rest = [&](std::size_t m) {
+  // What each member's absolute parts leave, once: the absolute lengths
+  // are settled now, and asking per part made the checks below quadratic
+  // in the parts (long rows of windows).
+  std::vector<double> rests(lengths.size());
+  for (std::size_t m = 0; m < lengths.size(); ++m) {
     double r = totals[m];
     for (std::size_t i = 0; i < parts; ++i) r -= plan[i].absolute ? plan[i].value : 0.0;
-    return r;
-  };
+    rests[m] = r;
+  }
+  auto rest = [&](std::size_t m) { return rests[m]; };
   if (rest(widest) <= tolerance) return std::nullopt;
   bool shares_fixed = true;
   for (std::size_t i = 0; i < parts && shares_fixed; ++i) {
@@ -66,11 +71,11 @@ std::optional<std::vector<PartPlan>> plan_sizes(const std::vector<std::vector<do
   }
   // The absolute lengths are means: every member's absolute parts, and
   // with fixed shares its relative ones, must still land within tolerance.
+  double fixed_shares = 0;  // the fixed relative parts' weights
+  for (std::size_t i = 0; i < parts; ++i) fixed_shares += !plan[i].absolute && plan[i].fixed ? plan[i].value : 0.0;
   for (std::size_t m = 0; m < lengths.size(); ++m) {
     double weights = 0;  // the ranged parts' weights: this member's own lengths
     for (std::size_t i = 0; i < parts; ++i) weights += plan[i].absolute || plan[i].fixed ? 0.0 : lengths[m][i];
-    double fixed_shares = 0;  // the fixed relative parts' weights
-    for (std::size_t i = 0; i < parts; ++i) fixed_shares += !plan[i].absolute && plan[i].fixed ? plan[i].value : 0.0;
     double at = 0, expected = 0;
     for (std::size_t i = 0; i < parts; ++i) {
       expected += lengths[m][i];
