@@ -20,6 +20,15 @@ Example example_from_derivation(const Derivation& d, std::string source) {
   return ex;
 }
 
+Example boxes_at_origin(const Example& example) {
+  Example boxes;
+  boxes.source = example.source;
+  boxes.boxes = example.boxes;
+  boxes.min = example.min;
+  boxes.max = example.max;
+  return at_origin(std::move(boxes));
+}
+
 Example at_origin(Example example) {
   const glm::dvec3 shift = example.min;
   for (LabelledBox& b : example.boxes) {

@@ -17,5 +17,8 @@ Example example_from_derivation(const Derivation& d, std::string source);
 // The example moved so its bounds start at the origin, as check and infer
 // place every example ("each example at its own origin").
 Example at_origin(Example example);
+// The same for checking, which reads the boxes alone: the meshes and the
+// parts' vertex positions (12 MB for the city's ten) are not copied.
+Example boxes_at_origin(const Example& example);
 
 }  // namespace vern

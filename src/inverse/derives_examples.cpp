@@ -56,7 +56,7 @@ bool derives_examples(const Grammar& g, const std::vector<Example>& placed, cons
 bool derives_examples(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
                       std::vector<CheckResult>& results) {
   std::vector<Example> placed;
-  for (const Example& e : examples) placed.push_back(at_origin(e));
+  for (const Example& e : examples) placed.push_back(boxes_at_origin(e));
   CheckOptions check;
   check.tolerance = options.tolerance;
   check.witness = false;
@@ -73,7 +73,7 @@ bool check_passes(const Grammar& g, const std::vector<Example>& examples, double
     check.witness = false;
     check.learned_order = true;  // only the answer is kept
     check.answer_only = true;
-    derivable[i] = check_placed(g, at_origin(examples[i]), check).derivable;
+    derivable[i] = check_placed(g, boxes_at_origin(examples[i]), check).derivable;
   });
   return std::ranges::all_of(derivable, [](char d) { return d != 0; });
 }

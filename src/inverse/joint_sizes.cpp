@@ -523,7 +523,7 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   JointSizes out;
   if (examples.size() < std::min(options.min_examples, options.min_equal)) return out;
   std::vector<Example> placed;
-  for (const Example& e : examples) placed.push_back(at_origin(e));
+  for (const Example& e : examples) placed.push_back(boxes_at_origin(e));
   CheckOptions check;
   check.tolerance = options.tolerance;
   check.witness = false;  // the parts' lengths are all this step reads
