@@ -43,16 +43,19 @@ bool Matcher::match_choose(NodeId id, const Choose& op, const Scope& s, const Bo
   auto o = options_of(id, op, s);
   if (!o) return false;
   // The written order, or (learned_order_) the alternatives that matched
-  // most often first, ties in the written order.
-  std::vector<std::uint32_t> order(op.options.size());
-  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  // most often first, ties in the written order; only a learned order is
+  // made into a list (every choose of every check passes here).
+  std::vector<std::uint32_t> order;
   std::vector<std::uint32_t>* wins = nullptr;
   if (learned_order_ && op.options.size() > 1) {
     wins = &wins_[id];
     wins->resize(op.options.size(), 0);
+    order.resize(op.options.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return (*wins)[a] > (*wins)[b]; });
   }
-  for (const std::uint32_t i : order) {
+  for (std::size_t k = 0; k < op.options.size(); ++k) {
+    const std::size_t i = wins ? order[k] : k;
     if (!o->applicable[i]) continue;
     const std::size_t mark = witness_.size();
     if (op.options.size() > 1) {

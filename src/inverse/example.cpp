@@ -70,10 +70,13 @@ class PartAdder {
  public:
   PartAdder(Example& example, const ExampleLimits& limits) : example_(example), limits_(limits) {}
 
-  // `object`: how messages name the part (default: its name).
-  void add(const std::string& name, std::uint32_t line, const Mesh& mesh, const std::string& object = {}) {
+  // `object`: how messages name the part (default: its name). `whole`:
+  // the mesh is known to be one loose piece (a glTF mesh whole in its own
+  // coordinates, LocalMesh), so there are no pieces to look for.
+  void add(const std::string& name, std::uint32_t line, const Mesh& mesh, const std::string& object = {},
+           bool whole = false) {
     const std::string& who = object.empty() ? name : object;
-    const std::vector<Mesh> pieces = loose_pieces(mesh);
+    const std::vector<Mesh> pieces = whole ? std::vector<Mesh>{} : loose_pieces(mesh);
     if (!pieces.empty() && pieces_apart(pieces, default_tolerance(mesh.min_corner(), mesh.max_corner()))) {
       for (std::size_t k = 0; k < pieces.size(); ++k) {
         add_one(name, line, pieces[k],
@@ -82,12 +85,6 @@ class PartAdder {
     } else {
       add_one(name, line, mesh, who).loose_pieces = static_cast<std::uint32_t>(std::max<std::size_t>(1, pieces.size()));
     }
-  }
-
-  // A part known to be one loose piece (a glTF mesh whole in its own
-  // coordinates, LocalMesh): there are no pieces to look for.
-  void add_whole(const std::string& name, std::uint32_t line, const Mesh& mesh, const std::string& object) {
-    add_one(name, line, mesh, object.empty() ? name : object);
   }
 
  private:
@@ -780,8 +777,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
              "export the part as a surface (triangles), or leave it out");
       }
       const std::string object = instances ? node.name + " (instance " + std::to_string(i) + ")" : std::string();
-      if (whole) adder.add_whole(name, 0, mesh, object);
-      else adder.add(name, 0, mesh, object);
+      adder.add(name, 0, mesh, object, whole);
     }
   }
   if (ex.boxes.empty()) {
