@@ -25,7 +25,7 @@ using Interval = std::pair<double, double>;
 
 // Sorts, merges overlapping intervals, trims integer sets to whole bounds
 // and expands small integer sets to points.
-Support normalised(std::vector<Interval> in, bool integer) {
+Support normalised(Intervals in, bool integer) {
   // The common case, one plain interval, without sorting or copying.
   if (in.size() == 1 && !integer && !std::isnan(in[0].first) && !std::isnan(in[0].second)) {
     if (in[0].first > in[0].second) std::swap(in[0].first, in[0].second);
@@ -33,7 +33,7 @@ Support normalised(std::vector<Interval> in, bool integer) {
     s.intervals = std::move(in);
     return s;
   }
-  std::vector<Interval> v;
+  Intervals v;
   v.reserve(in.size());
   for (auto [lo, hi] : in) {
     if (std::isnan(lo) || std::isnan(hi)) continue;
@@ -57,7 +57,7 @@ Support normalised(std::vector<Interval> in, bool integer) {
     double count = 0;
     for (const auto& [lo, hi] : s.intervals) count += hi - lo + 1;
     if (count <= kMaxExpandedIntegers) {
-      std::vector<Interval> points;
+      Intervals points;
       for (const auto& [lo, hi] : s.intervals)
         for (double k = lo; k <= hi; k += 1) points.emplace_back(k, k);
       s.intervals = std::move(points);
@@ -82,7 +82,7 @@ Interval mul(const Interval& a, const Interval& b) {
 }
 
 // a / b for b within [lo, hi] not holding 0 in its inside; appends results.
-void divide(const Interval& a, double lo, double hi, std::vector<Interval>& out) {
+void divide(const Interval& a, double lo, double hi, Intervals& out) {
   if (a.first == 0 && a.second == 0) {
     out.emplace_back(0.0, 0.0);
   } else if (lo > 0 || hi < 0) {
@@ -110,9 +110,9 @@ Support combine(const Support& x, const Support& y, bool keeps_integer, F op) {
   if (x.empty() || y.empty()) return {};
   // Pairwise on many intervals costs more than it tells: use hulls.
   const bool hull = x.intervals.size() * y.intervals.size() > 4096;
-  const std::vector<Interval> xs = hull ? std::vector<Interval>{{x.lower(), x.upper()}} : x.intervals;
-  const std::vector<Interval> ys = hull ? std::vector<Interval>{{y.lower(), y.upper()}} : y.intervals;
-  std::vector<Interval> out;
+  const Intervals xs = hull ? Intervals{{x.lower(), x.upper()}} : x.intervals;
+  const Intervals ys = hull ? Intervals{{y.lower(), y.upper()}} : y.intervals;
+  Intervals out;
   for (const auto& a : xs)
     for (const auto& b : ys) op(a, b, out);
   return normalised(std::move(out), keeps_integer && x.integer && y.integer);
@@ -348,7 +348,7 @@ struct Walker {
         return inexact(Support::range(lo, hi), random);
       }
       case Function::Abs: {
-        std::vector<Interval> out;
+        Intervals out;
         for (const auto& [lo, hi] : num(0).intervals) {
           if (lo >= 0)
             out.emplace_back(lo, hi);
@@ -365,12 +365,12 @@ struct Walker {
         double (*g)(double) = f == Function::Floor  ? static_cast<double (*)(double)>(std::floor)
                               : f == Function::Ceil ? static_cast<double (*)(double)>(std::ceil)
                                                     : static_cast<double (*)(double)>(std::round);
-        std::vector<Interval> out;
+        Intervals out;
         for (const auto& [lo, hi] : num(0).intervals) out.emplace_back(g(lo), g(hi));
         return inexact(normalised(out, true), random);
       }
       case Function::Sqrt: {
-        std::vector<Interval> out;
+        Intervals out;
         for (const auto& [lo, hi] : num(0).clamp(0, kInf).intervals) out.emplace_back(std::sqrt(lo), std::sqrt(hi));
         return inexact(normalised(out, false), random);
       }
@@ -467,7 +467,8 @@ Support Support::integers(double lo, double hi) { return normalised({{lo, hi}}, 
 Support Support::everything() { return normalised({{-kInf, kInf}}, false); }
 
 Support Support::points(const std::vector<double>& values) {
-  std::vector<Interval> v;
+  Intervals v;
+  v.reserve(values.size());
   for (double x : values) v.emplace_back(x, x);
   return normalised(std::move(v), false);
 }
@@ -506,7 +507,7 @@ std::optional<std::vector<double>> Support::values(std::size_t max_count) const 
 }
 
 Support Support::clamp(double lo, double hi) const {
-  std::vector<Interval> out;
+  Intervals out;
   for (const auto& [a, b] : intervals)
     if (b >= lo && a <= hi) out.emplace_back(std::max(a, lo), std::min(b, hi));
   return normalised(std::move(out), integer);
@@ -517,13 +518,15 @@ Support Support::unite(const Support& other) const {
   if (other.empty()) return *this;
   // A whole-number set joined with a continuous one can only stay
   // whole-number if both are; otherwise it widens to the intervals.
-  std::vector<Interval> all = intervals;
-  all.insert(all.end(), other.intervals.begin(), other.intervals.end());
+  Intervals all;
+  all.reserve(intervals.size() + other.intervals.size());
+  for (const Interval& iv : intervals) all.push_back(iv);
+  for (const Interval& iv : other.intervals) all.push_back(iv);
   return normalised(std::move(all), integer && other.integer);
 }
 
 Support Support::intersect(const Support& other) const {
-  std::vector<Interval> out;
+  Intervals out;
   std::size_t i = 0, j = 0;
   while (i < intervals.size() && j < other.intervals.size()) {
     const auto& a = intervals[i];
@@ -554,24 +557,24 @@ std::string Support::describe() const {
 }
 
 Support operator+(const Support& x, const Support& y) {
-  return combine(x, y, true, [](const Interval& a, const Interval& b, std::vector<Interval>& out) {
+  return combine(x, y, true, [](const Interval& a, const Interval& b, Intervals& out) {
     out.emplace_back(a.first + b.first, a.second + b.second);
   });
 }
 
 Support operator-(const Support& x, const Support& y) {
-  return combine(x, y, true, [](const Interval& a, const Interval& b, std::vector<Interval>& out) {
+  return combine(x, y, true, [](const Interval& a, const Interval& b, Intervals& out) {
     out.emplace_back(a.first - b.second, a.second - b.first);
   });
 }
 
 Support operator*(const Support& x, const Support& y) {
   return combine(x, y, true,
-                 [](const Interval& a, const Interval& b, std::vector<Interval>& out) { out.push_back(mul(a, b)); });
+                 [](const Interval& a, const Interval& b, Intervals& out) { out.push_back(mul(a, b)); });
 }
 
 Support operator/(const Support& x, const Support& y) {
-  return combine(x, y, false, [](const Interval& a, const Interval& b, std::vector<Interval>& out) {
+  return combine(x, y, false, [](const Interval& a, const Interval& b, Intervals& out) {
     if (b.first < 0 && b.second > 0) {
       divide(a, b.first, 0.0, out);
       divide(a, 0.0, b.second, out);
@@ -582,7 +585,7 @@ Support operator/(const Support& x, const Support& y) {
 }
 
 Support operator-(const Support& x) {
-  std::vector<Interval> out;
+  Intervals out;
   for (const auto& [lo, hi] : x.intervals) out.emplace_back(-hi, -lo);
   return normalised(std::move(out), x.integer);
 }

@@ -26,13 +26,14 @@
 
 #include "graph/expr.hpp"
 #include "graph/value.hpp"
+#include "inverse/intervals.hpp"
 
 namespace vern {
 
 struct Support {
   // Sorted, disjoint, closed intervals; a single value v is {v, v}.
   // Bounds may be infinite. No intervals: no value at all.
-  std::vector<std::pair<double, double>> intervals;
+  Intervals intervals;
   // Only the whole numbers within the intervals (randint and what is
   // computed from it). Small integer sets are kept as single points instead.
   bool integer = false;
