@@ -3,13 +3,15 @@
 #include <iostream>
 #include <new>
 
-#include "graph/interrupt_cleanup.hpp"
 #include "graph/error.hpp"
+#include "graph/freed_memory.hpp"
+#include "graph/interrupt_cleanup.hpp"
 
 namespace vern {
 
 int guarded_main(const char* program, int (*run)(int, char**), int argc, char** argv) {
   install_interrupt_cleanup();
+  keep_freed_memory();
   try {
     return run(argc, argv);
   } catch (const Error& e) {

@@ -1,5 +1,6 @@
-// The shared outer shell of every command: interrupt clean-up, and every
-// failure printed once with its exit code (README, "Errors and exit codes").
+// The shared outer shell of every command: interrupt clean-up, freed memory
+// kept for reuse (freed_memory.hpp), and every failure printed once with its
+// exit code (README, "Errors and exit codes").
 #pragma once
 
 namespace vern {
