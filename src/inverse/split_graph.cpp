@@ -36,14 +36,18 @@ class GraphBuilder {
     Split split;
     split.axis = Expr::axis(static_cast<Axis>(t.axis));
     split.parts.reserve(t.children.size());
-    std::vector<double> lengths, canonical;
+    // The parts' sizes first, in lists this builder keeps (a list or two
+    // per split made a fifth of the city's graph building), free again
+    // before the children are built below.
+    lengths_now_.clear();
+    canonical_now_.clear();
     for (const SplitTree& c : t.children) {
-      lengths.push_back(c.max[t.axis] - c.min[t.axis]);
-      canonical.push_back(canonical_length(lengths.back()));
+      lengths_now_.push_back(c.max[t.axis] - c.min[t.axis]);
+      canonical_now_.push_back(canonical_length(lengths_now_.back()));
     }
-    if (!cuts_stay(lengths, canonical)) canonical = lengths;
-    for (std::size_t i = 0; i < t.children.size(); ++i)
-      split.parts.push_back({Size{Expr::number(canonical[i]), true}, node(t.children[i])});
+    const std::vector<double>& sizes = cuts_stay(lengths_now_, canonical_now_) ? canonical_now_ : lengths_now_;
+    for (const double size : sizes) split.parts.push_back({Size{Expr::number(size), true}, 0});
+    for (std::size_t i = 0; i < t.children.size(); ++i) split.parts[i].child = node(t.children[i]);
     return g_.intern(Node{std::move(split), {}});
   }
 
@@ -161,6 +165,7 @@ class GraphBuilder {
   const SplitGraphOptions& options_;
   std::unordered_map<std::string, NodeId> leaves_;  // label -> its primitive node
   std::unordered_map<std::int64_t, double> lengths_;  // canonical_length, by length / grain
+  std::vector<double> lengths_now_, canonical_now_;    // node's, for one split at a time
   std::optional<NodeId> nil_;
 };
 
