@@ -136,8 +136,8 @@ bool SplitSearch::place(std::size_t i, std::size_t anchor, std::size_t run_first
   return false;
 }
 
-std::vector<SplitSearch::Run> SplitSearch::runs() const {
-  std::vector<Run> out;
+SplitSearch::Runs SplitSearch::runs() const {
+  Runs out;
   const std::size_t n = parts_.size();
   std::size_t anchor = 0, floating = n, i = 0;
   while (true) {

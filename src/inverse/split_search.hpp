@@ -30,6 +30,7 @@
 
 #include "forward/scope.hpp"
 #include "graph/grammar.hpp"
+#include "graph/inline_list.hpp"
 #include "inverse/check_bindings.hpp"
 #include "inverse/check_cuts.hpp"
 #include "inverse/check_free_scope.hpp"
@@ -158,7 +159,10 @@ class SplitSearch {
     bool final;
     std::size_t floating;  // the floating part before it, or none()
   };
-  std::vector<Run> runs() const;
+  // Most splits place a few runs: held in place, not on the heap (a
+  // list per call was the check's most frequent allocation).
+  using Runs = InlineList<Run, 4>;
+  Runs runs() const;
   double run_start(const Run& r) const;
   // The whole placement's scale state, replayed (for solving).
   ScaleState replay(bool track_set = true) const;

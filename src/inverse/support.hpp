@@ -25,10 +25,13 @@
 #include <vector>
 
 #include "graph/expr.hpp"
+#include "graph/inline_list.hpp"
 #include "graph/value.hpp"
-#include "inverse/intervals.hpp"
 
 namespace vern {
+
+// Sorted, disjoint, closed intervals; almost always one, held in place.
+using Intervals = InlineList<std::pair<double, double>, 1>;
 
 struct Support {
   // Sorted, disjoint, closed intervals; a single value v is {v, v}.
