@@ -38,10 +38,10 @@ void Tiling::sort() {
   next_ = 0;
 }
 
-BoxList Tiling::take(std::uint64_t i) {
-  BoxList out;
-  for (; next_ < boxes_.size() && boxes_[next_].first == i; ++next_) out.push_back(boxes_[next_].second);
-  return out;
+const BoxList& Tiling::take(std::uint64_t i) {
+  taken_.clear();
+  for (; next_ < boxes_.size() && boxes_[next_].first == i; ++next_) taken_.push_back(boxes_[next_].second);
+  return taken_;
 }
 
 std::string Matcher::repeat_what(NodeId id) const {
