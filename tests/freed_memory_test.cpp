@@ -9,6 +9,10 @@
 namespace vern {
 namespace {
 
+// glibc's allocator only; AddressSanitizer brings its own, which maps
+// large blocks afresh by design.
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
+
 long page_faults() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
@@ -48,9 +52,6 @@ class FreedMemory : public ::testing::Test {
   void SetUp() override { GTEST_FLAG_SET(death_test_style, "threadsafe"); }
 };
 
-// glibc's allocator only; AddressSanitizer brings its own, which maps
-// large blocks afresh by design.
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
 TEST_F(FreedMemory, ABlockFreedIsReusedWithoutAskingTheSystemAgain) {
   // 24 MB are 6,144 pages; reused, almost none of them faults again.
   EXPECT_EXIT(
