@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <initializer_list>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace vern {
@@ -63,7 +64,7 @@ class InlineList {
   }
   template <typename... Args>
   void emplace_back(Args&&... args) {
-    push_back(T{static_cast<Args&&>(args)...});
+    push_back(T{std::forward<Args>(args)...});
   }
 
   friend bool operator==(const InlineList& a, const InlineList& b) {
