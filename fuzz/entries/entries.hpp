@@ -34,7 +34,8 @@ std::string grammar_reader(Bytes input);
 std::string obj_loader(Bytes input);
 
 // glTF JSON or GLB bytes (by the "glTF" magic): load as an example and
-// check its invariants.
+// check its invariants; a GLB the plain reader takes must read as
+// tinygltf reads it.
 std::string gltf_loader(Bytes input);
 
 // A small layout of labelled boxes (see layout.hpp): infer a grammar from

@@ -12,9 +12,10 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-// tinygltf stays in this file among the inverse sources. As in the glTF
-// writer, the header is included for declarations only: Debian's
-// libtinygltf-dev ships the implementation as a library (TinyGLTF::TinyGLTF).
+// tinygltf stays in this file and plain_glb.cpp among the inverse sources.
+// As in the glTF writer, the header is included for declarations only:
+// Debian's libtinygltf-dev ships the implementation as a library
+// (TinyGLTF::TinyGLTF).
 #include <tiny_gltf.h>
 
 #include "forward/obj_reader.hpp"
@@ -25,6 +26,7 @@
 #include "graph/out_of_memory.hpp"
 #include "inverse/gltf_files.hpp"
 #include "inverse/loose_parts.hpp"
+#include "inverse/plain_glb.hpp"
 
 namespace vern {
 
@@ -662,15 +664,10 @@ bool gltf_read_file(std::vector<unsigned char>* out, std::string*, const std::st
 }
 bool gltf_write_nothing(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
 
-Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits& limits) {
-  Example ex;
-  ex.source = path.string();
-  PartAdder adder(ex, limits);
-  std::vector<unsigned char> bytes;
-  if (const auto refused = read_regular_file(path, limits.gltf.max_bytes, bytes)) {
-    fail(refused->kind, ex.source, {}, refused->problem,
-         refused->kind == ErrorKind::Limit ? gltf_size_hint(limits.gltf) : "check the path and the file's permissions");
-  }
+// tinygltf's reading of a glTF or GLB file (bytes: the file), or its error
+// said as the file's.
+tinygltf::Model load_with_tinygltf(const fs::path& path, bool binary, const ExampleLimits& limits,
+                                   const std::vector<unsigned char>& bytes, const std::string& source) {
   GltfFiles files(path, limits.gltf);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skip_image, nullptr);
@@ -682,21 +679,38 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
   const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, files.folder())
                          : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                                       length, files.folder());
-  bytes = {};
   if (!ok) {
     // A file the glTF names that was refused is the reason, said our way.
-    if (const auto& refused = files.refusal()) fail(refused->kind, ex.source, {}, refused->message, refused->hint);
+    if (const auto& refused = files.refusal()) fail(refused->kind, source, {}, refused->message, refused->hint);
     // tinygltf would say how long the file is, which may not be the
     // user's to know (a file allowed outside the folder): said without.
     if (err.find("File size mismatch") != std::string::npos) {
-      fail(ErrorKind::Input, ex.source, {},
+      fail(ErrorKind::Input, source, {},
            "the buffer file '" + files.last_read() + "' does not hold the byteLength its buffer declares",
            "export the glTF and its .bin file again, together");
     }
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-    fail(ErrorKind::Input, ex.source, {}, std::string("is not a valid ") + (binary ? "GLB" : "glTF") + " file: " + err,
+    fail(ErrorKind::Input, source, {}, std::string("is not a valid ") + (binary ? "GLB" : "glTF") + " file: " + err,
          "export the file again, or check it with scripts/validate-gltf");
   }
+  return model;
+}
+
+Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits& limits) {
+  Example ex;
+  ex.source = path.string();
+  PartAdder adder(ex, limits);
+  std::vector<unsigned char> bytes;
+  if (const auto refused = read_regular_file(path, limits.gltf.max_bytes, bytes)) {
+    fail(refused->kind, ex.source, {}, refused->problem,
+         refused->kind == ErrorKind::Limit ? gltf_size_hint(limits.gltf) : "check the path and the file's permissions");
+  }
+  // The common GLB is read without tinygltf's JSON document; every other
+  // file, and every error, is tinygltf's (plain_glb.hpp).
+  std::optional<tinygltf::Model> plain = binary ? read_plain_glb(bytes) : std::nullopt;
+  tinygltf::Model model = plain ? std::move(*plain) : load_with_tinygltf(path, binary, limits, bytes, ex.source);
+  plain.reset();
+  bytes = {};
 
   // The default scene's roots; without scenes, every node no other node
   // lists as a child.
