@@ -5,6 +5,7 @@
 
 #include "graph/error.hpp"
 #include "graph/freed_memory.hpp"
+#include "graph/huge_pages.hpp"
 #include "graph/interrupt_cleanup.hpp"
 
 namespace vern {
@@ -12,6 +13,7 @@ namespace vern {
 int guarded_main(const char* program, int (*run)(int, char**), int argc, char** argv) {
   install_interrupt_cleanup();
   keep_freed_memory();
+  use_huge_pages();
   try {
     return run(argc, argv);
   } catch (const Error& e) {

@@ -3,6 +3,8 @@
 #include <exception>
 #include <thread>
 
+#include "graph/huge_pages.hpp"
+
 namespace vern {
 
 void run_alongside(unsigned threads, const std::function<void()>& side, const std::function<void()>& main) {
@@ -14,6 +16,7 @@ void run_alongside(unsigned threads, const std::function<void()>& side, const st
   std::exception_ptr side_error, main_error;
   {
     std::jthread helper([&] {
+      huge_pages_for_this_thread();
       try {
         side();
       } catch (...) {

@@ -8,18 +8,12 @@
 
 namespace vern {
 
-namespace {
-// The largest block served from the heap: glibc's own ceiling for the
-// threshold it raises by itself, so a larger one is mapped from the start.
-constexpr int kLargestHeapBlock = 32 << 20;
-// Free memory kept at the top of a heap before it is given back.
-constexpr int kKeptFree = 64 << 20;
-}  // namespace
-
+// kLargestHeapBlock is glibc's own ceiling for the threshold it raises by
+// itself, so a larger block is mapped from the start.
 void keep_freed_memory() {
 #if defined(__GLIBC__)
-  mallopt(M_MMAP_THRESHOLD, kLargestHeapBlock);
-  mallopt(M_TRIM_THRESHOLD, kKeptFree);
+  mallopt(M_MMAP_THRESHOLD, static_cast<int>(kLargestHeapBlock));
+  mallopt(M_TRIM_THRESHOLD, static_cast<int>(kKeptFree));
 #endif
 }
 

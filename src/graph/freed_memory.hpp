@@ -12,7 +12,14 @@
 // peak stays as it was within 3 % (753 -> 778 MB).
 #pragma once
 
+#include <cstddef>
+
 namespace vern {
+
+// The largest block served from the heap, and how much free memory a heap
+// keeps at its top, once keep_freed_memory() has run.
+inline constexpr std::size_t kLargestHeapBlock = std::size_t{32} << 20;
+inline constexpr std::size_t kKeptFree = std::size_t{64} << 20;
 
 // Blocks under 32 MB come from the heap and freed memory stays there up to
 // 64 MB. Once, at the start of a command (guarded_main.hpp); a no-op where

@@ -7,6 +7,8 @@
 #include <thread>
 #include <vector>
 
+#include "graph/huge_pages.hpp"
+
 namespace vern {
 
 void parallel_for(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& task,
@@ -38,7 +40,11 @@ void parallel_for(std::size_t count, unsigned threads, const std::function<void(
     worker();
   } else {
     std::vector<std::jthread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
+    for (unsigned t = 0; t < threads; ++t)
+      pool.emplace_back([&] {
+        huge_pages_for_this_thread();
+        worker();
+      });
   }
   for (const auto& e : errors) {
     if (e) std::rethrow_exception(e);
