@@ -571,7 +571,8 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   auto splits_shared = [&] {
     // The runs seen in regions just rewritten no longer happen; they only
     // widen the shares of the splits still called elsewhere.
-    const std::size_t shared = share_splits(g, results, {options.tolerance, options.uniform_distributions});
+    const std::size_t shared =
+        share_splits(g, results, {options.tolerance, options.uniform_distributions, options.threads});
     out.joined += shared;
     return shared;
   };

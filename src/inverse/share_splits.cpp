@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "graph/parallel_for.hpp"
 #include "inverse/fit_distribution.hpp"
 #include "inverse/linear_size.hpp"
 #include "inverse/rule_naming.hpp"
@@ -250,19 +251,81 @@ double lowest(const Linear& f, double lo, double hi) {
   return f.c0 + b * (b > 0 ? lo : hi);
 }
 
+// The runs of one split in every example, as their relative parts' lengths.
+struct Seen {
+  std::vector<std::vector<double>> lengths;  // per run: the relative parts' lengths
+  std::vector<RunAt> at;                     // per run: where it ran
+  bool lined_up = true;
+};
+
+// What a split that varies in one way becomes: each relative part's line of
+// s1, in metres or as shares, and the draw of s1 (one value per run).
+struct SharePlan {
+  std::vector<Linear> lines;
+  bool metric = false;
+  Distribution d;
+  std::vector<Observation> drawn;
+};
+
+// The plan for a split seen in these runs, or nothing when its shares vary
+// in more than one way or leave a part no room. Reads nothing else.
+std::optional<SharePlan> plan_shares(const Seen& s, const ShareOptions& opt) {
+  const std::size_t k = s.lengths.front().size();
+  const double runs = static_cast<double>(s.lengths.size());
+  double total = 0;
+  for (const auto& run : s.lengths)
+    for (double l : run) total += l / runs;
+  total = shortest_decimal(total, total * 0.01);
+  std::vector<std::vector<double>> shares(k);  // per part, per run
+  for (const auto& run : s.lengths) {
+    double sum = 0;
+    for (double l : run) sum += l;
+    for (std::size_t j = 0; j < k; ++j) shares[j].push_back(total * run[j] / sum);
+  }
+  // In metres where the split's length follows its parts, else shares.
+  SharePlan plan;
+  auto lines = metric_lines(s.lengths, opt.tolerance);
+  plan.metric = lines.has_value();
+  if (!plan.metric) lines = share_lines(shares, total, opt.tolerance);
+  if (!lines) return std::nullopt;
+  for (std::size_t j = 0; j < k; ++j)
+    if ((*lines)[j].coefficient(0) == 1 && (*lines)[j].c0 == 0 && plan.drawn.empty())
+      for (const auto& run : s.lengths)
+        plan.drawn.push_back({plan.metric ? run[j] : shares[j][&run - s.lengths.data()], 1});
+  if (plan.drawn.size() != s.at.size()) return std::nullopt;
+  FitOptions fit;
+  fit.resolution = opt.tolerance;
+  fit.floor = 0;
+  fit.uniform_only = opt.uniform_distributions;
+  Distribution d = fit_distribution(plan.drawn, fit);
+  auto room = [&](double lo, double hi) {
+    return std::ranges::all_of(*lines, [&](const Linear& f) { return lowest(f, lo, hi) > 0; });
+  };
+  if ((d.kind == DistributionKind::Uniform || d.kind == DistributionKind::TruncatedNormal) && !room(d.lo, d.hi)) {
+    // Every share must stay a share: keep to the values seen.
+    const auto [lo, hi] = std::ranges::minmax(plan.drawn, {}, &Observation::value);
+    d = Distribution{DistributionKind::Uniform, {}, lo.value, hi.value};
+  }
+  const double lo = d.kind == DistributionKind::Choice ? d.values.front() : d.lo;
+  const double hi = d.kind == DistributionKind::Choice ? d.values.back() : d.hi;
+  if (!room(lo, hi)) return std::nullopt;
+  plan.lines = std::move(*lines);
+  plan.d = std::move(d);
+  return plan;
+}
+
 }  // namespace
 
 std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, const ShareOptions& opt) {
-  struct Seen {
-    std::vector<std::vector<double>> lengths;  // per run: the relative parts' lengths
-    std::vector<RunAt> at;                     // per run: where it ran
-    bool lined_up = true;
-  };
+  // Each example's runs, read on the threads (a city's splits run 25,000
+  // times), then gathered in example order.
+  std::vector<std::vector<SplitRun>> runs_in(results.size());
+  parallel_for(results.size(), opt.threads, [&](std::size_t e) { runs_in[e] = runs_of(results[e].parts); });
   std::unordered_map<NodeId, Seen> seen;
-  // Per split: its drawn shares, read once (a city's splits run 25,000 times).
+  // Per split: its drawn shares, read once.
   std::unordered_map<NodeId, std::optional<std::vector<std::size_t>>> shares_of;
   for (std::size_t e = 0; e < results.size(); ++e) {
-    const std::vector<SplitRun> runs = runs_of(results[e].parts);
+    const std::vector<SplitRun>& runs = runs_in[e];
     for (std::size_t order = 0; order < runs.size(); ++order) {
       const SplitRun& run = runs[order];
       const auto* split = std::get_if<Split>(&g.op(run.split));
@@ -286,6 +349,7 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
       }
     }
   }
+  runs_in = {};
 
   // The rule each changed split runs as, the call that stands for it.
   std::vector<NodeId> replace(g.node_count(), kNoReplacement);
@@ -299,49 +363,18 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
   for (const auto& [id, s] : seen)
     if (s.lined_up && !s.lengths.empty()) order.push_back(id);
   std::ranges::sort(order);  // the rules come out in one order every time
-  for (NodeId id : order) {
-    const Seen& s = seen[id];
-    const std::size_t k = s.lengths.front().size();
-    const double runs = static_cast<double>(s.lengths.size());
-    double total = 0;
-    for (const auto& run : s.lengths)
-      for (double l : run) total += l / runs;
-    total = shortest_decimal(total, total * 0.01);
-    std::vector<std::vector<double>> shares(k);  // per part, per run
-    for (const auto& run : s.lengths) {
-      double sum = 0;
-      for (double l : run) sum += l;
-      for (std::size_t j = 0; j < k; ++j) shares[j].push_back(total * run[j] / sum);
-    }
-    // In metres where the split's length follows its parts, else shares.
-    auto lines = metric_lines(s.lengths, opt.tolerance);
-    const bool metric = lines.has_value();
-    if (!metric) lines = share_lines(shares, total, opt.tolerance);
-    if (!lines) continue;
-    std::vector<Observation> drawn;
-    for (std::size_t j = 0; j < k; ++j)
-      if ((*lines)[j].coefficient(0) == 1 && (*lines)[j].c0 == 0 && drawn.empty())
-        for (const auto& run : s.lengths) drawn.push_back({metric ? run[j] : shares[j][&run - s.lengths.data()], 1});
-    if (drawn.size() != s.at.size()) continue;
-    FitOptions fit;
-    fit.resolution = opt.tolerance;
-    fit.floor = 0;
-    fit.uniform_only = opt.uniform_distributions;
-    Distribution d = fit_distribution(drawn, fit);
-    auto room = [&](double lo, double hi) {
-      return std::ranges::all_of(*lines, [&](const Linear& f) { return lowest(f, lo, hi) > 0; });
-    };
-    if ((d.kind == DistributionKind::Uniform || d.kind == DistributionKind::TruncatedNormal) && !room(d.lo, d.hi)) {
-      // Every share must stay a share: keep to the values seen.
-      const auto [lo, hi] = std::ranges::minmax(drawn, {}, &Observation::value);
-      d = Distribution{DistributionKind::Uniform, {}, lo.value, hi.value};
-    }
-    const double lo = d.kind == DistributionKind::Choice ? d.values.front() : d.lo;
-    const double hi = d.kind == DistributionKind::Choice ? d.values.back() : d.hi;
-    if (!room(lo, hi)) continue;
+  // Each split's plan on the threads (fitting is most of the work), then
+  // the grammar changed here, in that order.
+  std::vector<std::optional<SharePlan>> plans(order.size());
+  parallel_for(order.size(), opt.threads, [&](std::size_t i) { plans[i] = plan_shares(seen.at(order[i]), opt); });
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (!plans[i]) continue;
+    const NodeId id = order[i];
+    SharePlan& plan = *plans[i];
+    const std::size_t k = plan.lines.size();
     Split split = std::get<Split>(g.op(id));
     const std::vector<std::size_t> relative = *drawn_shares(split);
-    for (std::size_t j = 0; j < k; ++j) split.parts[relative[j]].size = Size{linear_expr((*lines)[j]), !metric};
+    for (std::size_t j = 0; j < k; ++j) split.parts[relative[j]].size = Size{linear_expr(plan.lines[j]), !plan.metric};
     const SourceLoc loc = g.node(id).loc;
     const NodeId shared = g.intern({std::move(split), loc});
     RuleId rule;
@@ -354,11 +387,12 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
     g.rules[rule].params = {"s1"};
     rule_of[id] = rule;
     body_of[rule] = shared;
-    d = short_decimals(d, opt.tolerance / 4);
+    const Distribution d = short_decimals(plan.d, opt.tolerance / 4);
     const NodeId call = g.intern({Call{rule, {distribution_expr(d)}}, loc});
     if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
     replace[id] = call;
-    for (std::size_t i = 0; i < drawn.size(); ++i) values[id].push_back({s.at[i], drawn[i].value});
+    const Seen& s = seen.at(id);
+    for (std::size_t r = 0; r < plan.drawn.size(); ++r) values[id].push_back({s.at[r], plan.drawn[r].value});
   }
   if (rule_of.empty()) return 0;
   // Calls of a rule that now takes the share: with it.

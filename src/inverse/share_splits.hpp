@@ -25,6 +25,7 @@ namespace vern {
 struct ShareOptions {
   double tolerance = 1e-6;             // metres
   bool uniform_distributions = false;  // shares as rand(min, max)
+  unsigned threads = 1;                // reading runs and fitting shares (0: all cores)
 };
 
 // results: each example checked against g (CheckResult::parts). Returns
