@@ -56,17 +56,25 @@ void make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
   // tolerance becomes one, the scope's end if the run holds one, else
   // its smallest.
   std::vector<Face>& faces = scratch.faces;
-  faces.clear();
-  faces.push_back({0.0, -1});
-  faces.push_back({length, -2});
+  faces.resize(2 * inside.size() + 2);
+  faces[0] = {0.0, -1};
+  faces[1] = {length, -2};
   for (std::size_t k = 0; k < inside.size(); ++k) {
     const LabelledBox& b = boxes[inside[k]];
     double t0 = am.local(b.min[am.world]), t1 = am.local(b.max[am.world]);
     if (t0 > t1) std::swap(t0, t1);
-    faces.push_back({t0, static_cast<int>(2 * k)});
-    faces.push_back({t1, static_cast<int>(2 * k + 1)});
+    faces[2 * k + 2] = {t0, static_cast<int>(2 * k)};
+    faces[2 * k + 3] = {t1, static_cast<int>(2 * k + 1)};
   }
-  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) { return a.t < b.t; });
+  // Most calls cut a box or two (a bay's window): sorted in place. Faces
+  // at one position may come in any order; they become one cut.
+  const auto earlier = [](const Face& a, const Face& b) { return a.t < b.t; };
+  if (faces.size() <= 16) {
+    for (std::size_t i = 1; i < faces.size(); ++i)
+      for (std::size_t j = i; j > 0 && earlier(faces[j], faces[j - 1]); --j) std::swap(faces[j], faces[j - 1]);
+  } else {
+    std::sort(faces.begin(), faces.end(), earlier);
+  }
   std::vector<double>& lo = scratch.lo;
   std::vector<double>& hi = scratch.hi;
   std::vector<double>& positions = scratch.positions;
