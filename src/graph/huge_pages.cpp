@@ -24,9 +24,9 @@ namespace vern {
 
 namespace {
 
+#if defined(VERN_HUGE_PAGES)
 std::atomic<bool> wanted{false};
 
-#if defined(VERN_HUGE_PAGES)
 constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
 // Under the largest block the heap serves (a larger one would be mapped
 // on its own and unmapped when freed) and under what it keeps free.
@@ -57,6 +57,14 @@ void use_huge_pages() {
 void huge_pages_for_this_thread() {
 #if defined(VERN_HUGE_PAGES)
   if (wanted.load(std::memory_order_relaxed)) prepare_heap();
+#endif
+}
+
+bool huge_pages_built() {
+#if defined(VERN_HUGE_PAGES)
+  return true;
+#else
+  return false;
 #endif
 }
 

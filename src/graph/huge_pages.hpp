@@ -3,9 +3,9 @@
 // Inference allocates tens of megabytes in small blocks, and each 4 KB page
 // touched for the first time is a page fault: about 7 microseconds each on
 // the virtual machines we run on, 12,600 of them when inferring the city,
-// a quarter of its wall time. Transparent huge pages map 2 MB at one fault,
-// but Linux's default mode ("madvise", Debian's too) gives them only to
-// memory that asks. glibc asks for its heaps only when told so before the
+// about a fifth of its wall time. Transparent huge pages map 2 MB at one
+// fault, but in Linux's "madvise" mode (this machine's) only for memory
+// that asks for them. glibc asks for its heaps only when told so before the
 // program starts (GLIBC_TUNABLES=glibc.malloc.hugetlb=1), so a command asks
 // itself: each thread grows the heap it allocates from (its glibc arena) by
 // a reserve, marks the reserve MADV_HUGEPAGE and frees it. Freed, the
@@ -29,5 +29,9 @@ void use_huge_pages();
 // Prepares this thread's heap if use_huge_pages() was called; parallel_for
 // and run_alongside call it first thing in each thread they start.
 void huge_pages_for_this_thread();
+
+// Whether this build asks for huge pages at all: glibc's allocator on
+// Linux, no sanitizer's in its place.
+bool huge_pages_built();
 
 }  // namespace vern
