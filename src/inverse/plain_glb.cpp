@@ -28,8 +28,9 @@ std::uint32_t word(std::span<const unsigned char> bytes, std::size_t at) {
 class Keys {
  public:
   // Copied: the list a caller writes lives only as long as its statement.
-  Keys(std::initializer_list<std::string_view> allowed) : count_(allowed.size()) {
-    std::copy(allowed.begin(), allowed.end(), allowed_.begin());
+  // The lists are this file's own, the longest of nine keys.
+  Keys(std::initializer_list<std::string_view> allowed) : count_(std::min(allowed.size(), kMost)) {
+    std::copy(allowed.begin(), allowed.begin() + static_cast<std::ptrdiff_t>(count_), allowed_.begin());
   }
 
   // The key's place in the list.
@@ -47,7 +48,8 @@ class Keys {
   bool seen(std::size_t i) const { return (seen_ >> i) & 1u; }
 
  private:
-  std::array<std::string_view, 10> allowed_;
+  static constexpr std::size_t kMost = 16;
+  std::array<std::string_view, kMost> allowed_;
   std::size_t count_;
   std::uint32_t seen_ = 0;
 };
