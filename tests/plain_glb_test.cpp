@@ -108,7 +108,9 @@ TEST(PlainGlb, WhatJsonAllowsBeyondWhatWritersWriteReadsTheSame) {
   std::string json = base.json;
   const std::size_t at = json.find(node);
   const std::size_t end = json.find(']', at);
-  json.replace(at, end + 1 - at, R"({"name":"rect","mesh":0,"translation":[1,2,3],"rotation":[0,0,0.7071068,0.7071068],"scale":[2,2,2])");
+  json.replace(at, end + 1 - at,
+               R"({"name":"rect","mesh":0,"translation":[1,2,3],)"
+               R"("rotation":[0,0,0.7071068,0.7071068],"scale":[2,2,2])");
   const Glb trs{json, base.bin};
   EXPECT_TRUE(plain(trs.bytes()));
   EXPECT_EQ(disagreement(trs.bytes()), "");

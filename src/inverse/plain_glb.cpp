@@ -228,16 +228,17 @@ class Reader {
 
   void buffer_view() {
     tinygltf::BufferView& v = model_.bufferViews.emplace_back();
-    const Keys read = object({"buffer", "byteOffset", "byteLength", "byteStride", "target", "name"}, [&](std::size_t k, Keys&) {
-      switch (k) {
-        case 0: v.buffer = json_.index(); break;
-        case 1: v.byteOffset = json_.unsigned_integer(); break;
-        case 2: v.byteLength = json_.unsigned_integer(); break;
-        case 3: v.byteStride = json_.unsigned_integer(); break;
-        case 4: v.target = json_.index(); break;
-        case 5: v.name = json_.string(); break;
-      }
-    });
+    const Keys read =
+        object({"buffer", "byteOffset", "byteLength", "byteStride", "target", "name"}, [&](std::size_t k, Keys&) {
+          switch (k) {
+            case 0: v.buffer = json_.index(); break;
+            case 1: v.byteOffset = json_.unsigned_integer(); break;
+            case 2: v.byteLength = json_.unsigned_integer(); break;
+            case 3: v.byteStride = json_.unsigned_integer(); break;
+            case 4: v.target = json_.index(); break;
+            case 5: v.name = json_.string(); break;
+          }
+        });
     if (!read.seen(0) || !read.seen(2) || v.byteStride > 252 || v.byteStride % 4 != 0) decline();
     if (v.target != TINYGLTF_TARGET_ARRAY_BUFFER && v.target != TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER) v.target = 0;
   }
