@@ -63,5 +63,24 @@ TEST(TurnedExamples, InferenceWritesTheTurnAndDerivesEveryExample) {
   }
 }
 
+// On two threads, turned buildings are looked for on one while the other
+// builds and merges the graphs of the examples as they are; a turn found
+// drops those graphs and makes them again. The grammar and warnings are
+// those of one thread, where the looking comes first and nothing is made
+// twice.
+TEST(TurnedExamples, TheGrammarIsTheSameOnOneThreadAsOnTwo) {
+  const Grammar source = read_grammar_file(std::string(VERN_SOURCE_DIR) + "/data/styles/turned_houses.grm");
+  const std::vector<Example> examples = test::derived_examples(source, 12);
+  InferOptions one;
+  one.threads = 1;
+  InferOptions two;
+  two.threads = 2;
+  const Inference a = infer(examples, one), b = infer(examples, two);
+  const std::string text = write_grammar(a.grammar);
+  EXPECT_NE(text.find("--> R(z, pi / 2){ split"), std::string::npos) << text;  // a turn was found
+  EXPECT_EQ(text, write_grammar(b.grammar));
+  EXPECT_EQ(a.warnings, b.warnings);
+}
+
 }  // namespace
 }  // namespace vern

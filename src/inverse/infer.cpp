@@ -1,6 +1,7 @@
 #include "inverse/infer.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "graph/alongside.hpp"
 #include "graph/parallel_for.hpp"
@@ -58,40 +59,35 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
               if (options.progress) options.progress(done, examples.size());
             });
       });
-  // Whole buildings turned a quarter are turned back to the layout the
-  // others share, and written turned (turned_examples.hpp); those are cut
-  // and oriented again.
-  const std::vector<int> quarters = parts <= kJoinedPartsLimit ? common_orientation(examples, trees, out.tolerance, options.threads)
-                                                              : std::vector<int>(examples.size(), 0);
-  std::vector<Example> turned;
-  if (std::ranges::any_of(quarters, [](int q) { return q != 0; })) {
-    for (std::size_t i = 0; i < examples.size(); ++i) {
-      turned.push_back(turned_example(examples[i], quarters[i]));
-      if (quarters[i] != 0) trees[i] = split_boxes(turned[i].boxes, BoxSplitOptions{own(examples[i])}, turned[i].source);
-    }
-    oriented = orient_parts(turned, library, out.tolerance);
-  }
-  const std::vector<Example>& laid_out = turned.empty() ? examples : turned;
-  out.unturned_parts = oriented.unmatched;
-  Grammar graph;
-  // About 1.4 graph nodes per part for large examples (1.36 measured at a
-  // million parts, through tidying): room for one and a half.
-  graph.reserve(parts + parts / 2);
-  std::vector<NodeId> roots;
-  for (std::size_t i = 0; i < examples.size(); ++i) {
-    roots.push_back(split_graph(graph, trees[i], laid_out[i].boxes, laid_out[i].source, oriented.turns[i],
-                                {own(examples[i]), &out.warnings}));
-    // Turned back to be laid out: turned again where it is derived.
-    if (quarters[i] != 0) roots.back() = turned_node(graph, roots.back(), {{Axis::Z, (4 - quarters[i]) % 4}});
-    trees[i] = {};  // done with it: large examples hold big trees
-  }
   // Rounding may move a number by a quarter of the smallest example's
   // tolerance: every example then still matches within its own tolerance
   // (check's default), however the rounded numbers of one split add up.
   double smallest = out.tolerance;
   for (const auto& e : examples) smallest = std::min(smallest, own(e));
-  // Merges the examples' graphs within `tolerance` and writes the grammar.
-  auto generalise = [&](Grammar& g, double tolerance) {
+
+  Grammar graph;
+  // About 1.4 graph nodes per part for large examples (1.36 measured at a
+  // million parts, through tidying): room for one and a half.
+  graph.reserve(parts + parts / 2);
+  const Grammar::Checkpoint empty = graph.checkpoint();
+  std::vector<NodeId> roots;
+  std::optional<Grammar::Checkpoint> unmerged;
+  // One graph per example, in order, into one interned grammar; each tree
+  // is dropped once used if `drop_trees` (large examples hold big trees).
+  auto build_graphs = [&](const std::vector<Example>& laid_out, const std::vector<int>& quarters, bool drop_trees) {
+    roots.clear();
+    for (std::size_t i = 0; i < examples.size(); ++i) {
+      roots.push_back(split_graph(graph, trees[i], laid_out[i].boxes, laid_out[i].source, oriented.turns[i],
+                                  {own(examples[i]), &out.warnings}));
+      // Turned back to be laid out: turned again where it is derived.
+      if (quarters[i] != 0) roots.back() = turned_node(graph, roots.back(), {{Axis::Z, (4 - quarters[i]) % 4}});
+      if (drop_trees) trees[i] = {};
+    }
+    unmerged = graph.checkpoint();
+  };
+  // The examples' graphs merged within `tolerance`, numbers tidied and
+  // frames shared: the merged root.
+  auto merged = [&](Grammar& g, double tolerance) {
     MergeOptions merge;
     merge.tolerance = tolerance;
     merge.uniform_distributions = options.uniform_distributions;
@@ -102,6 +98,53 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
     // frame (the same buildings, in fewer lines).
     root = share_frames(g, root);
     for (Rule& rule : g.rules) rule.body = share_frames(g, rule.body);
+    return root;
+  };
+
+  // Whole buildings turned a quarter are turned back to the layout the
+  // others share, and written turned (turned_examples.hpp); those are cut
+  // and oriented again. On two threads or more, looking for them takes one
+  // while this one builds and merges the graphs of the examples as they
+  // are, which is what they are almost always kept as: only when a
+  // building turns are those graphs dropped and made again.
+  const std::vector<int> as_they_are(examples.size(), 0);
+  std::vector<int> quarters = as_they_are;
+  std::optional<NodeId> first_merge;
+  const std::size_t warnings = out.warnings.size();
+  bool built = false;
+  if (parts <= kJoinedPartsLimit && options.threads != 1) {
+    // The side reads the trees, so none is dropped yet.
+    run_alongside(
+        options.threads, [&] { quarters = common_orientation(examples, trees, out.tolerance, 1); },
+        [&] {
+          build_graphs(examples, as_they_are, false);
+          first_merge = merged(graph, out.tolerance);
+        });
+    built = true;
+  } else if (parts <= kJoinedPartsLimit) {
+    quarters = common_orientation(examples, trees, out.tolerance, 1);
+  }
+  std::vector<Example> turned;
+  if (std::ranges::any_of(quarters, [](int q) { return q != 0; })) {
+    if (built) {
+      graph.rollback(empty);
+      out.warnings.resize(warnings);
+      first_merge.reset();
+    }
+    for (std::size_t i = 0; i < examples.size(); ++i) {
+      turned.push_back(turned_example(examples[i], quarters[i]));
+      if (quarters[i] != 0) trees[i] = split_boxes(turned[i].boxes, BoxSplitOptions{own(examples[i])}, turned[i].source);
+    }
+    oriented = orient_parts(turned, library, out.tolerance);
+    build_graphs(turned, quarters, true);
+  } else if (!built) {
+    build_graphs(examples, as_they_are, true);
+  }
+  trees = {};
+  out.unturned_parts = oriented.unmatched;
+
+  // Generalises the merged graph and writes the grammar.
+  auto generalise_from = [&](Grammar& g, NodeId root, double tolerance) {
     out.grammar = rules_for(g, root, NamingOptions{options.start});
     // A split seen overflowing in short tiles is that split: checked, so
     // only where the examples are few enough to check quickly.
@@ -142,8 +185,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   // examples as they are: where it does not, it is made again merging
   // within the smallest tolerance, where every example is held to its own.
   const bool verify = smallest < out.tolerance && parts <= kJoinedPartsLimit;
-  const Grammar::Checkpoint unmerged = graph.checkpoint();
-  generalise(graph, out.tolerance);
+  generalise_from(graph, first_merge ? *first_merge : merged(graph, out.tolerance), out.tolerance);
   // Joining sizes has checked every example within the smallest tolerance,
   // stricter than each one's own: a grammar it passed needs no second
   // check (the city's ten examples: a fifth of infer's time). The steps
@@ -153,8 +195,8 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
     out.tolerance = smallest;
     out.joint = {};
     out.twins = {};
-    graph.rollback(unmerged);
-    generalise(graph, smallest);
+    graph.rollback(*unmerged);
+    generalise_from(graph, merged(graph, smallest), smallest);
   }
 
   // The first mesh seen for each label stands for all its parts.
