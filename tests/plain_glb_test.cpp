@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "forward/gltf_container.hpp"
 #include "support/run_command.hpp"
 
 namespace vern {
@@ -28,30 +29,21 @@ std::uint32_t word(const std::string& glb, std::size_t at) {
   return v;
 }
 
-std::string u32(std::uint32_t v) {
-  std::string s(4, '\0');
-  std::memcpy(s.data(), &v, 4);
-  return s;
-}
-
 // A GLB's JSON text and binary chunk, and a GLB made of them again.
 struct Glb {
   std::string json, bin;
 
   static Glb of(const std::string& glb) {
     const std::uint32_t json_length = word(glb, 12);
-    Glb out{glb.substr(20, json_length), ""};
-    if (20 + json_length < glb.size()) out.bin = glb.substr(28 + json_length, word(glb, 20 + json_length));
+    const std::size_t json_end = kGlbJsonOffset + json_length;
+    Glb out{glb.substr(kGlbJsonOffset, json_length), ""};
+    if (json_end < glb.size()) out.bin = glb.substr(json_end + 8, word(glb, json_end));
     return out;
   }
 
+  // As the writer lays a GLB out (gltf_container.hpp).
   std::string bytes() const {
-    std::string text = json;
-    while (text.size() % 4 != 0) text += ' ';  // as the format pads it
-    std::string out = "glTF" + u32(2) + u32(0) + u32(static_cast<std::uint32_t>(text.size())) + "JSON" + text;
-    if (!bin.empty()) out += u32(static_cast<std::uint32_t>(bin.size())) + std::string("BIN\0", 4) + bin;
-    out.replace(8, 4, u32(static_cast<std::uint32_t>(out.size())));
-    return out;
+    return glb_header(json.size(), bin.size()) + json + glb_between(json.size(), bin.size()) + bin;
   }
 
   // The JSON with its first `from` replaced by `to`; fails the test when
@@ -150,7 +142,7 @@ TEST(PlainGlb, EverythingElseIsLeftToTinygltf) {
   // The container: a short length, another version, bytes after the JSON.
   std::string glb = base.bytes();
   EXPECT_FALSE(plain(glb.substr(0, glb.size() - 4)));
-  EXPECT_FALSE(plain(glb.substr(0, 4) + u32(1) + glb.substr(8)));
+  EXPECT_FALSE(plain(glb.substr(0, 4) + std::string("\1\0\0\0", 4) + glb.substr(8)));
   Glb trailing = base;
   trailing.json += "x";
   EXPECT_FALSE(plain(trailing.bytes()));

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "forward/gltf_container.hpp"
 #include "inverse/json_cursor.hpp"
 
 namespace vern {
@@ -264,15 +265,15 @@ class Reader {
 }  // namespace
 
 std::optional<tinygltf::Model> read_plain_glb(std::span<const unsigned char> bytes) {
-  // The header and chunks as tinygltf checks them, a little stricter: the
-  // file is exactly as long as it says, and the binary chunk lies in it
-  // whole.
+  // The header and chunks (laid out as gltf_container.hpp says) as
+  // tinygltf checks them, a little stricter: the file is exactly as long as
+  // it says, and the binary chunk lies in it whole.
   constexpr std::uint32_t kJson = 0x4E4F534A, kBin = 0x004E4942;
-  if (bytes.size() < 20 || std::memcmp(bytes.data(), "glTF", 4) != 0 || word(bytes, 4) != 2 ||
+  if (bytes.size() < kGlbJsonOffset || std::memcmp(bytes.data(), "glTF", 4) != 0 || word(bytes, 4) != 2 ||
       word(bytes, 8) != bytes.size() || word(bytes, 16) != kJson)
     return std::nullopt;
   const std::uint64_t json_length = word(bytes, 12);
-  const std::uint64_t json_end = 20 + json_length;
+  const std::uint64_t json_end = kGlbJsonOffset + json_length;
   if (json_length < 4 || json_end > bytes.size() || json_end % 4 != 0) return std::nullopt;
   std::span<const unsigned char> bin;
   if (json_end != bytes.size()) {
@@ -283,7 +284,7 @@ std::optional<tinygltf::Model> read_plain_glb(std::span<const unsigned char> byt
       return std::nullopt;
     bin = bytes.subspan(json_end + 8, bin_length);
   }
-  const std::string_view text(reinterpret_cast<const char*>(bytes.data() + 20), json_length);
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data() + kGlbJsonOffset), json_length);
   try {
     return Reader(text, bin).read();
   } catch (const Declined&) {
