@@ -7,6 +7,7 @@
 #include "graph/freed_memory.hpp"
 #include "graph/huge_pages.hpp"
 #include "graph/interrupt_cleanup.hpp"
+#include "support/command_stack.hpp"
 
 namespace vern {
 
@@ -15,7 +16,10 @@ int guarded_main(const char* program, int (*run)(int, char**), int argc, char** 
   keep_freed_memory();
   use_huge_pages();
   try {
-    return run(argc, argv);
+    return run_on_command_stack([&] {
+      huge_pages_for_this_thread();
+      return run(argc, argv);
+    });
   } catch (const Error& e) {
     std::cerr << e.what() << "\n";
     return exit_code(e.kind());

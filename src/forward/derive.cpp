@@ -11,7 +11,7 @@
 #include "forward/program.hpp"
 #include "forward/random_stream.hpp"
 #include "forward/rule_chain.hpp"
-#include "forward/stack_guard.hpp"
+#include "graph/stack_guard.hpp"
 #include "graph/number_format.hpp"
 
 namespace vern {
@@ -452,7 +452,7 @@ class Deriver {
   [[noreturn, gnu::cold, gnu::noinline]] void stack_full(NodeId id) {
     fail_here(ErrorKind::Limit, loc(id),
               "rule calls nested " + std::to_string(chain_.size()) + " deep fill this thread's " +
-                  std::to_string(stack_.size() >> 20) + " MB stack (below --max-depth " +
+                  stack_.size_text() + " stack (below --max-depth " +
                   std::to_string(opt_.limits.max_depth) + ")",
               "check for recursion that never stops; a grammar this deep needs a larger stack (ulimit -s)");
   }

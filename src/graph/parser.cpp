@@ -40,6 +40,7 @@
 #include "graph/lexer.hpp"
 #include "graph/name_index.hpp"
 #include "graph/reserved_words.hpp"
+#include "graph/stack_guard.hpp"
 #include "graph/suggest.hpp"
 
 namespace vern {
@@ -157,6 +158,13 @@ class Parser {
       if (++p_.nesting_ > kMaxNesting)
         p_.error(loc, "operations or expressions nested more than " + std::to_string(kMaxNesting) + " deep",
                  "give the inner part a name: a rule for an operation, a constant for a value");
+      // The commands' threads hold the bound (support/command_stack.hpp); a
+      // smaller thread of a program that embeds the reader stops here.
+      if (p_.stack_.exhausted())
+        fail(ErrorKind::Limit, p_.source_, loc,
+             "operations or expressions nested " + std::to_string(p_.nesting_) + " deep fill this thread's " +
+                 p_.stack_.size_text() + " stack",
+             "read the grammar on a thread with a larger stack, or give the inner part a name");
     }
     ~Nesting() { --p_.nesting_; }
     Nesting(const Nesting&) = delete;
@@ -765,6 +773,7 @@ class Parser {
   std::string start_label_;
   SourceLoc start_loc_;
   int nesting_ = 0;
+  const StackGuard& stack_ = StackGuard::for_this_thread();
 
 };
 

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "forward/stack_guard.hpp"
+#include "graph/stack_guard.hpp"
 #include "graph/error.hpp"
 
 namespace vern::check_detail {
@@ -26,11 +26,10 @@ class Budget {
                                         "or check a smaller example");
     // Matching recurses once per split part and per nested operation, and
     // every step passes here: stop while the stack still has room
-    // (forward/stack_guard.hpp) rather than crash on a split of 20000 parts.
+    // (graph/stack_guard.hpp) rather than crash on a split of 20000 parts.
     if (stack_.exhausted())
-      throw Error(ErrorKind::Limit, "error: matching nests deeper than this thread's " +
-                                        std::to_string(stack_.size() >> 20) +
-                                        " MB stack holds\n  hint: check a smaller example (fewer parts side by side), "
+      throw Error(ErrorKind::Limit, "error: matching nests deeper than this thread's " + stack_.size_text() +
+                                        " stack holds\n  hint: check a smaller example (fewer parts side by side), "
                                         "or raise the stack limit (ulimit -s)");
   }
 

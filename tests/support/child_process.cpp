@@ -45,6 +45,10 @@ ChildProcess::ChildProcess(const std::string& program, const std::vector<std::st
     if (setrlimit(RLIMIT_FSIZE, &cap) != 0) _exit(127);
     signal(SIGXFSZ, SIG_IGN);  // inherited: the write fails instead of killing the program
   }
+  if (setup.limits.stack_kib != 0) {
+    const rlimit cap{setup.limits.stack_kib << 10, setup.limits.stack_kib << 10};
+    if (setrlimit(RLIMIT_STACK, &cap) != 0) _exit(127);
+  }
   // No core files in the run folder from signals that dump one (SIGQUIT).
   const rlimit no_core{0, 0};
   setrlimit(RLIMIT_CORE, &no_core);

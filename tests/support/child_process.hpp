@@ -17,10 +17,12 @@ namespace vern::test {
 // Limits a program is run under, to make it fail where it would not:
 // address_space_mib caps its memory (RLIMIT_AS: it runs out), file_bytes
 // the files it writes (RLIMIT_FSIZE with SIGXFSZ ignored: a write past it
-// fails with EFBIG, as on a full disk). 0: no limit.
+// fails with EFBIG, as on a full disk), stack_kib its stack (`ulimit -s`).
+// 0: no limit.
 struct ChildLimits {
   std::size_t address_space_mib = 0;
   std::size_t file_bytes = 0;
+  std::size_t stack_kib = 0;
 };
 
 struct ChildSetup {

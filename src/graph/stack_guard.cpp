@@ -1,6 +1,8 @@
-#include "forward/stack_guard.hpp"
+#include "graph/stack_guard.hpp"
 
 #include <pthread.h>
+
+#include <algorithm>
 
 namespace vern {
 
@@ -11,11 +13,16 @@ StackGuard::StackGuard(std::size_t reserve) {
   if (pthread_getattr_np(pthread_self(), &attr) != 0) return;  // no guard: limit_ stays 0
   void* addr = nullptr;
   std::size_t size = 0;
-  if (pthread_attr_getstack(&attr, &addr, &size) == 0 && size > reserve) {
+  if (pthread_attr_getstack(&attr, &addr, &size) == 0 && size > 0) {
     size_ = size;
-    limit_ = reinterpret_cast<std::uintptr_t>(addr) + reserve;
+    limit_ = reinterpret_cast<std::uintptr_t>(addr) + std::min(reserve, size / 2);
   }
   pthread_attr_destroy(&attr);
+}
+
+std::string StackGuard::size_text() const {
+  if (size_ >= (std::size_t{1} << 20)) return std::to_string(size_ >> 20) + " MiB";
+  return std::to_string(size_ >> 10) + " KiB";
 }
 
 const StackGuard& StackGuard::for_this_thread() {

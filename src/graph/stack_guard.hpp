@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace vern {
 
@@ -18,7 +19,10 @@ class StackGuard {
  public:
   // Measures the calling thread's stack; keeps `reserve` bytes untouched
   // for what runs below the last check (the body of one rule, evaluating
-  // an expression, formatting the error).
+  // an expression, formatting the error). On a stack of less than twice
+  // the reserve (a small thread of a program that embeds the library) half
+  // of it is kept instead: a guard that keeps less still stops runaway
+  // recursion, where no guard at all would let it crash.
   explicit StackGuard(std::size_t reserve = kDefaultReserve);
 
   // True when the caller's frame is within `reserve` bytes of the end.
@@ -29,6 +33,8 @@ class StackGuard {
 
   // Bytes of stack the thread has in all (0 when it cannot be told).
   std::size_t size() const { return size_; }
+  // The size as messages state it: "8 MiB", "512 KiB".
+  std::string size_text() const;
 
   // The calling thread's guard, measured once per thread (measuring the
   // main thread reads /proc/self/maps: too slow for every derivation).
