@@ -153,30 +153,36 @@ class RuleMaker {
   }
 
   // Copies a node; children that are rules become calls. A leaf is copied
-  // once, however often it is used.
-  NodeId copy(NodeId id, bool as_body) {
+  // once, however often it is used. `depth`: how deep the node sits in the
+  // rule body being written; a node at kMaxBodyDepth becomes a rule of its
+  // own, so that no body nests deeper than the grammar reader accepts
+  // (graph/parser.cpp reads operations nested at most 256 deep) however
+  // deep an example's cuts go, and no body is too deep to read.
+  NodeId copy(NodeId id, bool as_body, int depth = 0) {
     if (const auto* call = std::get_if<Call>(&from_.op(id))) {
       if (!call->args.empty()) throw Error(ErrorKind::Internal, "rules_for: the graph calls a rule with arguments");
       return out_.intern({Call{rule_for(from_.rules[call->rule].body, "", "Nest"), {}}, {}});
     }
-    if (!as_body && needs_rule(id)) return out_.intern({Call{rule_for(id), {}}, {}});
+    if (!as_body && (needs_rule(id) || (depth >= kMaxBodyDepth && !is_leaf(id))))
+      return out_.intern({Call{rule_for(id), {}}, {}});
     if (leaf_copies_[id] != kNone) return leaf_copies_[id];
     Operation op = from_.op(id);
+    const auto child = [&](NodeId c) { return copy(c, false, depth + 1); };
     std::visit(Overload{
                    [&](Split& s) {
-                     for (auto& p : s.parts) p.child = copy(p.child, false);
+                     for (auto& p : s.parts) p.child = child(p.child);
                    },
-                   [&](Repeat& r) { r.child = copy(r.child, false); },
-                   [&](RepeatN& r) { r.child = copy(r.child, false); },
+                   [&](Repeat& r) { r.child = child(r.child); },
+                   [&](RepeatN& r) { r.child = child(r.child); },
                    [&](Choose& c) {
-                     for (auto& o : c.options) o.child = copy(o.child, false);
+                     for (auto& o : c.options) o.child = child(o.child);
                    },
                    [&](Primitive& p) { p.label = out_.label_id(from_.label(p.label)); },
-                   [&](Translate& t) { t.child = copy(t.child, false); },
-                   [&](Scale& s) { s.child = copy(s.child, false); },
-                   [&](Rotate& r) { r.child = copy(r.child, false); },
+                   [&](Translate& t) { t.child = child(t.child); },
+                   [&](Scale& s) { s.child = child(s.child); },
+                   [&](Rotate& r) { r.child = child(r.child); },
                    [&](Comp& c) {
-                     for (auto& p : c.parts) p.child = copy(p.child, false);
+                     for (auto& p : c.parts) p.child = child(p.child);
                    },
                    [](auto&) {},
                },
@@ -188,6 +194,10 @@ class RuleMaker {
   }
 
   static constexpr std::uint32_t kNone = static_cast<std::uint32_t>(-1);
+  // Far below the reader's 256, leaving room for the sizes' expressions
+  // and for what later steps wrap around a body (a choice, a turn); and
+  // deeper than any grammar a person reads comfortably.
+  static constexpr int kMaxBodyDepth = 48;
 
   struct Labels {
     std::vector<LabelId> labels;  // at most three
