@@ -45,19 +45,6 @@ CommandLine make_command_line() {
   return cl;
 }
 
-// An error met while checking one example, saying which. A limit of the
-// search has no place of its own ("error: more than ... steps"): the
-// example is its place. An error in the grammar names its own place
-// ("style.grm:3:7: error: ..."), as generate's do: the example goes on a
-// line of its own, before the hint.
-std::string naming_the_example(const std::string& message, const std::string& example) {
-  if (message.rfind("error: ", 0) == 0) return example + ": " + message;
-  const std::size_t hint = message.find("\n  hint: ");
-  const std::string line = "\n  example: " + example;
-  if (hint == std::string::npos) return message + line;
-  return message.substr(0, hint) + line + message.substr(hint);
-}
-
 int run(int argc, char** argv) {
   const CommandLine cl = make_command_line();
   const ParsedCommandLine args = cl.parse(argc, argv);
@@ -78,7 +65,8 @@ int run(int argc, char** argv) {
   if (args.has("--max-steps"))
     options.max_steps = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-steps", 1, 1LL << 50));
   const bool brief = args.has("--brief");
-  const ExampleLimits limits = example_limits(args);
+  ExampleLimits limits = example_limits(args);
+  limits.tolerance = options.tolerance;
   // A hand-written grammar's plot can be larger than what it built (the
   // city's towers stop below its 80 m plot): --scope names the plot.
   std::optional<glm::dvec3> scope;
@@ -115,7 +103,7 @@ int run(int argc, char** argv) {
                                [&] { return check_example(grammar, boxes, scope.value_or(example_size(example)), own); });
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::Limit && e.kind() != ErrorKind::Input) throw;
-      throw Error(e.kind(), naming_the_example(e.what(), file.string()));
+      throw Error(e.kind(), naming_input(e.what(), file.string()));
     }
     if (r.derivable) {
       ++fits;

@@ -38,4 +38,12 @@ void fail(ErrorKind kind, const std::string& file, SourceLoc loc, const std::str
   throw Error(kind, format_message(file, loc, message, hint));
 }
 
+std::string naming_input(const std::string& message, const std::string& input, const std::string& role) {
+  if (message.rfind("error: ", 0) == 0) return input + ": " + message;
+  const std::size_t hint = message.find("\n  hint: ");
+  const std::string line = "\n  " + role + ": " + input;
+  if (hint == std::string::npos) return message + line;
+  return message.substr(0, hint) + line + message.substr(hint);
+}
+
 }  // namespace vern

@@ -49,6 +49,13 @@ std::string format_message(const std::string& file, SourceLoc loc, const std::st
 // "file:line:col: warning: message": warnings print in the same shape.
 std::string format_warning(const std::string& file, SourceLoc loc, const std::string& message);
 
+// A message about an input checked against another, naming it: an error
+// that names no file ("error: ...") takes its name in front
+// ("house.obj: error: ..."); one that names its own (a grammar's
+// "style.grm:3:7: error: ...") gets a line "  example: house.obj" before
+// its hint. `role` is that line's word.
+std::string naming_input(const std::string& message, const std::string& input, const std::string& role = "example");
+
 [[noreturn]] void fail(ErrorKind kind, const std::string& file, SourceLoc loc, const std::string& message,
                        const std::string& hint = {});
 

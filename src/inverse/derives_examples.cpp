@@ -11,14 +11,17 @@ namespace vern {
 namespace {
 
 // One example at its origin; an example that needs more steps than the
-// check allows is not derivable as far as a step knows. Checked in a
-// learned order, an example that fails is asked again in the written one,
-// so the answer is never "no" where the written order says "yes".
-CheckResult check_placed(const Grammar& g, const Example& placed, const CheckOptions& check) {
+// check allows is not derivable as far as a step knows, unless
+// `limits_throw`: then the limit is the answer, the example named.
+// Checked in a learned order, an example that fails is asked again in the
+// written one, so the answer is never "no" where the written order says "yes".
+CheckResult check_placed(const Grammar& g, const Example& placed, const CheckOptions& check,
+                         bool limits_throw = false) {
   auto once = [&](const CheckOptions& options) {
     try {
       return check_example(g, placed.boxes, example_size(placed), options);
-    } catch (const Error&) {
+    } catch (const Error& e) {
+      if (limits_throw && e.kind() == ErrorKind::Limit) throw Error(e.kind(), naming_input(e.what(), placed.source));
       return CheckResult{};
     }
   };
@@ -63,19 +66,28 @@ bool derives_examples(const Grammar& g, const std::vector<Example>& examples, co
   return derives_examples(g, placed, check, options.threads, results);
 }
 
-bool check_passes(const Grammar& g, const std::vector<Example>& examples, double tolerance, unsigned threads) {
+std::optional<NotDerived> first_not_derived(const Grammar& g, const std::vector<Example>& examples, double tolerance,
+                                            unsigned threads) {
+  auto options = [&](const Example& e) {
+    CheckOptions check;
+    check.tolerance = example_tolerance(e, tolerance);
+    check.witness = false;
+    return check;
+  };
   std::vector<char> derivable(examples.size(), 0);
   const std::vector<std::size_t> order = largest_first(examples);
   parallel_for(examples.size(), threads, [&](std::size_t k) {
     const std::size_t i = order[k];
-    CheckOptions check;
-    check.tolerance = example_tolerance(examples[i], tolerance);
-    check.witness = false;
+    CheckOptions check = options(examples[i]);
     check.learned_order = true;  // only the answer is kept
     check.answer_only = true;
-    derivable[i] = check_placed(g, boxes_at_origin(examples[i]), check).derivable;
+    derivable[i] = check_placed(g, boxes_at_origin(examples[i]), check, true).derivable;
   });
-  return std::ranges::all_of(derivable, [](char d) { return d != 0; });
+  const auto failed = std::ranges::find(derivable, 0);
+  if (failed == derivable.end()) return std::nullopt;
+  // Asked again, once, for the reason.
+  const auto i = static_cast<std::size_t>(failed - derivable.begin());
+  return NotDerived{i, check_placed(g, boxes_at_origin(examples[i]), options(examples[i])).mismatch};
 }
 
 }  // namespace vern

@@ -3,6 +3,8 @@
 // step is kept only where it is.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "graph/grammar.hpp"
@@ -29,9 +31,19 @@ struct RewriteCheck {
 bool derives_examples(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
                       std::vector<CheckResult>& results);
 
+// An example a grammar does not derive, and why (CheckResult::mismatch).
+struct NotDerived {
+  std::size_t example = 0;  // its index
+  std::string why;
+};
+
 // What `check` says of each example with default options (or the given
 // tolerance, when > 0): each at its own origin, on its own extent, within
-// its own example_tolerance. True when every example is derivable.
-bool check_passes(const Grammar& g, const std::vector<Example>& examples, double tolerance, unsigned threads);
+// its own example_tolerance. Nothing when every example is derivable, else
+// the first one (in the examples' order) that is not. Throws vern::Error
+// (Limit), naming the example, where checking one reaches a limit (steps,
+// the stack): whether it is derivable is then not known.
+std::optional<NotDerived> first_not_derived(const Grammar& g, const std::vector<Example>& examples, double tolerance,
+                                            unsigned threads);
 
 }  // namespace vern

@@ -85,15 +85,15 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
     }
     unmerged = graph.checkpoint();
   };
-  // The examples' graphs merged within `tolerance`, numbers tidied and
-  // frames shared: the merged root.
-  auto merged = [&](Grammar& g, double tolerance) {
+  // The examples' graphs merged within `tolerance`, numbers tidied (each
+  // moved by at most a quarter of `exact`) and frames shared: the merged root.
+  auto merged = [&](Grammar& g, double tolerance, double exact) {
     MergeOptions merge;
     merge.tolerance = tolerance;
     merge.uniform_distributions = options.uniform_distributions;
     NodeId root = merge_examples(g, roots, merge);
-    root = tidy_numbers(g, root, smallest / 4);
-    for (Rule& rule : g.rules) rule.body = tidy_numbers(g, rule.body, smallest / 4);
+    root = tidy_numbers(g, root, exact / 4);
+    for (Rule& rule : g.rules) rule.body = tidy_numbers(g, rule.body, exact / 4);
     // Written alike now, alternatives that differ at one place share their
     // frame (the same buildings, in fewer lines).
     root = share_frames(g, root);
@@ -118,7 +118,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
         options.threads, [&] { quarters = common_orientation(examples, trees, out.tolerance, 1); },
         [&] {
           build_graphs(examples, as_they_are, false);
-          first_merge = merged(graph, out.tolerance);
+          first_merge = merged(graph, out.tolerance, smallest);
         });
     built = true;
   } else if (parts <= kJoinedPartsLimit) {
@@ -143,25 +143,26 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   trees = {};
   out.unturned_parts = oriented.unmatched;
 
-  // Generalises the merged graph and writes the grammar.
-  auto generalise_from = [&](Grammar& g, NodeId root, double tolerance) {
+  // Generalises the merged graph and writes the grammar; every step holds
+  // the examples within `exact`.
+  auto generalise_from = [&](Grammar& g, NodeId root, double tolerance, double exact) {
     out.grammar = rules_for(g, root, NamingOptions{options.start});
     // A split seen overflowing in short tiles is that split: checked, so
     // only where the examples are few enough to check quickly.
-    if (parts <= kJoinedPartsLimit) unify_overflows(out.grammar, examples, {smallest, options.threads});
+    if (parts <= kJoinedPartsLimit) unify_overflows(out.grammar, examples, {exact, options.threads});
     // Sizes that vary together, drawn once: from the lengths of the
     // derivations that reproduce the examples, so only where they are few
     // enough to check quickly.
     if (options.joint_sizes && parts <= kJoinedPartsLimit) {
       JointSizesOptions joint;
-      joint.tolerance = smallest;
+      joint.tolerance = exact;
       joint.uniform_distributions = options.uniform_distributions;
       joint.threads = options.threads;
       out.joint = join_sizes(out.grammar, examples, joint);
     }
     // Rows whose tiles step down (or up) as they go: a recursion with the
     // step, read from the sizes just joined (progressions.hpp).
-    if (parts <= kJoinedPartsLimit) fold_progressions(out.grammar, examples, {smallest, options.threads});
+    if (parts <= kJoinedPartsLimit) fold_progressions(out.grammar, examples, {exact, options.threads});
     // Last: it only rewrites what is written, and joining sizes reads the
     // grammar's structure as rules_for left it. Bounded like joining, as its
     // rounds each read the whole grammar.
@@ -175,28 +176,52 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
       std::vector<Observation> sizes;
       for (const auto& e : examples) sizes.push_back({example_size(e)[axis], 1});
       out.grammar.scope[axis] =
-          distribution_expr(short_decimals(fit_size(sizes, tolerance, options.uniform_distributions), smallest / 4));
+          distribution_expr(short_decimals(fit_size(sizes, tolerance, options.uniform_distributions), exact / 4));
     }
   };
   // Sizes are merged within the largest example tolerance (a house far
   // from the origin is noisy to a centimetre, and its 0.6 m wall is the
   // 0.6 m wall of the house at the origin), which may hold a precise
-  // example to less than check does. The grammar must pass check on the
-  // examples as they are: where it does not, it is made again merging
-  // within the smallest tolerance, where every example is held to its own.
-  const bool verify = smallest < out.tolerance && parts <= kJoinedPartsLimit;
-  generalise_from(graph, first_merge ? *first_merge : merged(graph, out.tolerance), out.tolerance);
-  // Joining sizes has checked every example within the smallest tolerance,
-  // stricter than each one's own: a grammar it passed needs no second
-  // check (the city's ten examples: a fifth of infer's time). The steps
-  // after it (progressions, twins) keep what derives.
-  const bool checked = out.joint.derives_examples;
-  if (verify && !checked && !check_passes(out.grammar, examples, options.tolerance, options.threads)) {
-    out.tolerance = smallest;
-    out.joint = {};
-    out.twins = {};
-    graph.rollback(*unmerged);
-    generalise_from(graph, merged(graph, smallest), smallest);
+  // example to less than check does; and numbers are rounded, shares of
+  // the largest containers included, which small parts deep inside (a
+  // pinwheel nested in pinwheels) feel most. infer never writes what
+  // check refuses (DESIGN.md): the grammar must pass check on the examples
+  // as they are, and where it does not it is made again, merging within
+  // the smallest tolerance, where every example is held to its own, then
+  // ten and a hundred times finer. Joining sizes has checked every example
+  // within the smallest tolerance, stricter than each one's own: a grammar
+  // it passed needs no second check (the city's ten examples: a fifth of
+  // infer's time). The steps after it (progressions, twins) keep what
+  // derives.
+  struct Attempt {
+    double merge, exact;
+  };
+  std::vector<Attempt> attempts{{out.tolerance, smallest}};
+  if (smallest < out.tolerance) attempts.push_back({smallest, smallest});
+  for (const double finer : {10.0, 100.0}) attempts.push_back({smallest / finer, smallest / finer});
+  std::optional<NotDerived> failed;
+  for (std::size_t k = 0; k < attempts.size(); ++k) {
+    const auto [tolerance, exact] = attempts[k];
+    if (k > 0) {
+      out.tolerance = tolerance;
+      out.joint = {};
+      out.twins = {};
+      graph.rollback(*unmerged);
+    }
+    generalise_from(graph, k == 0 && first_merge ? *first_merge : merged(graph, tolerance, exact), tolerance, exact);
+    // Past the parts checked quickly, the grammar is the examples' cuts,
+    // merged and tidied only (docs/inference.md, "Large examples").
+    if (out.joint.derives_examples || parts > kJoinedPartsLimit) break;
+    failed = first_not_derived(out.grammar, examples, options.tolerance, options.threads);
+    if (!failed) break;
+  }
+  if (failed) {
+    const Example& e = examples[failed->example];
+    throw Error(ErrorKind::Internal,
+                "infer: error: no grammar inferred derives " + e.source + ", even with sizes held ten and a "
+                    "hundred times closer than its tolerance: " +
+                    failed->why +
+                    "\n  hint: please report this with the examples; a smaller --tolerance may get past it");
   }
 
   // The first mesh seen for each label stands for all its parts.
