@@ -120,7 +120,8 @@ int run(int argc, char** argv) {
       usage("--start '" + options.start + "' cannot be a rule label",
             "a label is a letter or '_' followed by letters, digits and '_', and not an operation word such as split");
   }
-  const ExampleLimits limits = example_limits(args);
+  ExampleLimits limits = example_limits(args);
+  limits.tolerance = options.tolerance;
   const std::uint64_t seed =
       args.has("--seed") ? static_cast<std::uint64_t>(CommandLine::integer(args, "--seed", 0, 1LL << 53)) : 1;
 

@@ -219,6 +219,17 @@ const std::vector<BadInput> kCases = {
    "", "", {"obj/single_flat_box.obj"}, nullptr, nullptr, 0, {"style.grm", "style.prims.obj"}},
   {"obj_single_point", "infer", {"single_point.obj", "-o", "style.grm"}, kInput,
    "single_point.obj:1:1: error: ", "object 'wall' (line 1) is a single point", {"obj/single_point.obj"}},
+  // A part far away sets the tolerance: the message says which.
+  {"obj_small_part_beside_a_far_one", "infer", {"point_far_away.obj", "-o", "style.grm"}, kInput,
+   "point_far_away.obj:17:1: error: ", "object 'pin' (line 17) is 0.001 m across at most, no larger than the "
+   "example's tolerance, 0.002001 m: too small to tell from a point (the tolerance is a millionth of its span, "
+   "2001 m from 'wall' (line 2) to 'post' (line 32))", {"obj/point_far_away.obj"}},
+  {"obj_small_part_under_the_given_tolerance", "check", {"ok.grm", "two_parts.obj", "--tolerance", "5"}, kInput,
+   "two_parts.obj:", "no larger than --tolerance 5: too small to tell from a point", kGrammarAndObj},
+  // Sizes whose millionth is near the end of what doubles hold.
+  {"obj_subnormal_example", "infer", {"subnormal_example.obj", "-o", "style.grm"}, kInput,
+   "subnormal_example.obj: error: ", "the example is 3e-308 m across: too small for a building in metres",
+   {"obj/subnormal_example.obj"}},
   {"obj_duplicate_coincident_parts", "infer", {"duplicate_coincident.obj", "-o", "style.grm"}, kInput,
    "duplicate_coincident.obj:1:1: error: ", "objects 'wall' (line 1) and 'wall' (line 16) overlap",
    {"obj/duplicate_coincident.obj"}, nullptr, "style.grm"},

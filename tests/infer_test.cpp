@@ -257,5 +257,30 @@ TEST(Infer, ExamplesWrittenWithSixDecimalsGiveTheSameGrammar) {
   for (const Example& e : written) EXPECT_TRUE(check_example(inferred.grammar, e.boxes, example_size(e)).derivable);
 }
 
+TEST(Infer, ACutTreeDeeperThanTheReaderNestsIsWrittenAsRulesItReads) {
+  // 300 parts each peeled off the rest: nested splits 301 deep, where the
+  // reader takes operations nested 256 deep at most.
+  const Example example = test::example_of(test::peeled_layout(300));
+  const Inference inferred = infer({example}, {});
+  const std::string text = write_grammar(inferred.grammar);
+  const Grammar reread = parse_grammar(text);
+  EXPECT_TRUE(equal_grammars(reread, inferred.grammar));
+  const CheckResult r = check_example(reread, example.boxes, example_size(example));
+  EXPECT_TRUE(r.derivable) << r.mismatch;
+}
+
+TEST(Infer, PinwheelsNestedInPinwheelsAreDerivedExactly) {
+  // Each level's arms are placed as shares of its square; rounded for the
+  // 10 m square, the shares put the small arms deep inside off by more than
+  // the tolerance.
+  for (const int levels : {5, 7}) {
+    SCOPED_TRACE(levels);
+    const Example example = test::example_of(test::nested_pinwheel(levels, 10, 3));
+    const Inference inferred = infer({example}, {});
+    const CheckResult r = check_example(inferred.grammar, example.boxes, example_size(example));
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(inferred.grammar);
+  }
+}
+
 }  // namespace
 }  // namespace vern

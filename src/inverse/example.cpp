@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <numeric>
 #include <optional>
@@ -844,6 +845,79 @@ std::string describe_object(const LabelledBox& box) {
   return text;
 }
 
+namespace {
+
+// A size as messages state it: four digits ("0.002001", "2001").
+std::string approx(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
+// The example's default tolerance is a millionth of its span or of its
+// farthest coordinate from the origin (default_tolerance): the part that
+// sets it, said as "its span, 2001 m from 'wall' (line 2) to 'post' (line 32)".
+std::string what_sets_the_tolerance(const Example& ex) {
+  const glm::dvec3 extent = example_size(ex);
+  const glm::dvec3 far = glm::max(glm::abs(ex.min), glm::abs(ex.max));
+  const int span_axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+  const int far_axis = far.x >= far.y && far.x >= far.z ? 0 : far.y >= far.z ? 1 : 2;
+  auto reaching = [&](int axis, bool low) {
+    for (const LabelledBox& b : ex.boxes)
+      if ((low ? b.min[axis] : b.max[axis]) == (low ? ex.min[axis] : ex.max[axis])) return describe_object(b);
+    return std::string();
+  };
+  if (far[far_axis] > extent[span_axis]) {
+    const bool low = std::abs(ex.min[far_axis]) > std::abs(ex.max[far_axis]);
+    return "its farthest coordinate from the origin, " + approx(far[far_axis]) + " m, in " + reaching(far_axis, low);
+  }
+  return "its span, " + approx(extent[span_axis]) + " m from " + reaching(span_axis, true) + " to " +
+         reaching(span_axis, false);
+}
+
+// Coordinates are metres. Below a micron across, an example is no building
+// but a unit mistake, and its tolerance (a millionth of that) nears the
+// end of what doubles hold: ratios and sums of its sizes would be noise.
+constexpr double kSmallestExample = 1e-6;
+
+// A part may be flat (a facade panel has no thickness), but a part no
+// larger than the tolerance on every axis is a point that no scope can be
+// fitted to; an example too small for its sizes to be told apart is refused
+// whole.
+void refuse_points(const Example& ex, double given_tolerance) {
+  const double tolerance = example_tolerance(ex, given_tolerance);
+  for (const LabelledBox& b : ex.boxes) {
+    const glm::dvec3 size = b.max - b.min;
+    const double largest = std::max({size.x, size.y, size.z});
+    if (largest > tolerance) continue;
+    const SourceLoc where{b.line, b.line != 0 ? 1u : 0u};
+    if (largest == 0)
+      fail(ErrorKind::Input, ex.source, where,
+           "object " + describe_object(b) + " is a single point: its vertices have no extent on any axis",
+           "delete the object or give it its real geometry");
+    const std::string small = "object " + describe_object(b) + " is " + approx(largest) + " m across at most, ";
+    if (given_tolerance > 0)
+      fail(ErrorKind::Input, ex.source, where,
+           small + "no larger than --tolerance " + approx(tolerance) + ": too small to tell from a point",
+           "give the part its real size, or a smaller --tolerance");
+    // A part far away (another building, a stray vertex) makes a small part
+    // too small to tell: say which part sets the tolerance.
+    fail(ErrorKind::Input, ex.source, where,
+         small + "no larger than the example's tolerance, " + approx(tolerance) + " m: too small to tell from a " +
+             "point (the tolerance is a millionth of " + what_sets_the_tolerance(ex) + ")",
+         "check that the far part belongs to this building and the model sits near the origin; else give the part "
+         "its real size, or a smaller --tolerance");
+  }
+  const glm::dvec3 extent = example_size(ex);
+  const double across = std::max({extent.x, extent.y, extent.z});
+  if (!ex.boxes.empty() && across < kSmallestExample)
+    fail(ErrorKind::Input, ex.source, {},
+         "the example is " + approx(across) + " m across: too small for a building in metres",
+         "scale the model to metres (coordinates are read as metres)");
+}
+
+}  // namespace
+
 Example load_example(const fs::path& path, const ExampleLimits& limits, unsigned threads) {
   std::error_code ec;
   if (!fs::exists(path, ec)) {
@@ -867,17 +941,7 @@ Example load_example(const fs::path& path, const ExampleLimits& limits, unsigned
       });
   update_bounds(ex);
 
-  // A part may be flat (a facade panel has no thickness), but a part with
-  // no extent at all is a point that no scope can be fitted to.
-  const double tolerance = default_tolerance(ex);
-  for (const LabelledBox& b : ex.boxes) {
-    const glm::dvec3 size = b.max - b.min;
-    if (size.x <= tolerance && size.y <= tolerance && size.z <= tolerance) {
-      fail(ErrorKind::Input, ex.source, {b.line, b.line != 0 ? 1u : 0u},
-           "object " + describe_object(b) + " is a single point: its vertices have no extent on any axis",
-           "delete the object or give it its real geometry");
-    }
-  }
+  refuse_points(ex, limits.tolerance);
   return ex;
 }
 

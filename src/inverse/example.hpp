@@ -69,6 +69,10 @@ struct ExampleLimits {
   // Not a limit: the up axis of an OBJ that does not declare one
   // (infer/check --up; y, as Blender exports OBJ by default).
   UpAxis obj_up = UpAxis::Y;
+  // Nor this: the tolerance the example will be matched within (infer and
+  // check --tolerance; 0: its own, example_tolerance). A part no larger is
+  // a point, and refused.
+  double tolerance = 0;
 };
 
 // Reads a labelled example: .obj (each object one part), .glb or .gltf

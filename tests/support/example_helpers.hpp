@@ -48,6 +48,59 @@ inline Example example_of(std::vector<vern::LabelledBox> boxes, std::string sour
   return ex;
 }
 
+// An example whose cut tree is `slabs` + 1 deep: each part peels a slab
+// 1 m thick off the rest, along x, y and z in turn (labels p0 and p1 by
+// turns); the core left is the last part.
+inline std::vector<vern::LabelledBox> peeled_layout(int slabs) {
+  glm::dvec3 lo(0), hi(static_cast<double>((slabs + 2) / 3 + 1));
+  std::vector<vern::LabelledBox> boxes;
+  for (int i = 0; i < slabs; ++i) {
+    const int axis = i % 3;
+    glm::dvec3 top = hi;
+    top[axis] = lo[axis] + 1;
+    boxes.push_back(part(i % 2 ? "p1" : "p0", lo, top));
+    lo[axis] += 1;
+  }
+  boxes.push_back(part("core", lo, hi));
+  return numbered(std::move(boxes));
+}
+
+// Pinwheels nested `levels` deep in a square `size` across, `height` high:
+// four arms (a to d) turn about a centre a third as wide, which is the
+// next pinwheel, or at the last level a part e. No straight cut separates
+// a pinwheel's arms.
+inline std::vector<vern::LabelledBox> nested_pinwheel(int levels, double size, double height) {
+  std::vector<vern::LabelledBox> boxes;
+  double x = 0, y = 0, s = size;
+  for (int level = 0; level < levels; ++level) {
+    const double t = s / 3;
+    boxes.push_back(part("a", {x, y, 0}, {x + 2 * t, y + t, height}));
+    boxes.push_back(part("b", {x + 2 * t, y, 0}, {x + s, y + 2 * t, height}));
+    boxes.push_back(part("c", {x + t, y + 2 * t, 0}, {x + s, y + s, height}));
+    boxes.push_back(part("d", {x, y + t, 0}, {x + t, y + s, height}));
+    x += t, y += t, s = t;
+  }
+  boxes.push_back(part("e", {x, y, 0}, {x + s, y + s, height}));
+  return numbered(std::move(boxes));
+}
+
+// Boxes as an OBJ file's text, z up, every coordinate to the last bit:
+// one object per box, named by its label.
+inline std::string boxes_obj(const std::vector<vern::LabelledBox>& boxes) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "# up z\n";
+  for (const vern::LabelledBox& b : boxes) {
+    text << "o " << b.label << "\n";
+    for (int i = 0; i < 8; ++i)
+      text << "v " << ((i & 1) ? b.max.x : b.min.x) << " " << ((i & 2) ? b.max.y : b.min.y) << " "
+           << ((i & 4) ? b.max.z : b.min.z) << "\n";
+    // Corners -8..-1 are the vertices just written.
+    text << "f -8 -6 -5 -7\nf -4 -3 -1 -2\nf -8 -7 -3 -4\nf -6 -2 -1 -5\nf -8 -4 -2 -6\nf -7 -5 -1 -3\n";
+  }
+  return text.str();
+}
+
 // The terminals of a derivation as the parts of an example.
 inline std::vector<vern::LabelledBox> derived_parts(const Derivation& d) {
   std::vector<vern::LabelledBox> out;
