@@ -182,6 +182,29 @@ void BM_InferLayout(benchmark::State& state) {
 }
 BENCHMARK(BM_InferLayout)->Arg(100'000)->Arg(1'000'000)->Repetitions(3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// n examples of 30 parts, each of another structure (layouts of seeds
+// 1..n): merging keeps them as n alternatives, and what grows faster than
+// n shows here (issue 25, item 18). Compare the rows: time per example
+// at 1,000 against 250.
+void BM_InferDistinctExamples(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::vector<Example> examples;
+  for (std::size_t i = 1; i <= n; ++i) {
+    LayoutOptions o;
+    o.boxes = 30;
+    o.seed = i;
+    Example e;
+    e.source = "distinct_" + std::to_string(i);
+    e.boxes = random_layout(o);
+    update_bounds(e);
+    examples.push_back(std::move(e));
+  }
+  auto run = [&] { benchmark::DoNotOptimize(infer(examples, {}).grammar.rules.size()); };
+  for (auto _ : state) run();
+  report_row(state, static_cast<double>(n), "examples", peak_heap_of(0, run));
+}
+BENCHMARK(BM_InferDistinctExamples)->Arg(250)->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // ---- the infer command end to end: read, infer, test-derive, write ----
 
 void run_infer(benchmark::State& state, const std::vector<std::string>& args, double size) {

@@ -69,5 +69,17 @@ TEST(Structural, RecursiveGrammarsCompareWithoutLooping) {
   EXPECT_FALSE(equal_grammars(parse_grammar(text), parse_grammar("p --> a(3)\na(n) : n > 0 --> split(x){ ~1 : I(rect) | ~1 : a(n - 2) }\na(n) --> nil")));
 }
 
+TEST(Structural, EveryNodesHashAtOnceIsEachNodesOwn) {
+  // A recursive rule, calls, repeats and choices: every node's hash taken
+  // at once is what structural_hash gives it alone.
+  const Grammar g = parse_grammar(
+      "a --> split(x){ ~1 : b | ~2 : repeat(z, 3){ I(window) } }\n"
+      "b --> split(y){ 1 : I(rect) | ~1 : a } : 2\n"
+      "b --> I(roof)\n");
+  const std::vector<std::size_t> all = structural_hashes(g);
+  ASSERT_EQ(all.size(), g.node_count());
+  for (NodeId id = 0; id < g.node_count(); ++id) EXPECT_EQ(all[id], structural_hash(g, id)) << id;
+}
+
 }  // namespace
 }  // namespace vern

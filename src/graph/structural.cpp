@@ -181,6 +181,21 @@ std::size_t structural_hash(const Grammar& g, NodeId node) {
   return deep(node);
 }
 
+std::vector<std::size_t> structural_hashes(const Grammar& g) {
+  std::vector<std::size_t> hashes(g.node_count());
+  std::vector<char> known(g.node_count(), 0);
+  std::function<std::size_t(NodeId)> deep = [&](NodeId id) -> std::size_t {
+    if (known[id]) return hashes[id];
+    hashes[id] = hash_operation(
+        g.op(id), deep, [&](LabelId l) { return std::hash<std::string>{}(g.label(l)); },
+        [&](RuleId r) { return std::hash<std::string>{}(g.rules[r].label); });
+    known[id] = 1;
+    return hashes[id];
+  };
+  for (NodeId id = 0; id < g.node_count(); ++id) deep(id);
+  return hashes;
+}
+
 bool structurally_equal(const Grammar& ga, NodeId a, const Grammar& gb, NodeId b) {
   return Comparer(ga, gb).nodes(a, b);
 }

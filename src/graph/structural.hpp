@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "graph/grammar.hpp"
 
@@ -20,6 +21,11 @@ std::size_t shallow_hash(const Operation& op);
 // Hash of the whole subgraph below a node; primitives by name, calls by the
 // called rule's label. Equal subgraphs hash equally across grammars.
 std::size_t structural_hash(const Grammar& g, NodeId node);
+
+// structural_hash of every node of g, by id, each subgraph hashed once:
+// for passes that compare many nodes with many (a single structural_hash
+// hashes its whole subgraph again every call).
+std::vector<std::size_t> structural_hashes(const Grammar& g);
 
 // Are the subgraphs below a (in ga) and b (in gb) structurally equal?
 bool structurally_equal(const Grammar& ga, NodeId a, const Grammar& gb, NodeId b);

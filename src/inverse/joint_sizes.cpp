@@ -257,13 +257,26 @@ class Joiner {
 
   // What the examples' derivations placed at each path, per example.
   using Seen = std::unordered_map<std::uint64_t, std::vector<MatchedPart>>;
+  // The examples whose derivations ran each path, in order.
+  using Runners = std::unordered_map<std::uint64_t, std::vector<std::size_t>>;
 
   // Rewrites one region; the new call that replaces its root, or none.
-  std::optional<NodeId> region(Regions& regions, const Region& r, const std::vector<Seen>& seen, JointSizes& out) {
+  std::optional<NodeId> region(Regions& regions, const Region& r, const std::vector<Seen>& seen,
+                               const Runners& runners, JointSizes& out) {
     // The examples that ran the region, and its parts' lengths in each
-    // (none for a split in an alternative the example did not take).
+    // (none for a split in an alternative the example did not take). Only
+    // those that ran one of its splits are looked at: examples of other
+    // structures each make a region of their own, and a thousand of them
+    // looked up in every region was quadratic.
+    std::vector<std::size_t> ran_it;
+    for (const Occurrence& o : r.splits)
+      if (const auto it = runners.find(o.path); it != runners.end())
+        ran_it.insert(ran_it.end(), it->second.begin(), it->second.end());
+    std::sort(ran_it.begin(), ran_it.end());
+    ran_it.erase(std::unique(ran_it.begin(), ran_it.end()), ran_it.end());
     std::vector<std::vector<const std::vector<MatchedPart>*>> rows;
-    for (const Seen& s : seen) {
+    for (const std::size_t example : ran_it) {
+      const Seen& s = seen[example];
       std::vector<const std::vector<MatchedPart>*> row;
       bool ran = false;
       for (const Occurrence& o : r.splits) {
@@ -538,8 +551,13 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   out.derives_examples = true;
 
   std::vector<Joiner::Seen> seen(results.size());
+  Joiner::Runners runners;
   for (std::size_t i = 0; i < results.size(); ++i)
-    for (const MatchedPart& m : results[i].parts) seen[i][m.path].push_back(m);
+    for (const MatchedPart& m : results[i].parts) {
+      std::vector<MatchedPart>& at = seen[i][m.path];
+      if (at.empty()) runners[m.path].push_back(i);
+      at.push_back(m);
+    }
 
   // Regions whose sizes follow each other, then splits that vary in one
   // way only; checked once for both (checking is most of this step's
@@ -559,7 +577,7 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
         continue;
       }
       if (r.splits.empty() || !regions.unique(r)) continue;
-      const auto call = joiner.region(regions, r, seen, out);
+      const auto call = joiner.region(regions, r, seen, runners, out);
       if (!call) continue;
       done[k] = true;
       if (replace.size() <= r.root) replace.resize(r.root + 1, kNoReplacement);
