@@ -148,6 +148,9 @@ def layout_seeds():
         # Millimetre and kilometre grids.
         "tiny_unit.bin": [0x14, 0x01, 3, 3, 3, 0x02, 0, 0, 0x05, 0x09],
         "huge_unit.bin": [0x18, 0x01, 3, 3, 3, 0x3E, 0, 3, 1, 2, 0x04, 0x01, 0x08, 0x0C],
+        # A cut tree 258 deep: 257 slabs peeled off the rest along x, y, z
+        # in turn, labels a to f, then the core.
+        "peeled.bin": [0x00, 0xC1, 0] + [(i % 3) | ((i % 6) << 2) for i in range(257)] + [0],
     }
     for name, data in seeds.items():
         (out / name).write_bytes(bytes(data))

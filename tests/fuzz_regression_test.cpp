@@ -111,4 +111,21 @@ TEST(FuzzLayout, BytesDescribeACutBoxAndInferenceDerivesIt) {
   EXPECT_EQ(fuzz::infer_layout(overlap), "");
 }
 
+TEST(FuzzLayout, APeeledLayoutIsACutTreeDeeperThanTheReaderNests) {
+  // Bits 0, 6 and 7 of the example byte: 257 slabs peeled along x, y, z
+  // in turn, then the core. Its grammar must read back and derive it.
+  std::vector<std::uint8_t> bytes{0x00, 0xC1, 0};
+  for (int i = 0; i < 257; ++i) bytes.push_back(static_cast<std::uint8_t>(i % 3));
+  bytes.push_back(0);
+  const fuzz::Layout layout = fuzz::decode_layout(bytes);
+  ASSERT_EQ(layout.examples.size(), 1u);
+  EXPECT_TRUE(layout.valid_by_construction);
+  const auto& boxes = layout.examples[0].boxes;
+  ASSERT_EQ(boxes.size(), 258u);
+  EXPECT_EQ(boxes[0].max, glm::dvec3(1, 258, 258));
+  EXPECT_EQ(boxes[1].min, glm::dvec3(1, 0, 0));
+  EXPECT_EQ(boxes[1].max, glm::dvec3(258, 1, 258));
+  EXPECT_EQ(fuzz::infer_layout(bytes), "");
+}
+
 }  // namespace

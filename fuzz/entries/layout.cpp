@@ -9,6 +9,7 @@ namespace {
 constexpr std::array<double, 8> kUnits{1, 0.5, 0.25, 0.1, 3, 0.001, 1000, 0.3};
 constexpr int kMaxDepth = 3;
 constexpr std::size_t kMaxParts = 48;
+constexpr unsigned kMinPeeled = 257, kPeeledRange = 128;
 
 class ByteReader {
  public:
@@ -70,6 +71,25 @@ void cut(ByteReader& in, glm::dvec3 min, glm::dvec3 max, int depth, Example& ex)
   }
 }
 
+// A cut tree deeper than the grammar reader nests text (256): each part
+// peels a slab one unit thick off the rest, along the axis its byte names
+// (the next with room, where that one has none), and the core left is the
+// last part.
+void peeled(ByteReader& in, Example& ex) {
+  const unsigned slabs = kMinPeeled + in.next() % kPeeledRange;
+  glm::dvec3 min(0.0), max(static_cast<double>(slabs + 1));
+  for (unsigned i = 0; i < slabs; ++i) {
+    const unsigned byte = in.next();
+    int axis = static_cast<int>(byte % 3);
+    while (max[axis] - min[axis] <= 1) axis = (axis + 1) % 3;
+    glm::dvec3 top = max;
+    top[axis] = min[axis] + 1;
+    add_box(ex, label_of(byte >> 2), min, top);
+    min[axis] += 1;
+  }
+  add_box(ex, label_of(in.next()), min, max);
+}
+
 }  // namespace
 
 Layout decode_layout(Bytes input) {
@@ -85,7 +105,9 @@ Layout decode_layout(Bytes input) {
     Example ex;
     ex.source = "layout" + std::to_string(e) + ".obj";
     const unsigned mode = in.next();
-    if (mode & 1u) {
+    if ((mode & 0xC1u) == 0xC1u) {
+      peeled(in, ex);
+    } else if (mode & 1u) {
       glm::dvec3 size;
       for (int a = 0; a < 3; ++a) size[a] = 1 + in.next() % 24;
       cut(in, glm::dvec3(0.0), size, 0, ex);

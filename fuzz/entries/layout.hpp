@@ -15,6 +15,9 @@
 //            per container 1 byte: % 4 == 0 a part (label: (byte >> 2) % 6), 1 empty space,
 //            2-3 a split along (byte >> 2) % 3 into 2 + (byte >> 4) % 3 parts, one byte of
 //            weight (1 + % 4) per part; at depth 3 or after 48 parts every container is a part.
+//     peeled (a tree whose bits 6 and 7 are set too) 1 byte: 257 + % 128 slabs, then per slab 1 byte:
+//            its axis (% 3) and label (>> 2); each peels a unit off the rest, and the core
+//            left is the last part (label: 1 byte): a cut tree deeper than the reader nests text.
 //
 // Labels are a to f. A tree-of-cuts example never has overlapping parts, so
 // inference must accept it; free boxes may overlap, and then inference must
