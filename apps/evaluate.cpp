@@ -8,12 +8,12 @@
 #include <iostream>
 #include <sstream>
 
+#include "eval/evaluation.hpp"
+#include "eval/precision_recall.hpp"
+#include "eval/random_grammar.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"
-#include "forward/random_grammar.hpp"
 #include "graph/parser.hpp"
-#include "inverse/evaluation.hpp"
-#include "inverse/precision_recall.hpp"
 #include "support/command_line.hpp"
 #include "support/guarded_main.hpp"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "forward/random_grammar.hpp"
+#include "eval/random_grammar.hpp"
 #include "forward/random_stream.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"

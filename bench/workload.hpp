@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "forward/random_grammar.hpp"
+#include "eval/random_grammar.hpp"
 #include "inverse/example.hpp"
 
 namespace vern {

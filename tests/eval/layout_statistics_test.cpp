@@ -1,6 +1,6 @@
 // Comparing samples of buildings: Wasserstein distance, style distance,
 // and telling a copy of an example from a new building.
-#include "forward/layout_statistics.hpp"
+#include "eval/layout_statistics.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "inverse/precision_recall.hpp"
+#include "eval/precision_recall.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -1,5 +1,5 @@
 // The inference round trip as evaluate reports it, on bundled grammars.
-#include "inverse/evaluation.hpp"
+#include "eval/evaluation.hpp"
 
 #include <gtest/gtest.h>
 

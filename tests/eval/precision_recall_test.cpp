@@ -1,6 +1,6 @@
 // Precision and recall of inference against the grammar that made the
 // examples (issue 15), on the style corpus in data/styles/.
-#include "inverse/precision_recall.hpp"
+#include "eval/precision_recall.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "forward/layout_statistics.hpp"
+#include "eval/layout_statistics.hpp"
 #include "graph/description_length.hpp"
 #include "graph/grammar.hpp"
 

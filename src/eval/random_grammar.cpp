@@ -1,4 +1,4 @@
-#include "forward/random_grammar.hpp"
+#include "eval/random_grammar.hpp"
 
 #include <cmath>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "inverse/evaluation.hpp"
+#include "eval/evaluation.hpp"
 
 #include <algorithm>
 

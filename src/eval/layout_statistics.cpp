@@ -1,4 +1,4 @@
-#include "forward/layout_statistics.hpp"
+#include "eval/layout_statistics.hpp"
 
 #include <algorithm>
 #include <array>
