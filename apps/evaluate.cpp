@@ -2,15 +2,19 @@
 // grammar: derive k examples, infer a grammar from them, check it
 // reproduces them, derive n variants, and report a Markdown table
 // (docs/evaluation.md holds the bundled grammars' table).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
+#include "eval/class_means.hpp"
 #include "eval/evaluation.hpp"
 #include "eval/precision_recall.hpp"
 #include "eval/random_grammar.hpp"
+#include "eval/random_style.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"
 #include "graph/parser.hpp"
@@ -37,6 +41,11 @@ CommandLine make_command_line() {
   cl.add({"--samples", "", 1, "S", "with --precision-recall: variants and fresh samples judged (default 40)"});
   cl.add({"--random", "", 1, "N", "with --precision-recall: also N random grammars (seeds 1..N, plots within 30 %)"});
   cl.add({"--random-rules", "", 1, "R", "rules per random grammar (default 8)"});
+  cl.add({"--random-styles", "", 1, "K",
+          "with --precision-recall: also K random styles (random_style.hpp), with a table per class"});
+  cl.add({"--seed", "", 1, "S", "the seed of --random-styles: required, chosen when measuring, never tuned on"});
+  cl.add({"--random-styles-write", "", 1, "FOLDER",
+          "write the K random styles to FOLDER/random_style_I.grm (alone: only write them)"});
   cl.add_standard_options();
   cl.set_epilog(
       "columns:\n"
@@ -57,10 +66,15 @@ CommandLine make_command_line() {
       "  recall         fresh source samples (seeds 5001..) that the inferred grammar derives\n"
       "  invalid        inferred variants with overlapping parts or parts outside the plot\n"
       "\n"
+      "with --random-styles, then a table per class (docs/evaluation.md, \"Random styles\"): the styles\n"
+      "containing it and their mean precision and recall per N (an inference that failed scores 0), a row\n"
+      "for all random styles, and how many have precision <= 0.25 at the largest N\n"
+      "\n"
       "examples:\n"
       "  evaluate data/grammars/*.grm -k 10 -n 100\n"
       "  evaluate data/styles/*.grm --precision-recall --counts 3,10,30\n"
-      "  evaluate --precision-recall --random 20 --counts 10,30\n");
+      "  evaluate --precision-recall --random 20 --counts 10,30\n"
+      "  evaluate --precision-recall --random-styles 300 --seed $(date +%s)\n");
   return cl;
 }
 
@@ -96,13 +110,60 @@ std::vector<std::uint32_t> example_counts(const ParsedCommandLine& args) {
   return counts;
 }
 
+// --random-styles K --seed S: the K styles, each with a seed mixed from S
+// and its index. The seed has no default: it is chosen when measuring.
+std::vector<RandomStyle> random_styles(const ParsedCommandLine& args) {
+  if (!args.has("--random-styles")) {
+    for (const char* option : {"--seed", "--random-styles-write"})
+      if (args.has(option))
+        throw Error(ErrorKind::Usage, std::string("evaluate: error: ") + option +
+                                          " goes with --random-styles\n  hint: --random-styles 300 --seed $(date +%s)");
+    return {};
+  }
+  if (!args.has("--seed"))
+    throw Error(ErrorKind::Usage,
+                "evaluate: error: --random-styles needs --seed S, a seed chosen now and never tuned on\n"
+                "  hint: --random-styles " +
+                    args.value("--random-styles") + " --seed $(date +%s)");
+  const auto count = static_cast<std::uint32_t>(CommandLine::integer(args, "--random-styles", 1, 100000));
+  const auto seed = static_cast<std::uint64_t>(CommandLine::integer(args, "--seed", 0, std::numeric_limits<long long>::max()));
+  std::vector<RandomStyle> styles;
+  for (std::uint32_t i = 0; i < count; ++i) styles.push_back(random_style(random_style_seed(seed, i)));
+  return styles;
+}
+
+std::string style_name(std::size_t index) { return "random_style_" + std::to_string(index); }
+
+// For each class, the styles that contain it and their mean precision and
+// recall per N; then all styles, and how many are at 0.25 or below.
+void print_class_table(const std::vector<StyleScores>& scores, const std::vector<std::uint32_t>& counts) {
+  const ClassTable t = class_means(scores, counts);
+  std::cout << "\n| class | styles |";
+  for (std::uint32_t n : counts) std::cout << " precision N = " << n << " | recall N = " << n << " |";
+  std::cout << "\n|---|---|";
+  for (std::size_t c = 0; c < counts.size(); ++c) std::cout << "---|---|";
+  std::cout << "\n";
+  auto row = [&](std::string_view name, const ClassMeans& m) {
+    std::cout << "| " << name << " | " << m.styles << " |";
+    for (std::size_t c = 0; c < counts.size(); ++c)
+      std::cout << " " << (m.styles ? two_places(m.precision[c]) : "-") << " | "
+                << (m.styles ? two_places(m.recall[c]) : "-") << " |";
+    std::cout << "\n";
+  };
+  for (std::size_t i = 0; i < kStyleClasses.size(); ++i) row(kStyleClasses[i].name, t.classes[i]);
+  row("all random styles", t.all);
+  std::cout << "\nRandom styles with precision <= 0.25 at N = " << *std::max_element(counts.begin(), counts.end())
+            << ": " << t.low_precision << " of " << scores.size() << "\n";
+}
+
 // Per N, the mean of each score over the grammars, and the lowest.
 struct Means {
   double precision = 0, wider = 0, recall = 0, lowest = 1;
   int grammars = 0;
 };
 
-int run_precision_recall(const ParsedCommandLine& args, unsigned threads, bool quiet) {
+int run_precision_recall(const ParsedCommandLine& args, unsigned threads, bool quiet,
+                         const std::vector<RandomStyle>& styles) {
   PrecisionRecallOptions options;
   options.threads = threads;
   if (args.has("--samples"))
@@ -129,9 +190,18 @@ int run_precision_recall(const ParsedCommandLine& args, unsigned threads, bool q
       sources.emplace_back(name, parse_grammar(random_grammar(random), name));
     }
   }
+  // The random styles last: source first_style + i is style i.
+  const std::size_t first_style = sources.size();
+  for (std::size_t i = 0; i < styles.size(); ++i)
+    sources.emplace_back(style_name(i), parse_grammar(styles[i].text, style_name(i)));
+  std::vector<StyleScores> scores(styles.size());
+  for (std::size_t i = 0; i < styles.size(); ++i)
+    scores[i] = {styles[i].classes, std::vector<double>(counts.size(), 0.0), std::vector<double>(counts.size(), 0.0)};
   std::ostringstream notes;
   int failures = 0;
-  for (const auto& [name, source] : sources) {
+  for (std::size_t s = 0; s < sources.size(); ++s) {
+    const auto& [name, source] = sources[s];
+    StyleScores* style = s >= first_style ? &scores[s - first_style] : nullptr;
     const auto started = std::chrono::steady_clock::now();
     const Share self = self_recall(source, options);
     if (self.hits != self.total) notes << "- " << name << ": the source does not derive its own " << self.first_miss << "\n";
@@ -165,6 +235,10 @@ int run_precision_recall(const ParsedCommandLine& args, unsigned threads, bool q
       m.recall += r.recall.value();
       m.lowest = std::min({m.lowest, r.precision.value(), r.recall.value()});
       ++m.grammars;
+      if (style) {
+        style->precision[c] = r.precision.value();
+        style->recall[c] = r.recall.value();
+      }
     }
     if (!quiet) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -179,6 +253,7 @@ int run_precision_recall(const ParsedCommandLine& args, unsigned threads, bool q
               << two_places(m.wider / m.grammars) << " | " << two_places(m.recall / m.grammars) << " | "
               << two_places(m.lowest) << " |\n";
   }
+  if (!styles.empty()) print_class_table(scores, counts);
   if (!notes.str().empty()) std::cout << "\n" << notes.str();
   return failures == 0 ? 0 : 1;
 }
@@ -190,7 +265,14 @@ int run(int argc, char** argv) {
     std::cout << cl.help();
     return 0;
   }
-  if (args.positional.empty() && !(args.has("--precision-recall") && args.has("--random")))
+  const std::vector<RandomStyle> styles = random_styles(args);
+  if (!styles.empty() && !args.has("--precision-recall") && !args.has("--random-styles-write"))
+    throw Error(ErrorKind::Usage,
+                "evaluate: error: --random-styles goes with --precision-recall or --random-styles-write\n"
+                "  hint: evaluate --precision-recall --random-styles " +
+                    args.value("--random-styles") + " --seed " + args.value("--seed"));
+  const bool random = args.has("--random") || !styles.empty();
+  if (args.positional.empty() && !(args.has("--precision-recall") && random) && styles.empty())
     throw Error(ErrorKind::Usage, "evaluate: error: no grammar given\n  hint: evaluate data/grammars/*.grm");
   EvaluationOptions options;
   if (args.has("--examples"))
@@ -204,7 +286,15 @@ int run(int argc, char** argv) {
   std::error_code ec;
   if (args.has("--keep") && !fs::is_directory(args.value("--keep"), ec))
     throw Error(ErrorKind::Io, args.value("--keep") + ": error: not an existing folder\n  hint: create it first");
-  if (args.has("--precision-recall")) return run_precision_recall(args, options.threads, quiet);
+  if (args.has("--random-styles-write")) {
+    const fs::path folder = args.value("--random-styles-write");
+    if (!fs::is_directory(folder, ec))
+      throw Error(ErrorKind::Io, folder.string() + ": error: not an existing folder\n  hint: create it first");
+    for (std::size_t i = 0; i < styles.size(); ++i)
+      write_file_atomically(folder / (style_name(i) + ".grm"), styles[i].text);
+    if (!args.has("--precision-recall") && args.positional.empty()) return 0;
+  }
+  if (args.has("--precision-recall")) return run_precision_recall(args, options.threads, quiet, styles);
 
   std::cout << "| grammar | rules | DL | lines | reproduced | valid | novel | structure | sizes |\n"
                "|---|---|---|---|---|---|---|---|---|\n";
