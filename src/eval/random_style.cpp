@@ -161,6 +161,8 @@ class StyleMaker {
   // Annex facades along y: wings of L, U and courtyard plans.
   bool annexes_y() const { return plan_ == Plan::L || plan_ == Plan::U || plan_ == Plan::Courtyard; }
   bool annexes_x() const { return plan_ == Plan::Row || plan_ == Plan::Hall || plan_ == Plan::Courtyard; }
+  // Annex walls are a share of the height, unless they share one height h.
+  bool annex_walls_share() const { return has_annexes() && (!on(StyleClass::SharedSize) || annexes_y()); }
 
   // The main front: bays, storeys, ground floor, roof.
   void choose_front() {
@@ -206,12 +208,11 @@ class StyleMaker {
       roof_ = roof_share_ ? free_size(0.25, 0.6, 0.05, true)
                           : free_size(std::max(1.5, crown), std::max(3.5, crown + 2), 0.1, false);
     }
-    if (has_annexes() && (!on(StyleClass::SharedSize) || annexes_y())) annex_walls_ = free_size(1.2, 3.0, 0.1, true);
+    if (annex_walls_share()) annex_walls_ = free_size(1.2, 3.0, 0.1, true);
     window_width_ = on(StyleClass::MixedSplit) ? step(0.9, 0.35 * tile_, 0.1) : step(1.0, 2.5, 0.1);
     annex_window_ = on(StyleClass::MixedSplit) ? step(0.8, 0.35 * annex_tile_, 0.1) : step(1.0, 2.5, 0.1);
     // A style with continuous sizes has at least one: the windows' width.
-    draw_window_ = on(StyleClass::ContinuousSizes) && (draws_ == 0 || chance(0.3));
-    if (draw_window_) {
+    if (on(StyleClass::ContinuousSizes) && (draws_ == 0 || chance(0.3))) {
       const double hi = on(StyleClass::MixedSplit) ? 0.35 * tile_ : 2.5;
       window_size_ = drawn_size(window_width_ * 0.8, std::max(window_width_ * 0.8 + 0.3, hi), 0.05,
                                 on(StyleClass::MixedSplit) ? "" : "~");
@@ -246,7 +247,7 @@ class StyleMaker {
   // The plan's sizes, and what the plot must be at least to hold them.
   void choose_plan_sizes() {
     double x = main_width_, y = main_depth_, z = main_height_;
-    if (has_annexes() && !on(StyleClass::SharedSize)) {
+    if (annex_walls_share()) {
       // Annex walls a share of the height: tall enough for a door.
       z = std::max(z, (door_height_ + 0.6) * (1 + annex_walls_.lo) / annex_walls_.lo);
     }
@@ -431,9 +432,7 @@ class StyleMaker {
     return call_args(p);
   }
   // An annex: its rule, with the shared wall height where there is one.
-  std::string annex(bool along_y) const {
-    return (along_y ? annex_y_ : annex_x_) + (on(StyleClass::SharedSize) && !annexes_y() ? "(h)" : "");
-  }
+  std::string annex(bool along_y) const { return (along_y ? annex_y_ : annex_x_) + (annex_walls_share() ? "" : "(h)"); }
 
   void write_plan() {
     const bool shared = on(StyleClass::SharedSize);
@@ -652,7 +651,6 @@ class StyleMaker {
 
   void write_annexes() {
     if (!has_annexes()) return;
-    const bool shared_height = on(StyleClass::SharedSize) && !annexes_y();
     for (const bool along_y : {false, true}) {
       if (along_y ? !annexes_y() : !annexes_x()) continue;
       const std::string axis = along_y ? "y" : "x";
@@ -664,7 +662,7 @@ class StyleMaker {
       const bool special = special_ == Special::Annexes && along_y == annexes_y();
       const std::string walls = special ? row + "(randint(0, " + std::to_string(annex_k_most_) + "))"
                                         : "repeat(" + axis + ", " + num(annex_tile_) + "){ " + bay + " }";
-      const std::string height = shared_height ? "h" : annex_walls_.text;
+      const std::string height = annex_walls_share() ? annex_walls_.text : "h";
       rule(annex(along_y) + " --> split(z){ " + height + " : " + walls + " | ~1 : " + annex_leaf_ + " }");
       if (special) {
         rule(row + "(k) --> " + run_with(axis, annex_tile_, "k", bay, door));
@@ -700,7 +698,7 @@ class StyleMaker {
   Top top_ = Top::Leaf;
   Special special_ = Special::None;
   bool ground_zone_ = false, yard_ = false, piers_ = false, cornice_zone_ = false, roof_share_ = false;
-  bool wing_left_ = false, draw_window_ = false, annex_pavilion_ = false;
+  bool wing_left_ = false, annex_pavilion_ = false;
 
   double tile_ = 0, storey_ = 0, annex_tile_ = 0, shop_tile_ = 0;
   int k_most_ = 0, annex_k_most_ = 0, tiers_most_ = 0;
