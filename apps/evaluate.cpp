@@ -72,7 +72,7 @@ CommandLine make_command_line() {
       "\n"
       "examples:\n"
       "  evaluate data/grammars/*.grm -k 10 -n 100\n"
-      "  evaluate data/styles/*.grm --precision-recall --counts 3,10,30\n"
+      "  evaluate data/styles/dev/*.grm --precision-recall --counts 3,10,30\n"
       "  evaluate --precision-recall --random 20 --counts 10,30\n"
       "  evaluate --precision-recall --random-styles 300 --seed $(date +%s)\n");
   return cl;

@@ -50,7 +50,7 @@ TEST(TurnedExamples, TheOddOneTurnedAQuarterIsTurnedBack) {
 
 TEST(TurnedExamples, InferenceWritesTheTurnAndDerivesEveryExample) {
   // Houses modelled facing either way (the style's own R(z, pi / 2)).
-  const Grammar source = read_grammar_file(std::string(VERN_SOURCE_DIR) + "/data/styles/turned_houses.grm");
+  const Grammar source = read_grammar_file(std::string(VERN_SOURCE_DIR) + "/data/styles/dev/turned_houses.grm");
   std::vector<Example> examples = test::derived_examples(source, 12);
   InferOptions o;
   o.threads = 1;
@@ -69,7 +69,7 @@ TEST(TurnedExamples, InferenceWritesTheTurnAndDerivesEveryExample) {
 // those of one thread, where the looking comes first and nothing is made
 // twice.
 TEST(TurnedExamples, TheGrammarIsTheSameOnOneThreadAsOnTwo) {
-  const Grammar source = read_grammar_file(std::string(VERN_SOURCE_DIR) + "/data/styles/turned_houses.grm");
+  const Grammar source = read_grammar_file(std::string(VERN_SOURCE_DIR) + "/data/styles/dev/turned_houses.grm");
   const std::vector<Example> examples = test::derived_examples(source, 12);
   InferOptions one;
   one.threads = 1;
