@@ -41,6 +41,24 @@ TEST(FitDistribution, RepeatedValuesAreAChoice) {
   expect_support_holds(d, v);
 }
 
+TEST(FitDistribution, AValueRepeatsOnlyAcrossExamples) {
+  // Thirty examples, each showing its own value at two places (two wings
+  // of one depth): thirty observations of a continuous size, not thirty
+  // values seen twice each.
+  std::vector<Observation> two_places;
+  for (std::int64_t e = 0; e < 30; ++e) {
+    const double v = 4 + 0.05 * static_cast<double>((e * 7) % 30);
+    two_places.push_back({v, 1, e});
+    two_places.push_back({v, 1, e});
+  }
+  FitOptions o;
+  o.resolution = 1e-5;
+  EXPECT_NE(fit_distribution(two_places, o).kind, DistributionKind::Choice);
+  // Without saying which example shows each, they read as a discrete choice.
+  for (Observation& seen : two_places) seen.example = -1;
+  EXPECT_EQ(fit_distribution(two_places, o).kind, DistributionKind::Choice);
+}
+
 TEST(FitDistribution, EvenlySpreadValuesAreUniformAndReachBeyondTheExtremes) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(2.0, 3.0);

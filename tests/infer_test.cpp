@@ -282,5 +282,30 @@ TEST(Infer, PinwheelsNestedInPinwheelsAreDerivedExactly) {
   }
 }
 
+TEST(Infer, ASizeSharedByTwoSubtreesIsNoChoiceOfTheValuesSeen) {
+  // Both side wings of each building take one drawn height h: every
+  // example shows its height at two places. Thirty continuous heights are
+  // a range (or one draw for both), never choice(...) of the thirty values
+  // seen, as each looked like a value seen twice. (A random style,
+  // evaluate --random-styles 40 --seed 1, style 15.)
+  const Grammar source = parse_grammar(
+      "@start lot\n"
+      "@scope rand(23.5, 38), rand(7, 10), rand(19.5, 32.5)\n"
+      "lot --> layout(rand(4.9, 5.9))\n"
+      "layout(h) --> split(x){ ~2.9 : house(rand(3.9, 5), randint(0, 1)) | ~1.1 : side(h) | ~0.5 : nil | "
+      "~1.3 : side(h) }\n"
+      "house(u, b) --> split(x){ 0.9 : I(pillar) | ~1 : core(u, b) | 0.9 : I(pillar) }\n"
+      "core(u, b) --> split(z){ u : I(podium) | 2.5 * u + 1 : repeat(z, 3.3){ storey(b) } | ~1 : I(roof) }\n"
+      "storey(b) --> repeat(x, 3.8){ bay(b) }\n"
+      "bay(b) : b == 0 --> split(x){ ~1 : I(brick) | ~2.1 : I(panel) | ~1 : I(brick) }\n"
+      "bay(b) : b == 1 --> split(x){ ~1 : I(brick) | ~2.1 : split(z){ ~1 : I(loggia) | ~2 : I(pane) } | "
+      "~1 : I(brick) }\n"
+      "side(h) --> split(z){ h : repeat(x, 3.8){ sideBay } | ~1 : R(z, pi / 2){ I(roof) } }\n"
+      "sideBay --> split(x){ ~1 : I(render) | ~1.2 : I(pane) | ~1 : I(render) }\n");
+  const Inference inferred = infer(test::derived_examples(source, 30), {});
+  const std::string text = write_grammar(inferred.grammar);
+  EXPECT_EQ(text.find("choice("), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace vern

@@ -38,7 +38,7 @@ NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book
       }
       const auto [lo, hi] = std::minmax_element(p.values.begin(), p.values.end());
       drawn.parts[i].size = {range_expr({*lo, *hi}, tolerance), !p.absolute};
-      for (std::size_t m = 0; m < p.values.size(); ++m) values[i].push_back({p.values[m], known->second[m].weight});
+      for (std::size_t m = 0; m < p.values.size(); ++m) values[i].push_back({p.values[m], known->second[m].weight, known->second[m].example});
     }
     const NodeId out = g.intern({std::move(drawn), g.node(id).loc});
     if (out == id) continue;

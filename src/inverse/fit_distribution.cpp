@@ -68,10 +68,29 @@ double normal_log_density(double z) { return -0.5 * z * z - 0.5 * std::log(2 * s
 
 double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::numbers::sqrt2); }
 
+// The observations with each example's value counted once: of the
+// observations of one known example within the resolution of each other,
+// the first stays.
+std::vector<Observation> once_per_example(const std::vector<Observation>& observations, double resolution) {
+  if (std::ranges::none_of(observations, [](const Observation& o) { return o.example >= 0; })) return observations;
+  std::vector<Observation> sorted = observations;
+  std::stable_sort(sorted.begin(), sorted.end(), [](const Observation& a, const Observation& b) {
+    return a.example != b.example ? a.example < b.example : a.value < b.value;
+  });
+  std::vector<Observation> out;
+  for (const Observation& o : sorted) {
+    if (o.example >= 0 && !out.empty() && out.back().example == o.example && o.value - out.back().value <= resolution)
+      continue;
+    out.push_back(o);
+  }
+  return out;
+}
+
 }  // namespace
 
-Distribution fit_distribution(const std::vector<Observation>& observations, const FitOptions& options) {
-  if (observations.empty()) throw Error(ErrorKind::Internal, "error: a distribution fitted to no observations");
+Distribution fit_distribution(const std::vector<Observation>& all, const FitOptions& options) {
+  if (all.empty()) throw Error(ErrorKind::Internal, "error: a distribution fitted to no observations");
+  const std::vector<Observation> observations = once_per_example(all, options.resolution);
   double lo_seen = observations[0].value, hi_seen = lo_seen;
   for (const Observation& o : observations) {
     lo_seen = std::min(lo_seen, o.value);

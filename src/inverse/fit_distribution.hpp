@@ -10,6 +10,8 @@
 //   - constant: all values within the resolution (no fitting needed);
 //   - choice(v1, ..., vm) of the distinct values, when values repeat
 //     (m <= n / 2): a discrete style, m parameters;
+// Observations of one value from one example (Observation::example) count
+// once, for every model: a value repeats only across examples.
 //   - rand(lo, hi), 2 parameters;
 //   - tnormal(mu, sigma, lo, hi), 4 parameters, mu and sigma fitted by
 //     maximum likelihood (Ceres' gradient solver);
@@ -21,6 +23,7 @@
 // beyond their own extremes.
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -31,6 +34,12 @@ namespace vern {
 struct Observation {
   double value = 0;
   double count = 1;  // how many examples show it
+  // The one example that shows it, when it is one and known (-1: any).
+  // One example's value seen at two places (two wings of one depth, in
+  // pieces merged from both) is one observation of the style, not two:
+  // counted twice, thirty such depths looked like a choice of thirty values
+  // seen twice each.
+  std::int64_t example = -1;
 };
 
 enum class DistributionKind { Constant, Choice, Uniform, TruncatedNormal };

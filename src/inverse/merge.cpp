@@ -49,7 +49,14 @@ namespace {
 // In how many examples each node occurs: a value seen in three examples
 // is three observations of the style, while one example's six equal
 // windows are one decision, observed once.
-std::vector<double> example_counts(const Grammar& g, const std::vector<NodeId>& roots) {
+struct ExampleCounts {
+  std::vector<double> counts;       // by node id: how many examples it occurs in
+  std::vector<std::int64_t> only;   // by node id: the one example, where it occurs in one (else -1)
+  double of(NodeId id) const { return id < counts.size() && counts[id] > 0 ? counts[id] : 1.0; }
+  std::int64_t example_of(NodeId id) const { return id < only.size() && counts[id] == 1 ? only[id] : -1; }
+};
+
+ExampleCounts example_counts(const Grammar& g, const std::vector<NodeId>& roots) {
   std::vector<double> counts(g.node_count(), 0.0);
   std::vector<std::uint32_t> seen_in(g.node_count(), 0);  // 1 + the last example that reached it
   for (std::uint32_t e = 0; e < roots.size(); ++e) {
@@ -63,7 +70,10 @@ std::vector<double> example_counts(const Grammar& g, const std::vector<NodeId>& 
       for_each_child(g.op(id), [&](NodeId c) { stack.push_back(c); });
     }
   }
-  return counts;
+  std::vector<std::int64_t> only(g.node_count(), -1);
+  for (NodeId id = 0; id < g.node_count(); ++id)
+    if (counts[id] == 1) only[id] = static_cast<std::int64_t>(seen_in[id]) - 1;
+  return {std::move(counts), std::move(only)};
 }
 
 // Unifies nodes of equal structure anywhere below a root (thesis 10.3):
@@ -77,7 +87,7 @@ class Unifier {
   // counts: in how many examples each node occurs (example_counts); a
   // node beyond it counts once.
   Unifier(Grammar& g, const MergeOptions& o, SampleBook& book, RowBook& rows, TileCounts& tile_counts,
-          const std::vector<double>& counts)
+          const ExampleCounts& counts)
       : g_(g),
         opt_(o),
         book_(book),
@@ -125,6 +135,7 @@ class Unifier {
     // whether every member's are known.
     std::vector<std::vector<double>> lengths;
     std::vector<double> row_weights;
+    std::vector<std::int64_t> row_examples;  // per row: its one example, or -1
     bool rows_complete = true;
     std::size_t members = 0;
     // Repeats: the tile counts the members made where folded, and whether
@@ -337,7 +348,7 @@ class Unifier {
         }
         if (m.total < 0) m.total = 0;
       }
-      m.weight = id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0;
+      m.weight = counts_.of(id);
     }
     return sized_;
   }
@@ -364,7 +375,7 @@ class Unifier {
         const auto& values = booked->second[i];
         group.samples[i].insert(group.samples[i].end(), values.begin(), values.end());
       } else if (r->lo == r->hi) {
-        group.samples[i].push_back({r->lo, id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0});
+        group.samples[i].push_back({r->lo, counts_.of(id), counts_.example_of(id)});
       } else {
         group.sampled[i] = false;  // a range whose values were not kept
       }
@@ -372,11 +383,13 @@ class Unifier {
     }
     if (row.size() == sizes.size()) {
       group.lengths.push_back(row);
-      group.row_weights.push_back(id < counts_.size() && counts_[id] > 0 ? counts_[id] : 1.0);
+      group.row_weights.push_back(counts_.of(id));
+      group.row_examples.push_back(counts_.example_of(id));
     } else if (const auto rows = rows_.find(id); rows != rows_.end()) {
       for (const LengthRow& r : rows->second) {
         group.lengths.push_back(r.lengths);
         group.row_weights.push_back(r.weight);
+        group.row_examples.push_back(r.example);
       }
     } else {
       group.rows_complete = false;
@@ -464,7 +477,7 @@ class Unifier {
       rows.clear();
       rows.reserve(group.lengths.size());
       for (std::size_t m = 0; m < group.lengths.size(); ++m)
-        rows.push_back({std::move(group.lengths[m]), group.row_weights[m]});
+        rows.push_back({std::move(group.lengths[m]), group.row_weights[m], group.row_examples[m]});
     }
     if (std::holds_alternative<Repeat>(g_.op(out)) && group.counted && !group.tile_counts.empty())
       tile_counts_[out] = group.tile_counts;
@@ -482,7 +495,7 @@ class Unifier {
   SampleBook& book_;
   RowBook& rows_;
   TileCounts& tile_counts_;            // by repeat node: the tile counts it made where folded
-  const std::vector<double>& counts_;  // by node id: examples it occurs in
+  const ExampleCounts& counts_;  // by node id: examples it occurs in
   std::vector<Group> groups_;
   std::unordered_map<Key, std::size_t, KeyHash> group_by_key_;
   std::vector<std::size_t> group_of_;  // by node id; kNoGroup until visited
@@ -824,7 +837,7 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   // is three parts). Only runs that fill a whole split are folded first.
   SampleBook book;
   RowBook rows;
-  const std::vector<double> counts = example_counts(g, folded);
+  const ExampleCounts counts = example_counts(g, folded);
   NodeId merged = Unifier(g, options, book, rows, tile_counts, counts).run(examples);
   // Free combinations make parents alike, which unify, which may show more
   // free combinations above: repeat until nothing changes (a few rounds:

@@ -1,6 +1,7 @@
 // Merging's notes on the values behind its ranges.
 #pragma once
 
+#include <cstdint>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -49,6 +50,7 @@ inline NodeId substitute_keeping_samples(Grammar& g, NodeId root, const std::vec
 struct LengthRow {
   std::vector<double> lengths;
   double weight = 1;
+  std::int64_t example = -1;  // the one example it stands for, where it is one (Observation::example)
 };
 using RowBook = std::unordered_map<NodeId, std::vector<LengthRow>>;
 

@@ -290,8 +290,9 @@ std::optional<SharePlan> plan_shares(const Seen& s, const ShareOptions& opt) {
   if (!lines) return std::nullopt;
   for (std::size_t j = 0; j < k; ++j)
     if ((*lines)[j].coefficient(0) == 1 && (*lines)[j].c0 == 0 && plan.drawn.empty())
-      for (const auto& run : s.lengths)
-        plan.drawn.push_back({plan.metric ? run[j] : shares[j][&run - s.lengths.data()], 1});
+      for (std::size_t r = 0; r < s.lengths.size(); ++r)
+        plan.drawn.push_back({plan.metric ? s.lengths[r][j] : shares[j][r], 1,
+                              static_cast<std::int64_t>(s.at[r].example)});
   if (plan.drawn.size() != s.at.size()) return std::nullopt;
   FitOptions fit;
   fit.resolution = opt.tolerance;
