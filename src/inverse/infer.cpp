@@ -202,6 +202,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   std::optional<NotDerived> failed;
   for (std::size_t k = 0; k < attempts.size(); ++k) {
     const auto [tolerance, exact] = attempts[k];
+    failed.reset();
     if (k > 0) {
       out.tolerance = tolerance;
       out.joint = {};
