@@ -52,6 +52,23 @@ int hex_value(char c) {
   return -1;
 }
 
+// Printable ASCII: most names are nothing else, and need no closer look.
+bool is_printable_ascii(std::string_view text) {
+  for (const char c : text)
+    if (c < 0x20 || c > 0x7E) return false;
+  return true;
+}
+
+// Where an example's copy number starts ("window.001": at the '.'), or
+// name.size() when there is none.
+std::size_t copy_number_start(std::string_view name) {
+  const std::size_t dot = name.rfind('.');
+  if (dot == std::string_view::npos || dot == 0 || dot + 1 == name.size()) return name.size();
+  for (std::size_t i = dot + 1; i < name.size(); ++i)
+    if (name[i] < '0' || name[i] > '9') return name.size();
+  return dot;
+}
+
 bool is_plain_ascii(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '.' ||
          c == '-';
@@ -62,6 +79,11 @@ bool is_plain_ascii(char c) {
 std::optional<std::string> label_fault(std::string_view text) {
   if (text.empty()) return "is empty";
   if (text.size() > kMaxLabelBytes) return "is longer than " + std::to_string(kMaxLabelBytes) + " bytes";
+  if (is_printable_ascii(text)) {
+    if (text.front() == ' ') return "starts with white space";
+    if (text.back() == ' ') return "ends with white space";
+    return std::nullopt;
+  }
   if (const std::size_t bad = invalid_utf8_offset(text); bad != std::string_view::npos) {
     char byte[8];
     std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(text[bad]));
@@ -91,6 +113,7 @@ void require_label(std::string_view label, const std::string& file, SourceLoc lo
 
 std::string shown_name(std::string_view text) {
   constexpr std::size_t kShown = 100;
+  if (text.size() <= kShown && is_printable_ascii(text)) return std::string(text);
   std::string out;
   const std::string_view head = text.substr(0, kShown);
   for (std::size_t at = 0; at < head.size();) {
@@ -123,17 +146,11 @@ std::string shown_name(std::string_view text) {
   return out;
 }
 
-std::string strip_numeric_suffix(std::string_view name) {
-  const std::size_t dot = name.rfind('.');
-  if (dot == std::string_view::npos || dot == 0 || dot + 1 == name.size()) return std::string(name);
-  for (std::size_t i = dot + 1; i < name.size(); ++i)
-    if (name[i] < '0' || name[i] > '9') return std::string(name);
-  return std::string(name.substr(0, dot));
-}
+std::string strip_numeric_suffix(std::string_view name) { return std::string(name.substr(0, copy_number_start(name))); }
 
 std::string name_in_file(std::string_view label, bool one_word) {
   // The '.' that would make the label's own end read as a copy number.
-  const std::size_t copy_dot = strip_numeric_suffix(label).size();
+  const std::size_t copy_dot = copy_number_start(label);
   std::string out;
   out.reserve(label.size());
   for (std::size_t i = 0; i < label.size(); ++i) {
@@ -147,6 +164,7 @@ std::string name_in_file(std::string_view label, bool one_word) {
 }
 
 std::string label_of_name(std::string_view name) {
+  if (name.find('%') == std::string_view::npos) return std::string(name);
   std::string out;
   out.reserve(name.size());
   for (std::size_t i = 0; i < name.size(); ++i) {
@@ -162,7 +180,9 @@ std::string label_of_name(std::string_view name) {
   return out;
 }
 
-std::string label_of_part_name(std::string_view name) { return label_of_name(strip_numeric_suffix(name)); }
+std::string label_of_part_name(std::string_view name) {
+  return label_of_name(name.substr(0, copy_number_start(name)));
+}
 
 std::string read_label(std::string_view name, NameOf kind, const std::string& file, SourceLoc loc,
                        const std::string& who) {
