@@ -41,6 +41,9 @@ CommandLine make_command_line() {
   cl.add({"--start", "", 1, "LABEL", "start rule (default: @start, else the first rule)"});
   cl.add({"--spacing", "", 1, "METRES", "gap between buildings in a one-file layout (default 5)"});
   cl.add({"--primitives", "", 1, "PATH", "primitive meshes: a folder of .obj files or one .obj of named objects"});
+  cl.add({"--allow-outside-files", "", 0, "",
+          "the grammar's @primitives may name files outside its folder ('..', absolute paths,\n"
+          "links out); without it they are refused: a grammar from elsewhere chooses them"});
   cl.add({"--instancing", "", 0, "",
           "glTF/GLB: each part's copies as GPU instances (EXT_mesh_gpu_instancing):\n"
           "smaller, faster files for large scenes. The extension is required (it has no\n"
@@ -240,7 +243,7 @@ int run(int argc, char** argv) {
     if ((one_file ? *file_format : folder_format.value_or(Format::Obj)) != Format::Obj)
       usage("--up applies to OBJ output only", "glTF is y-up by its specification: leave --up out");
   }
-  if (!one_file && output.has_extension() && !fs::is_directory(output))
+  if (!one_file && output.has_extension() && !fs::is_directory(output, ec))
     usage("cannot tell what to write to '" + output.string() + "'",
           "name a folder (ending in /) or a file ending in .obj, .gltf or .glb");
   // Say so now, naming the path as given, rather than after deriving.
@@ -279,14 +282,18 @@ int run(int argc, char** argv) {
     // Of what the folder holds, only this run's variant files are written:
     // none may be an input, or a folder.
     const Format format = folder_format.value_or(Format::Obj);
-    for (const fs::directory_entry& entry : fs::directory_iterator(output, ec)) {
-      const std::string name = entry.path().filename().string();
+    for (fs::directory_iterator it(output, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
       if (!is_variant_output(name, options.count, format)) continue;
       check_output_file("generate", output / name, {grammar_path}, "the grammar file");
       check_output_file("generate", output / name, primitive_inputs, "a primitives file");
     }
+    if (ec)
+      throw Error(ErrorKind::Io, output.string() + ": error: cannot list the folder: " + ec.message() +
+                                     "\n  hint: check the folder's permissions, or choose another output");
   }
-  const PrimitiveLibrary library = primitives_for(grammar, grammar_path, primitives_path);
+  const PrimitiveLibrary library =
+      primitives_for(grammar, grammar_path, primitives_path, args.has("--allow-outside-files"));
   for (const auto& w : unknown_primitive_warnings(grammar, library)) {
     if (options.derive.strict) {
       // The warning's text, reported as the error --strict makes it.

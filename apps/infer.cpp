@@ -11,6 +11,7 @@
 #include "graph/alongside.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/description_length.hpp"
+#include "graph/folder_confinement.hpp"
 #include "graph/out_of_memory.hpp"
 #include "graph/parallel_for.hpp"
 #include "graph/reserved_words.hpp"
@@ -182,6 +183,12 @@ int run(int argc, char** argv) {
   examples = {};
   const std::uint32_t test_buildings = parts > 100'000 ? 1 : 8;
   result.grammar.primitives = path_from(output, prims);
+  // generate follows @primitives only into the grammar's own folder.
+  if (!quiet && !path_in_folder(output.parent_path(), result.grammar.primitives))
+    std::fprintf(stderr,
+                 "infer: warning: the grammar names its meshes as '%s', outside its folder: generate reads them "
+                 "only with --allow-outside-files\n  hint: write the meshes beside the grammar (--primitives-out)\n",
+                 result.grammar.primitives.c_str());
   std::string grammar_text;
   run_alongside(
       options.threads,

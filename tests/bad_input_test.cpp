@@ -134,6 +134,21 @@ void secret_beside_the_folder(const fs::path& d) {
 
 void fifo(const fs::path& path) { ASSERT_EQ(mkfifo(path.c_str(), 0644), 0) << path; }
 
+// The grammars copied in moved into g/, with a valid OBJ, secret.obj, beside
+// that folder: what a grammar's @primitives may not reach.
+void grammar_in_a_folder_beside_a_secret(const fs::path& d) {
+  fs::create_directory(d / "g");
+  for (const fs::directory_entry& e : fs::directory_iterator(d))
+    if (e.path().extension() == ".grm") fs::rename(e.path(), d / "g" / e.path().filename());
+  fs::copy_file(kCorpus / "obj/two_parts.obj", d / "secret.obj");
+}
+
+// prims/, a primitives folder holding a link that leads to itself.
+void link_loop_in_prims(const fs::path& d) {
+  fs::create_directory(d / "prims");
+  fs::create_symlink("loop.obj", d / "prims/loop.obj");
+}
+
 // The file that is not there, the folder given for a file, and the valid
 // references the CLI cases start from.
 const std::vector<std::string> kValidObj = {"obj/two_parts.obj"};
@@ -154,7 +169,7 @@ const std::vector<BadInput> kCases = {
    "garbage.obj:1:8: error: ", "NUL byte",
    {}, [](const fs::path& d) { binary_file(d / "garbage.obj", std::string("\x7f" "ELF\x02\x01\x01\0\0\0\0\0\0\0\0\0\x03\0>\0", 20)); }},
   {"obj_binary_without_nul", "infer", {"noise.obj", "-o", "style.grm"}, kInput,
-   "noise.obj:1:1: error: ", "byte 0xFF is not an OBJ statement",
+   "noise.obj:1:1: error: ", "this line is not an OBJ statement, nor is any line before it",
    {}, [](const fs::path& d) { binary_file(d / "noise.obj", "\xff\xfe\xfd\xfc\x80\x81 \x90\n"); }},
   {"obj_nul_in_text", "infer", {"nul.obj", "-o", "style.grm"}, kInput,
    "nul.obj:2:8: error: ", "NUL byte",
@@ -163,10 +178,19 @@ const std::vector<BadInput> kCases = {
    "latin1.obj:1:6: error: ", "the name is not UTF-8 text (byte 0xEA)",
    {}, [](const fs::path& d) {
      binary_file(d / "latin1.obj", "o fen\xeatre\nv 0 0 0\nv 1 0 0\nv 1 1 1\nf 1 2 3\n"); }},
+  // A name that cannot be a label is refused where it is read (graph/label.hpp).
+  {"obj_name_with_control_character", "infer", {"escape.obj", "-o", "style.grm"}, kInput,
+   "escape.obj:1:1: error: ", "the object name 'wall\\x1B[2J' cannot be a label: it holds a control character (U+001B)",
+   {}, [](const fs::path& d) { binary_file(d / "escape.obj", "o wall\x1b[2J\nv 0 0 0\nv 1 0 0\nv 1 1 1\nf 1 2 3\n"); }},
+  {"obj_name_escaping_a_line_break", "infer", {"name_escaping_a_line_break.obj", "-o", "style.grm"}, kInput,
+   "name_escaping_a_line_break.obj:2:1: error: ",
+   "the object name 'wall%0Af 1 2 3' (read as 'wall\\nf 1 2 3') cannot be a label: it holds a line break",
+   {"obj/name_escaping_a_line_break.obj"}},
   {"obj_utf8_name_works", "infer", {"utf8_name.obj", "-o", "style.grm"}, kOk,
    "", "", {"obj/utf8_name.obj"}, nullptr, nullptr, 0, {"style.grm", "style.prims.obj"}},
   {"obj_not_obj_text", "infer", {"not_obj_text.obj", "-o", "style.grm"}, kInput,
-   "not_obj_text.obj:1:1: error: ", "'Dear' is not an OBJ statement", {"obj/not_obj_text.obj"}},
+   "not_obj_text.obj:1:1: error: ", "this line is not an OBJ statement, nor is any line before it",
+   {"obj/not_obj_text.obj"}, nullptr, nullptr, 0, {}, "Dear"},
   {"obj_wrong_extension", "infer", {"notes.txt", "-o", "style.grm"}, kUsage,
    "notes.txt: error: ", "is not an example file", {"obj/notes.txt"}},
   {"obj_faces_before_vertices", "infer", {"faces_before_vertices.obj", "-o", "style.grm"}, kInput,
@@ -335,6 +359,10 @@ const std::vector<BadInput> kCases = {
    {"gltf/nan_texture_coordinate.gltf"}},
   {"gltf_node_without_name", "infer", {"node_without_name.gltf", "-o", "style.grm"}, kInput,
    "node_without_name.gltf: error: ", "node 1 has a mesh but no name", {"gltf/node_without_name.gltf"}},
+  {"gltf_node_name_with_line_break", "infer", {"node_name_with_line_break.gltf", "-o", "style.grm"}, kInput,
+   "node_name_with_line_break.gltf: error: ",
+   "the name of node 0 'wall\\nf 1 2 3' cannot be a label: it holds a line break",
+   {"gltf/node_name_with_line_break.gltf"}},
   {"gltf_mesh_index_out_of_range", "infer", {"mesh_index_out_of_range.gltf", "-o", "style.grm"}, kInput,
    "mesh_index_out_of_range.gltf: error: ", "node 1 'roof' refers to mesh 7", {"gltf/mesh_index_out_of_range.gltf"}},
   {"gltf_node_cycle", "infer", {"node_cycle.gltf", "-o", "style.grm"}, kInput,
@@ -426,6 +454,15 @@ const std::vector<BadInput> kCases = {
   {"grammar_string_not_utf8", "generate", {"latin1.grm", "-o", "out.obj"}, kInput,
    "latin1.grm:1:9: error: ", "this string is not UTF-8 text",
    {}, [](const fs::path& d) { binary_file(d / "latin1.grm", "p --> I(\"fen\xeatre\")\n"); }},
+  {"grammar_label_with_tab", "generate", {"label_with_tab.grm", "-o", "out.obj"}, kInput,
+   "label_with_tab.grm:1:39: error: ", "the primitive name 'a\\tb' cannot be a label: it holds a tab",
+   {"grammar/label_with_tab.grm"}},
+  {"grammar_label_blank", "generate", {"label_blank.grm", "-o", "out.obj"}, kInput,
+   "label_blank.grm:1:39: error: ", "the primitive name ' ' cannot be a label: it starts with white space",
+   {"grammar/label_blank.grm"}},
+  {"grammar_label_with_nul", "generate", {"nul_label.grm", "-o", "out.obj"}, kInput,
+   "nul_label.grm:1:9: error: ", "the primitive name 'a\\x00b' cannot be a label: it holds a NUL byte",
+   {}, [](const fs::path& d) { binary_file(d / "nul_label.grm", std::string("p --> I(\"a\0b\")\n", 15)); }},
   {"grammar_directive_without_name", "generate", {"directive_without_name.grm", "-o", "out.obj"}, kInput,
    "directive_without_name.grm:1:1: error: ", "'@' must start a directive", {"grammar/directive_without_name.grm"}},
   {"grammar_number_too_large", "generate", {"number_too_large.grm", "-o", "out.obj"}, kInput,
@@ -648,6 +685,49 @@ const std::vector<BadInput> kCases = {
   {"generate_primitives_is_a_fifo", "generate", {"ok.grm", "--primitives", "pipe.obj", "-o", "out.obj"}, kIo,
    "pipe.obj: error: ", "is a FIFO (named pipe), not a regular file", kValidGrammar,
    [](const fs::path& d) { fifo(d / "pipe.obj"); }},
+  // A grammar's @primitives is the grammar's choice: its folder or below only.
+  {"derive_primitives_absolute_path", "generate", {"primitives_absolute_path.grm", "-o", "out.obj"}, kInput,
+   "primitives_absolute_path.grm:1:13: error: ",
+   "@primitives names '/etc/passwd', which is outside the grammar's folder", {"grammar/primitives_absolute_path.grm"},
+   nullptr, nullptr, 0, {}, "root:"},
+  {"derive_primitives_parent_folder", "generate", {"g/primitives_parent_folder.grm", "-o", "out.obj"}, kInput,
+   "g/primitives_parent_folder.grm:1:13: error: ",
+   "@primitives names '../secret.obj', which is outside the grammar's folder\n  hint: a grammar may name primitives "
+   "files in its own folder or below it only", {"grammar/primitives_parent_folder.grm"},
+   grammar_in_a_folder_beside_a_secret},
+  {"derive_primitives_parent_folder_allowed", "generate",
+   {"g/primitives_parent_folder.grm", "--allow-outside-files", "-o", "out.obj"}, kOk, "", "",
+   {"grammar/primitives_parent_folder.grm"}, grammar_in_a_folder_beside_a_secret, nullptr, 0, {"out.obj"}},
+  {"derive_primitives_link_out_of_the_folder", "generate", {"g/with_primitives_file.grm", "-o", "out.obj"}, kInput,
+   "g/with_primitives_file.grm:1:13: error: ", "@primitives names 'prims.obj', which is outside the grammar's folder",
+   {"grammar/with_primitives_file.grm"}, [](const fs::path& d) {
+     grammar_in_a_folder_beside_a_secret(d);
+     fs::create_symlink("../secret.obj", d / "g/prims.obj");
+   }},
+  {"derive_primitives_folder_holds_a_link_out", "generate", {"g/primitives_folder.grm", "-o", "out.obj"}, kInput,
+   "g/prims/tower.obj: error: ", "is a link that leads outside the folder of the grammar that names it",
+   {"grammar/primitives_folder.grm"}, [](const fs::path& d) {
+     grammar_in_a_folder_beside_a_secret(d);
+     fs::create_directory(d / "g/prims");
+     fs::create_symlink("../../secret.obj", d / "g/prims/tower.obj");
+   }},
+  {"derive_primitives_not_obj_is_not_quoted", "generate", {"primitives_not_obj.grm", "-o", "out.obj"}, kInput,
+   "notes.txt:1:1: error: ", "this line is not an OBJ statement", {"grammar/primitives_not_obj.grm"},
+   [](const fs::path& d) { write_text(d / "notes.txt", "hunter2 is the password\n"); }, nullptr, 0, {}, "hunter2"},
+  // A link that leads to itself is refused as a file that cannot be read.
+  {"derive_primitives_symlink_loop", "generate", {"primitives_folder.grm", "-o", "out.obj"}, kIo,
+   "prims/loop.obj: error: ", "cannot read: Too many levels of symbolic links", {"grammar/primitives_folder.grm"},
+   link_loop_in_prims},
+  {"generate_primitives_symlink_loop", "generate", {"ok.grm", "--primitives", "prims", "-o", "out.obj"}, kIo,
+   "prims/loop.obj: error: ", "cannot read: Too many levels of symbolic links", kValidGrammar, link_loop_in_prims},
+  {"infer_primitives_symlink_loop", "infer", {"two_parts.obj", "--primitives", "prims", "-o", "style.grm"}, kIo,
+   "prims/loop.obj: error: ", "cannot read: Too many levels of symbolic links", kValidObj, link_loop_in_prims},
+  {"infer_example_folder_symlink_loop", "infer", {"examples", "-o", "style.grm"}, kIo,
+   "examples/loop.obj: error: ", "cannot read: Too many levels of symbolic links", {}, [](const fs::path& d) {
+     fs::create_directory(d / "examples");
+     fs::copy_file(kCorpus / "obj/two_parts.obj", d / "examples/two_parts.obj");
+     fs::create_symlink("loop.obj", d / "examples/loop.obj");
+   }},
   // Limits: each names the flag that raises it.
   {"limit_repeatN_1e12", "generate", {"repeatN_1e12.grm", "-o", "out.obj"}, kLimit,
    "repeatN_1e12.grm:1:18: error: ", "repeatN asks for 1e+12 tiles", {"grammar/repeatN_1e12.grm"}, nullptr, "out.obj"},

@@ -65,19 +65,6 @@ ExampleLimits z_up() {
   return limits;
 }
 
-TEST(Example, BlenderSuffixesAreStrippedFromLabels) {
-  EXPECT_EQ(strip_numeric_suffix("window.001"), "window");
-  EXPECT_EQ(strip_numeric_suffix("wall.12"), "wall");
-  EXPECT_EQ(strip_numeric_suffix("v1.5"), "v1");
-  EXPECT_EQ(strip_numeric_suffix("wall.001.002"), "wall.001");  // one suffix only
-  EXPECT_EQ(strip_numeric_suffix("roof"), "roof");
-  EXPECT_EQ(strip_numeric_suffix("door.left"), "door.left");
-  EXPECT_EQ(strip_numeric_suffix("door.1a"), "door.1a");
-  EXPECT_EQ(strip_numeric_suffix("door."), "door.");
-  EXPECT_EQ(strip_numeric_suffix(".001"), ".001");  // nothing would be left
-  EXPECT_EQ(strip_numeric_suffix("window_3"), "window_3");
-}
-
 TEST(Example, ObjObjectsArePartsWithBoxesLabelsAndLines) {
   TempFolder dir;
   write_text(dir / "house.obj", "# a wall with two windows\n" + box_obj("wall", {0, 0, 0}, {6, 0.5, 3}) +

@@ -240,6 +240,105 @@ TEST(InferCli, BlenderExportedObjHasItsHeightOnZ) {
   EXPECT_NE(r.err.find("--up"), std::string::npos) << r.err;
 }
 
+// The OBJ objects a file names, sorted: its labels as written.
+std::vector<std::string> object_lines(const std::string& obj) {
+  std::vector<std::string> names;
+  std::istringstream in(obj);
+  for (std::string line; std::getline(in, line);)
+    if (line.starts_with("o ")) names.push_back(line);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// A grammar's labels go round: written into OBJ, glTF and instanced glTF
+// buildings, inferred back, generated again, they are the same labels,
+// however unusual (graph/label.hpp): '#' and a final '\' that OBJ reads
+// otherwise, a ".2" that reads as a copy number, spaces, '%', UTF-8, and
+// one that looks like an instanced node's colour.
+TEST(InferCli, UnusualLabelsGoRoundExamplesGrammarAndBuildings) {
+  TempFolder dir;
+  const std::vector<std::string> labels = {"#x",    "a b",          "a_b", "a#b", "v1.2", "50%", "back\\",
+                                           "fen\xC3\xAAtre", "a colour_ff0000", "window"};
+  std::string grammar = "plot --> split(x){ 1 : colour(red)";
+  for (const std::string& label : labels) {
+    std::string quoted;
+    for (const char c : label) quoted += c == '\\' || c == '"' ? std::string("\\") + c : std::string(1, c);
+    grammar += " | 1 : I(\"" + quoted + "\")";
+  }
+  write_text(dir / "source.grm", grammar + " }\n");
+  std::vector<std::string> expected = labels;
+  expected.push_back("rect");  // colour(red)'s
+  std::sort(expected.begin(), expected.end());
+
+  auto r = run_program("generate", {"source.grm", "--scope", "11", "1", "1", "-q", "-o", "source.obj"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> written = object_lines(read_file(dir / "source.obj"));
+  ASSERT_EQ(written.size(), expected.size());
+  for (const std::string out : {"b.obj", "b.glb", "instanced.glb"}) {
+    SCOPED_TRACE(out);
+    std::vector<std::string> args = {"source.grm", "--scope", "11", "1", "1", "-q", "-o", out};
+    if (out == "instanced.glb") args.push_back("--instancing");
+    r = run_program("generate", args, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string stem = fs::path(out).stem().string() + fs::path(out).extension().string().substr(1);
+    r = run_program("infer", {out, "-o", stem + ".grm", "-q"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Grammar inferred = read_grammar_file((dir / (stem + ".grm")).string());
+    std::vector<std::string> got = inferred.labels();
+    std::sort(got.begin(), got.end());
+    EXPECT_EQ(got, expected);
+    // Generated again from the inferred grammar and its meshes: the same objects.
+    r = run_program("generate", {stem + ".grm", "-o", stem + "_again.obj"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("unknown primitive"), std::string::npos) << r.err;
+    EXPECT_EQ(object_lines(read_file(dir / (stem + "_again.obj"))), written);
+  }
+}
+
+// A glTF node "#wall" from another tool: its mesh goes into the meshes
+// file under a name OBJ keeps ("%23wall", not a comment), and generate
+// finds it there.
+TEST(InferCli, ANodeNamedWithAHashKeepsItsMesh) {
+  TempFolder dir;
+  std::string gltf = read_file(VERN_SOURCE_DIR "/tests/bad_inputs/gltf/two_parts.gltf");
+  gltf.replace(gltf.find("\"wall\""), 6, "\"#wall\"");
+  write_text(dir / "hash.gltf", gltf);
+  auto r = run_program("infer", {"hash.gltf", "-o", "hash.grm"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(read_file(dir / "hash.grm").find("I(\"#wall\")"), std::string::npos) << read_file(dir / "hash.grm");
+  EXPECT_NE(read_file(dir / "hash.prims.obj").find("\no %23wall\n"), std::string::npos);
+  r = run_program("generate", {"hash.grm", "-o", "out.obj"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("unknown primitive"), std::string::npos) << r.err;
+  EXPECT_NE(read_file(dir / "out.obj").find("\no %23wall\n"), std::string::npos);
+}
+
+// generate follows a grammar's @primitives only into the grammar's own
+// folder: infer says so when it writes the meshes elsewhere.
+TEST(InferCli, MeshesOutsideTheGrammarsFolderNeedAllowOutsideFiles) {
+  TempFolder dir;
+  fs::create_directories(dir / "grammars");
+  fs::create_directories(dir / "meshes");
+  auto r = run_program("infer", {kExamples + "garage", "-o", "grammars/garage.grm", "--primitives-out",
+                                 "meshes/garage.prims.obj"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("infer: warning: the grammar names its meshes as '../meshes/garage.prims.obj', outside its "
+                       "folder: generate reads them only with --allow-outside-files"),
+            std::string::npos)
+      << r.err;
+  r = run_program("generate", {"grammars/garage.grm", "-o", "out.obj"}, dir.path());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("@primitives names '../meshes/garage.prims.obj', which is outside the grammar's folder"),
+            std::string::npos)
+      << r.err;
+  r = run_program("generate", {"grammars/garage.grm", "--allow-outside-files", "-o", "out.obj"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  // Beside the grammar (the default), nothing to say.
+  r = run_program("infer", {kExamples + "garage", "-o", "grammars/beside.grm"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
 TEST(InferCli, UsageErrors) {
   auto r = run_program("infer", {kExamples + "garage"});
   EXPECT_EQ(r.exit_code, 2);

@@ -13,6 +13,7 @@
 
 #include "forward/obj_reader.hpp"
 #include "graph/error.hpp"
+#include "graph/label.hpp"
 #include "support/scene_helpers.hpp"
 
 namespace vern {
@@ -122,6 +123,49 @@ TEST(ObjWriter, ReadsBackAsTheSameLabelsAndScopeBounds) {
   // The turned window spans x in [9.5, 10], y in [0, 4].
   expect_near(objects[1].mesh.min_corner(), {9.5, 0, 0});
   expect_near(objects[1].mesh.max_corner(), {10, 4, 2});
+}
+
+// Labels OBJ cannot hold as they are ('#' starts a comment, a final '\'
+// continues the line, ".2" reads as a copy number) come back the same from
+// the reader (graph/label.hpp), and each label has a material of its own.
+TEST(ObjWriter, EveryLabelReadsBackAsItselfWithAMaterialOfItsOwn) {
+  Scene scene;
+  scene.labels = {"#x", "a b", "a_b", "a#b", "v1.2", "50%", "back\\", "colour_ff0000", "label_colour_ff0000",
+                  "fen\xC3\xAAtre", "fen__tre", "window"};
+  Variant v;
+  v.name = "variant_000";
+  for (std::size_t i = 0; i < scene.labels.size(); ++i)
+    v.terminals.push_back(terminal(static_cast<LabelId>(i), {2.0 * static_cast<double>(i), 0, 0}, {1, 1, 1}));
+  Terminal red = terminal(0, {-2, 0, 0}, {1, 1, 1});
+  red.coloured = true;
+  red.colour = {1, 0, 0};
+  v.terminals.push_back(red);
+  scene.variants.push_back(v);
+
+  const std::string text = obj_text(scene, PrimitiveLibrary::builtin(), "x.mtl");
+  const auto objects = read_back(text);
+  ASSERT_EQ(objects.size(), scene.labels.size() + 1) << text;
+  for (std::size_t i = 0; i < scene.labels.size(); ++i)
+    EXPECT_EQ(label_of_part_name(objects[i].name), scene.labels[i]) << objects[i].name;
+
+  std::vector<std::string> materials;
+  for (const std::string& line : lines_of(text))
+    if (line.starts_with("usemtl ")) materials.push_back(line.substr(7));
+  ASSERT_EQ(materials.size(), scene.labels.size() + 1);
+  EXPECT_EQ(materials[1], "a%20b");
+  EXPECT_EQ(materials[2], "a_b");
+  EXPECT_EQ(materials[3], "a%23b");
+  EXPECT_EQ(materials[7], "label_colour_ff0000");
+  EXPECT_EQ(materials[8], "label_label_colour_ff0000");
+  EXPECT_EQ(materials[11], "window");
+  EXPECT_EQ(materials.back(), "colour_ff0000");
+  std::sort(materials.begin(), materials.end());
+  EXPECT_EQ(std::adjacent_find(materials.begin(), materials.end()), materials.end()) << "two labels share a material";
+  for (const std::string& m : materials) EXPECT_EQ(m.find_first_of(" #"), std::string::npos) << m;
+  const std::string mtl = mtl_text(scene);
+  std::size_t defined = 0;
+  for (const std::string& line : lines_of(mtl)) defined += line.starts_with("newmtl ") ? 1 : 0;
+  EXPECT_EQ(defined, materials.size()) << mtl;
 }
 
 // Every face's normal is a unit vector perpendicular to the face and on the

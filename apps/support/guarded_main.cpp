@@ -1,5 +1,6 @@
 #include "support/guarded_main.hpp"
 
+#include <filesystem>
 #include <iostream>
 #include <new>
 
@@ -7,6 +8,7 @@
 #include "graph/freed_memory.hpp"
 #include "graph/huge_pages.hpp"
 #include "graph/interrupt_cleanup.hpp"
+#include "graph/label.hpp"
 #include "support/command_stack.hpp"
 
 namespace vern {
@@ -23,6 +25,14 @@ int guarded_main(const char* program, int (*run)(int, char**), int argc, char** 
   } catch (const Error& e) {
     std::cerr << e.what() << "\n";
     return exit_code(e.kind());
+  } catch (const std::filesystem::filesystem_error& e) {
+    // Every file-system call on a user's path takes an error code and says
+    // what went wrong; one that slipped through is still the path's fault,
+    // not a bug of the run: named, as an I/O error.
+    const std::string path = e.path1().empty() ? std::string(program) : shown_name(e.path1().string());
+    std::cerr << path << ": error: cannot read or write: " << e.code().message()
+              << "\n  hint: check the path (a link that leads to itself, a folder that cannot be listed)\n";
+    return exit_code(ErrorKind::Io);
   } catch (const std::bad_alloc&) {
     std::cerr << program << ": error: out of memory\n  hint: ask for less (fewer buildings, lower limits)\n";
     return exit_code(ErrorKind::Limit);

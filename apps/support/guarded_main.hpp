@@ -8,7 +8,8 @@ namespace vern {
 
 // Runs run(argc, argv) and returns its exit code; a vern::Error prints its
 // message and returns its kind's code, running out of memory is a limit,
-// anything else an internal error.
+// a file-system error an I/O error naming its path, anything else an
+// internal error.
 int guarded_main(const char* program, int (*run)(int, char**), int argc, char** argv);
 
 }  // namespace vern

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "graph/label.hpp"
+
 namespace vern::fuzz {
 
 namespace {
@@ -44,6 +46,9 @@ std::string example_invariants(const Example& example) {
   for (const LabelledBox& b : example.boxes) {
     const std::string who = "box " + describe_object(b) + ": ";
     if (b.label.empty() || b.object.empty()) return who + "no label or object name";
+    // A label that every writer can write, and that reads back the same (graph/label.hpp).
+    if (const auto fault = label_fault(b.label)) return who + "a label that " + *fault + " was accepted";
+    if (label_of_part_name(name_in_file(b.label)) != b.label) return who + "a label that does not read back the same";
     if (!finite(b.min) || !finite(b.max)) return who + "bounds that are not finite";
     if (b.min.x > b.max.x || b.min.y > b.max.y || b.min.z > b.max.z) return who + "min above max";
     const glm::dvec3 size = b.max - b.min;

@@ -43,10 +43,14 @@ class ScratchFolder {
  public:
   ScratchFolder() {
     static std::atomic<unsigned> counter{0};
-    const fs::path base = fs::temp_directory_path();
+    std::error_code ec;
+    const fs::path base = fs::temp_directory_path(ec);  // TMPDIR, when it names a folder
+    if (ec) {
+      throw Error(ErrorKind::Io, "error: cannot find a folder for temporary files: " + ec.message() +
+                                     "\n  hint: set TMPDIR to a folder that exists, or unset it");
+    }
     for (unsigned attempt = 0;; ++attempt) {
       path_ = base / ("vern-precision-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-      std::error_code ec;
       if (fs::create_directory(path_, ec)) return;
       if (attempt > 100) throw Error(ErrorKind::Io, path_.string() + ": error: cannot create a scratch folder");
     }

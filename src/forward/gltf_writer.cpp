@@ -16,6 +16,7 @@
 #include "forward/up_axis.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"
+#include "graph/label.hpp"
 #include "graph/spill_file.hpp"
 
 // The document is written by hand (json_text.hpp) rather than through
@@ -250,6 +251,13 @@ std::array<double, 16> y_up_root_matrix(const glm::dvec3& offset) {
   return m;
 }
 
+std::vector<std::string> names_in_file(const std::vector<std::string>& labels, bool one_word) {
+  std::vector<std::string> names;
+  names.reserve(labels.size());
+  for (const std::string& label : labels) names.push_back(name_in_file(label, one_word));
+  return names;
+}
+
 // One glTF mesh: a primitive's geometry with one material.
 struct MeshUse {
   std::string name;
@@ -282,6 +290,7 @@ struct GltfStream::State {
   State(std::vector<std::string> labels_in, const PrimitiveLibrary& library_in, GltfOptions options_in,
         const std::optional<std::filesystem::path>& folder, const std::string& owner)
       : labels(std::move(labels_in)),
+        names(names_in_file(labels, options_in.instancing)),
         library(library_in),
         options(options_in),
         materials(labels.size()),
@@ -296,6 +305,9 @@ struct GltfStream::State {
   static constexpr std::size_t kTransformPiece = 1 << 18;  // three of them
 
   std::vector<std::string> labels;
+  // By label: how a node names it (graph/label.hpp). An instanced node's
+  // name is its mesh's, "label colour_ff0000", whose first word is the label.
+  std::vector<std::string> names;
   const PrimitiveLibrary& library;
   GltfOptions options;
   MaterialTable materials;
@@ -321,15 +333,15 @@ struct GltfStream::State {
     const std::uint64_t key = std::uint64_t{t.label} << 32 | material;
     auto [it, fresh] = mesh_of.try_emplace(key, static_cast<int>(meshes.size()));
     if (fresh) {
-      const std::string& label = labels[t.label];
+      const std::string& name = names[t.label];
       const Mesh*& primitive = primitive_of_label[t.label];
       if (primitive == nullptr) {
-        primitive = library.find(label);
+        primitive = library.find(labels[t.label]);
         if (primitive == nullptr) primitive = &library.box();
       }
       auto [g, new_geometry] = geometry_of.try_emplace(primitive, static_cast<int>(geometries.size()));
       if (new_geometry) geometries.push_back(add_geometry(*primitive, buffer));
-      meshes.push_back({t.coloured ? label + " " + materials.materials()[material].name : label, g->second, material});
+      meshes.push_back({t.coloured ? name + " " + materials.materials()[material].name : name, g->second, material});
     }
     return it->second;
   }
@@ -346,7 +358,7 @@ struct GltfStream::State {
     nodes.close_object();
     for (const Terminal& t : variant.terminals) {
       const int mesh = mesh_for(t);
-      nodes.open_object().field("name", labels[t.label]).field("mesh", mesh);
+      nodes.open_object().field("name", names[t.label]).field("mesh", mesh);
       nodes.key("matrix").numbers(scope_matrix(t.scope)).close_object();
       if (nodes.text().size() >= kNodesPiece) drain_nodes();
     }

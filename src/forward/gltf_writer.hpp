@@ -6,18 +6,21 @@
 // has one root per variant, named after it, whose matrix moves it by its
 // offset and turns the grammar's z-up frame to glTF's y-up (up_axis.hpp).
 // Beneath it, one of two layouts:
-//   - plain (default): one child per terminal, named by its label, whose
-//     matrix maps the unit box onto the terminal's scope (columns
-//     frame[i] * size[i], then the origin). Every viewer reads it, and
-//     `infer` reads it back as labelled examples.
-//   - instancing: one child per mesh the variant uses, carrying all its
-//     terminals as EXT_mesh_gpu_instancing translations, rotations and
-//     scales (floats). Files are several times smaller and faster to write
-//     and to draw; the extension is marked required, so viewers without it
-//     refuse the file rather than show one stray part per mesh. It cannot
-//     be optional: a fallback of plain nodes would be drawn twice by the
-//     viewers that read the extension, and would cost the plain layout's
-//     size on top (city, 10 buildings: 0.88 MB instanced, 3.04 MB plain).
+//   - plain (default): one child per terminal, named by its label (as
+//     graph/label.hpp writes a label into a name), whose matrix maps the
+//     unit box onto the terminal's scope (columns frame[i] * size[i], then
+//     the origin). Every viewer reads it, and `infer` reads it back as
+//     labelled examples.
+//   - instancing: one child per mesh the variant uses, named as the mesh
+//     ("label", or "label colour_ff0000": the label one word, its spaces
+//     written %20), carrying all its terminals as EXT_mesh_gpu_instancing
+//     translations, rotations and scales (floats). Files are several times
+//     smaller and faster to write and to draw; the extension is marked
+//     required, so viewers without it refuse the file rather than show one
+//     stray part per mesh. It cannot be optional: a fallback of plain
+//     nodes would be drawn twice by the viewers that read the extension,
+//     and would cost the plain layout's size on top (city, 10 buildings:
+//     0.88 MB instanced, 3.04 MB plain).
 // Same scene, same bytes, whether given whole or variant by variant
 // (GltfStream: what `generate` does, so that its memory does not grow with
 // the number of buildings).

@@ -16,6 +16,7 @@
 #include "forward/obj_plain_line.hpp"
 #include "graph/error.hpp"
 #include "graph/input_file.hpp"
+#include "graph/label.hpp"
 #include "graph/utf8.hpp"
 
 namespace vern {
@@ -121,18 +122,11 @@ class Reader {
       ++groups_seen_;
     } else if (!is_ignored(key)) {
       if (!recognised_) {
-        // Binary data is named by its first byte, not echoed to the terminal.
-        std::string shown = "'" + std::string(key.substr(0, 40)) + "'";
-        for (const char c : key.substr(0, 40)) {
-          const auto u = static_cast<unsigned char>(c);
-          if (u < 0x20 || u >= 0x7F) {
-            char byte[24];
-            std::snprintf(byte, sizeof byte, "byte 0x%02X", static_cast<unsigned char>(key[0]));
-            shown = byte;
-            break;
-          }
-        }
-        error(tokens_[0].column, shown + " is not an OBJ statement: this does not look like an OBJ file",
+        // Not quoted: a file that is not OBJ may be anything (a grammar's
+        // @primitives may name a file of secrets), and binary data would
+        // reach the terminal.
+        error(tokens_[0].column,
+              "this line is not an OBJ statement, nor is any line before it: this does not look like an OBJ file",
               "give a Wavefront OBJ text file: its lines start with v, vt, vn, f, o, g or #");
       }
       return;  // an extension some exporter added: nothing we need
@@ -410,7 +404,7 @@ class Reader {
   [[noreturn, gnu::cold, gnu::noinline]] void too_many_faces() const {
     const Segment& part = any_object_ ? object_ : groups_.back();
     fail(ErrorKind::Limit, source_, {line_, 1},
-         (part.name.empty() ? std::string("an unnamed object") : "'" + part.name + "'") +
+         (part.name.empty() ? std::string("an unnamed object") : "'" + shown_name(part.name) + "'") +
              (part.line != 0 ? " (line " + std::to_string(part.line) + ")" : "") + " has more than " +
              std::to_string(limits_.max_faces) + " faces: reading stopped here",
          limits_.too_many_faces_hint.empty() ? "simplify the mesh" : limits_.too_many_faces_hint);

@@ -37,7 +37,8 @@ namespace vern {
 
 struct ObjObject {
   // As written after `o`/`g` (trimmed); empty for faces that come before
-  // any `o`/`g` statement: the caller decides what those are.
+  // any `o`/`g` statement: the caller decides what those are. The label
+  // the name carries is graph/label.hpp's to say (read_label).
   std::string name;
   // The line of the `o`/`g` statement, or of the first face of an unnamed
   // object: for messages that point at the object.

@@ -6,6 +6,7 @@
 #include "forward/palette.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/error.hpp"
+#include "graph/label.hpp"
 #include "graph/number_format.hpp"
 
 namespace vern {
@@ -77,9 +78,11 @@ ObjStream::ObjStream(std::vector<std::string> labels, const PrimitiveLibrary& li
     : labels_(std::move(labels)), materials_(labels_.size()), write_(std::move(write)), up_(up) {
   // The mesh each label inserts: the library's, or its box for unknown names.
   meshes_.resize(labels_.size());
+  names_.reserve(labels_.size());
   for (std::size_t i = 0; i < meshes_.size(); ++i) {
     const Mesh* m = library.find(labels_[i]);
     meshes_[i] = m != nullptr ? m : &library.box();
+    names_.push_back(name_in_file(labels_[i]));
   }
   out_ += "# Written by Vernacular: one object per terminal, named by its label.\n";
   out_ += "# up ";
@@ -95,7 +98,7 @@ void ObjStream::add(const Variant& variant) {
     const std::uint32_t material = materials_.intern(t, labels_);  // also checks the label
     const Mesh& mesh = *meshes_[t.label];
     out += "o ";
-    out += labels_[t.label];
+    out += names_[t.label];
     out += "\nusemtl ";
     out += materials_.materials()[material].name;
     out += '\n';

@@ -1,7 +1,9 @@
 // Writing derived buildings as labelled OBJ (+ MTL).
 //
 // One `o <label>` object per terminal, so the file is exactly the labelled
-// input that inference reads back. Each terminal's primitive mesh is placed
+// input that inference reads back (a label OBJ cannot hold as it is, such
+// as "#x", is written as graph/label.hpp says, and reads back the same).
+// Each terminal's primitive mesh is placed
 // by its scope (to_world) and moved by its variant's offset; indices are
 // absolute and 1-based. A `# <variant name>` comment starts each variant.
 // Materials: one per distinct colour for coloured terminals, one per label
@@ -46,6 +48,7 @@ class ObjStream {
  private:
   std::vector<std::string> labels_;
   std::vector<const Mesh*> meshes_;  // by label
+  std::vector<std::string> names_;   // by label: its `o` name (graph/label.hpp)
   MaterialTable materials_;
   std::function<void(std::string_view)> write_;
   std::string out_;

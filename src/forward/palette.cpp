@@ -7,6 +7,7 @@
 #include <map>
 
 #include "graph/error.hpp"
+#include "graph/label.hpp"
 
 namespace vern {
 
@@ -89,16 +90,14 @@ Material terminal_material(const Terminal& t, std::string_view label) {
     m.colour = rgb(r, g, b);
     return m;
   }
-  m.name.reserve(label.size());
-  for (char c : label) {
-    const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-                      c == '-' || c == '.';
-    m.name += safe ? c : '_';
-  }
-  // Coloured by the name written, so labels that read the same look the same.
+  // One word per label, and different labels never share one (graph/label.hpp).
+  m.name = label_as_word(label);
   m.colour = label_colour(m.name);
-  // Keep label materials apart from colour materials and never empty.
-  if (m.name.empty() || m.name.starts_with("colour_")) m.name = "label_" + m.name;
+  // Kept apart from the colour materials: "colour_..." and every
+  // "label_..._colour_..." gain one more "label_", the other names none.
+  std::string_view rest = m.name;
+  while (rest.starts_with("label_")) rest.remove_prefix(6);
+  if (rest.starts_with("colour_")) m.name = "label_" + m.name;
   return m;
 }
 

@@ -21,7 +21,7 @@
 namespace vern {
 
 struct Material {
-  std::string name;  // safe in MTL and glTF: letters, digits, '_', '-', '.'
+  std::string name;  // one word, safe in MTL and glTF (graph/label.hpp's label_as_word)
   Rgb colour;        // components in [0, 1], quantised to 8 bits
   friend bool operator==(const Material&, const Material&) = default;
 };
@@ -30,7 +30,8 @@ struct Material {
 Rgb label_colour(std::string_view label);
 
 // The material of a terminal: "colour_ff8000" for a coloured one, the
-// label (sanitised) for an uncoloured one.
+// label as one word for an uncoloured one: a material per label, different
+// labels different materials.
 Material terminal_material(const Terminal& t, std::string_view label);
 
 // A colour's components as doubles that print as short decimals: each is
@@ -58,7 +59,7 @@ class MaterialTable {
 
  private:
   std::vector<Material> materials_;
-  std::map<std::string, std::uint32_t, std::less<>> by_name_;  // labels may sanitise alike
+  std::map<std::string, std::uint32_t, std::less<>> by_name_;  // each name once
   std::vector<std::uint32_t> by_label_;                         // uncoloured terminals
   std::unordered_map<std::uint32_t, std::uint32_t> by_colour_;  // 0xrrggbb -> index
 };

@@ -12,6 +12,9 @@
 #include "forward/builtin_primitives.hpp"
 #include "forward/obj_reader.hpp"
 #include "graph/error.hpp"
+#include "graph/folder_confinement.hpp"
+#include "graph/input_file.hpp"
+#include "graph/label.hpp"
 
 namespace vern {
 
@@ -159,18 +162,29 @@ PrimitiveLibrary PrimitiveLibrary::builtin() {
   return parsed;
 }
 
-void PrimitiveLibrary::load(const std::filesystem::path& path) {
+void PrimitiveLibrary::load(const std::filesystem::path& path, const std::optional<std::filesystem::path>& within) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::exists(path, ec)) {
-    fail(ErrorKind::Io, path.string(), {}, "no such file or folder",
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) {
+    // Missing, or it cannot be told: a link that leads to itself, a folder
+    // on the way that cannot be entered.
+    fail(ErrorKind::Io, path.string(), {},
+         status.type() == fs::file_type::not_found || !ec ? "no such file or folder" : "cannot read: " + ec.message(),
          "give an .obj file or a folder of .obj files, one per primitive");
   }
-  if (!fs::is_directory(path, ec)) {
+  if (!fs::is_directory(status)) {
     std::map<std::string, Mesh> by_name;  // merges objects sharing a name
     std::vector<std::string> order;
     for (ObjObject& o : read_obj_file(path)) {
-      std::string name = o.name.empty() ? path.stem().string() : o.name;
+      std::string name;
+      if (o.name.empty()) {
+        name = path.stem().string();
+        require_label(name, path.string(), {o.line, 1}, "the file's name '" + shown_name(name) + "', which names "
+                                                            "the faces before its first object,");
+      } else {
+        name = read_label(o.name, NameOf::Primitive, path.string(), {o.line, 1}, "the object name");
+      }
       auto [it, fresh] = by_name.try_emplace(name);
       if (fresh) order.push_back(name);
       append_mesh(it->second, o.mesh);
@@ -183,26 +197,26 @@ void PrimitiveLibrary::load(const std::filesystem::path& path) {
     return;
   }
 
-  std::vector<fs::path> files;
-  for (fs::directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec)) {
-    if (has_obj_extension(it->path()) && it->is_regular_file()) files.push_back(it->path());
-  }
-  if (ec) {
-    fail(ErrorKind::Io, path.string(), {}, "cannot list the folder: " + ec.message(),
-         "check the folder's permissions");
-  }
+  const std::vector<fs::path> files = regular_files_in(path, has_obj_extension, "an .obj file");
   if (files.empty()) {
     fail(ErrorKind::Input, path.string(), {}, "the folder holds no .obj files",
          "put one .obj file per primitive in it, named after the primitive");
   }
-  std::sort(files.begin(), files.end());  // the listing order is the file system's
   for (const fs::path& file : files) {
+    // The folder is in bounds; a link in it may still lead out.
+    if (within && !leads_into_folder(file, *within)) {
+      fail(ErrorKind::Input, file.string(), {}, "is a link that leads outside the folder of the grammar that names it",
+           "a grammar's @primitives may name files in its own folder or below it only: copy the file there, or "
+           "pass --allow-outside-files if you trust this grammar");
+    }
+    const std::string name = file.stem().string();
+    require_label(name, file.string(), {}, "the file's name '" + shown_name(name) + "'");
     Mesh mesh = merged(read_obj_file(file));
     if (mesh.face_sizes.empty()) {
       fail(ErrorKind::Input, file.string(), {}, "the file has no faces, so it defines no primitive",
            "export the primitive's mesh with its faces");
     }
-    add(file.stem().string(), std::move(mesh));
+    add(name, std::move(mesh));
   }
 }
 

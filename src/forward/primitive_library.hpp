@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,12 +30,16 @@ class PrimitiveLibrary {
   // Adds the meshes of an OBJ file or a folder of them:
   //   folder: each *.obj in it is one primitive named by the file's stem,
   //           all its objects together;
-  //   file:   each object is one primitive named by the object's name
-  //           (objects sharing a name are merged; faces before any `o`
-  //           are named by the file's stem).
+  //   file:   each object is one primitive named by the label its name
+  //           carries (graph/label.hpp; objects sharing a name are merged;
+  //           faces before any `o` are named by the file's stem).
+  // within: the folder every file read must lie in, links followed (a
+  // grammar's @primitives: the caller checks `path`, this the files a
+  // folder holds).
   // Throws vern::Error: Io when the path is missing or unreadable, Input for
-  // a malformed OBJ or a folder without .obj files.
-  void load(const std::filesystem::path& path);
+  // a malformed OBJ, a name that is not a label, a folder without .obj files
+  // or a file outside `within`.
+  void load(const std::filesystem::path& path, const std::optional<std::filesystem::path>& within = std::nullopt);
 
   // Adds (or replaces) one primitive; normalises it as described above.
   // Throws vern::Error (Input) when the mesh has no faces.

@@ -52,6 +52,7 @@ void Grammar::copy_headers(const Grammar& from) {
   start_written = from.start_written;
   scope = from.scope;
   primitives = from.primitives;
+  primitives_loc = from.primitives_loc;
   constants = from.constants;
   rules = from.rules;
 }

@@ -42,8 +42,10 @@ class Grammar {
   bool start_written = false;
   // @scope x, y, z: the default start-scope size (empty Exprs: not given).
   std::array<Expr, 3> scope;
-  // @primitives "path": as written, relative to the grammar file.
+  // @primitives "path": as written, relative to the grammar file, and where
+  // (for messages about the file it names).
   std::string primitives;
+  SourceLoc primitives_loc;
 
   std::vector<Constant> constants;
   std::vector<Rule> rules;

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -64,6 +65,27 @@ std::optional<ReadRefusal> read_regular_file(const std::filesystem::path& path, 
   }
   out.resize(done);
   return std::nullopt;
+}
+
+std::vector<std::filesystem::path> regular_files_in(const std::filesystem::path& folder,
+                                                    const std::function<bool(const std::filesystem::path&)>& wanted,
+                                                    const std::string& what) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    if (!wanted(it->path())) continue;
+    std::error_code entry_error;
+    const bool regular = it->is_regular_file(entry_error);
+    if (entry_error) {
+      fail(ErrorKind::Io, it->path().string(), {}, "cannot read: " + entry_error.message(),
+           "remove it from the folder, or make it " + what + " (a link that leads to itself cannot be read)");
+    }
+    if (regular) files.push_back(it->path());
+  }
+  if (ec) fail(ErrorKind::Io, folder.string(), {}, "cannot list the folder: " + ec.message(), "check its permissions");
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 std::string mebibytes(std::uint64_t bytes) {

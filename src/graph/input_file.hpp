@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,15 @@ struct ReadRefusal {
 // says how large the file is.
 std::optional<ReadRefusal> read_regular_file(const std::filesystem::path& path, std::uint64_t max_bytes,
                                              std::vector<unsigned char>& out);
+
+// The regular files directly in `folder` (links followed) whose path
+// `wanted` accepts, sorted by name (the listing order is the file
+// system's). Throws vern::Error (Io) naming the folder when it cannot be
+// listed, or an entry `wanted` accepts that cannot be looked at (a link
+// that leads to itself), saying `what` it should be ("an .obj file").
+std::vector<std::filesystem::path> regular_files_in(const std::filesystem::path& folder,
+                                                    const std::function<bool(const std::filesystem::path&)>& wanted,
+                                                    const std::string& what);
 
 // "256 MiB": how messages and hints state a byte limit.
 std::string mebibytes(std::uint64_t bytes);

@@ -37,6 +37,7 @@
 #include <sstream>
 
 #include "graph/input_file.hpp"
+#include "graph/label.hpp"
 #include "graph/lexer.hpp"
 #include "graph/name_index.hpp"
 #include "graph/reserved_words.hpp"
@@ -234,8 +235,10 @@ class Parser {
         g_.scope[i] = expression();
       }
     } else if (d.value == "primitives") {
-      g_.primitives =
-          expect(TokenKind::String, "after @primitives (a quoted path)", "write @primitives \"style.prims.obj\"").value;
+      const Token& path =
+          expect(TokenKind::String, "after @primitives (a quoted path)", "write @primitives \"style.prims.obj\"");
+      g_.primitives = path.value;
+      g_.primitives_loc = path.loc;
     } else {
       error(d.loc, "unknown directive '@" + d.value + "'", "directives are @start, @scope and @primitives");
     }
@@ -446,9 +449,10 @@ class Parser {
       if (name.kind == TokenKind::Identifier)
         label = std::string(name.text);
       else if (name.kind == TokenKind::String && !name.value.empty())
-        label = name.value;
+        label = name.value;  // checked below: a label is what every file can hold (graph/label.hpp)
       else
         error(name.loc, "expected a primitive name in I(...), found " + describe(name), "for example I(rect)");
+      require_label(label, source_, name.loc, "the primitive name '" + shown_name(label) + "'");
       expect(TokenKind::RParen, "after the primitive name", "write I(name), for example I(rect)");
       return add(Primitive{g_.label_id(label)}, loc);
     }

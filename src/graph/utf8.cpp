@@ -40,4 +40,14 @@ std::size_t invalid_utf8_offset(std::string_view text) {
   return std::string_view::npos;
 }
 
+char32_t next_code_point(std::string_view text, std::size_t& at) {
+  const auto lead = static_cast<unsigned char>(text[at++]);
+  if (lead < 0x80) return lead;
+  const std::size_t more = lead >= 0xF0 ? 3 : lead >= 0xE0 ? 2 : 1;
+  char32_t c = lead & (0x3Fu >> more);
+  for (std::size_t k = 0; k < more && at < text.size(); ++k)
+    c = (c << 6) | (static_cast<unsigned char>(text[at++]) & 0x3Fu);
+  return c;
+}
+
 }  // namespace vern

@@ -16,4 +16,8 @@ namespace vern {
 // not well-formed), or npos when the whole text is UTF-8.
 std::size_t invalid_utf8_offset(std::string_view text);
 
+// The code point that starts at text[at], in text that is UTF-8 (checked
+// above); `at` moves past it.
+char32_t next_code_point(std::string_view text, std::size_t& at);
+
 }  // namespace vern

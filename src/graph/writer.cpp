@@ -8,6 +8,7 @@
 #include <string_view>
 #include <unordered_set>
 
+#include "graph/label.hpp"
 #include "graph/number_format.hpp"
 #include "graph/overload.hpp"
 
@@ -364,7 +365,9 @@ class OpWriter {
             [&](const Call& c) { out.text(call(c)); },
             [&](const Primitive& p) {
               const std::string& name = g_.label(p.label);
-              if (name.empty()) cannot_write("a primitive with no name");
+              // Every reader refuses other labels, so none reaches here.
+              if (const auto fault = label_fault(name))
+                cannot_write("a primitive named '" + shown_name(name) + "', which cannot be a label: it " + *fault);
               out.text("I(" + (is_identifier(name) ? name : quoted(name)) + ")");
             },
             [&](const Nil&) { out.text("nil"); },

@@ -23,6 +23,7 @@
 #include "graph/checked_size.hpp"
 #include "graph/error.hpp"
 #include "graph/input_file.hpp"
+#include "graph/label.hpp"
 #include "graph/number_format.hpp"
 #include "graph/out_of_memory.hpp"
 #include "inverse/gltf_files.hpp"
@@ -73,32 +74,33 @@ class PartAdder {
  public:
   PartAdder(Example& example, const ExampleLimits& limits) : example_(example), limits_(limits) {}
 
-  // `object`: how messages name the part (default: its name). `whole`:
-  // the mesh is known to be one loose piece (a glTF mesh whole in its own
-  // coordinates, LocalMesh), so there are no pieces to look for.
-  void add(const std::string& name, std::uint32_t line, const Mesh& mesh, const std::string& object = {},
+  // `label`: the part's (graph/label.hpp); `object`: how messages name the
+  // part (its name in the file). `whole`: the mesh is known to be one loose
+  // piece (a glTF mesh whole in its own coordinates, LocalMesh), so there
+  // are no pieces to look for.
+  void add(const std::string& label, std::uint32_t line, const Mesh& mesh, const std::string& object,
            bool whole = false) {
-    const std::string& who = object.empty() ? name : object;
     const std::vector<Mesh> pieces = whole ? std::vector<Mesh>{} : loose_pieces(mesh);
     if (!pieces.empty() && pieces_apart(pieces, default_tolerance(mesh.min_corner(), mesh.max_corner()))) {
       for (std::size_t k = 0; k < pieces.size(); ++k) {
-        add_one(name, line, pieces[k],
-                who + " (loose part " + std::to_string(k + 1) + " of " + std::to_string(pieces.size()) + ")");
+        add_one(label, line, pieces[k],
+                object + " (loose part " + std::to_string(k + 1) + " of " + std::to_string(pieces.size()) + ")");
       }
     } else {
-      add_one(name, line, mesh, who).loose_pieces = static_cast<std::uint32_t>(std::max<std::size_t>(1, pieces.size()));
+      add_one(label, line, mesh, object).loose_pieces =
+          static_cast<std::uint32_t>(std::max<std::size_t>(1, pieces.size()));
     }
   }
 
  private:
-  LabelledBox& add_one(const std::string& name, std::uint32_t line, const Mesh& mesh, const std::string& object) {
+  LabelledBox& add_one(const std::string& label, std::uint32_t line, const Mesh& mesh, const std::string& object) {
     if (example_.boxes.size() >= limits_.max_parts) {
       fail(ErrorKind::Limit, example_.source, {line, line != 0 ? 1u : 0u},
            "more than " + std::to_string(limits_.max_parts) + " labelled parts: reading stopped at '" + object + "'",
            too_many_parts_hint(limits_));
     }
     LabelledBox b;
-    b.label = strip_numeric_suffix(name);
+    b.label = label;
     b.min = mesh.min_corner();
     b.max = mesh.max_corner();
     b.object = object;
@@ -130,7 +132,8 @@ Example load_obj_example(const fs::path& path, const ExampleLimits& limits, bool
     if (o.name.empty()) {
       if (!unnamed) unnamed = o.line;
     } else if (!unnamed) {
-      adder.add(o.name, o.line, o.mesh);
+      adder.add(read_label(o.name, NameOf::Part, ex.source, {o.line, 1}, "the object name"), o.line, o.mesh,
+                shown_name(o.name));
     }
   }, read_ahead);
   if (unnamed) {
@@ -162,7 +165,7 @@ struct PartName {
   std::optional<std::size_t> instance = {};
 
   std::string text() const {
-    std::string text = "node " + std::to_string(node) + (name.empty() ? "" : " '" + name + "'");
+    std::string text = "node " + std::to_string(node) + (name.empty() ? "" : " '" + shown_name(name) + "'");
     if (instance) text += " instance " + std::to_string(*instance);
     return text;
   }
@@ -768,10 +771,11 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     }
     // An instanced node is one part per instance. Its name is the mesh's,
     // "label" or "label colour_xxxxxx" (gltf_writer.hpp): the label is the
-    // first word.
+    // first word (written with its spaces as %20).
     const auto instances = instance_matrices(model, node, ex.source, who, limits, ex.boxes.size());
     const std::size_t parts = instances ? instances->size() : 1;
-    const std::string name = instances ? node.name.substr(0, node.name.find(' ')) : node.name;
+    const std::string label = read_label(instances ? node.name.substr(0, node.name.find(' ')) : node.name,
+                                         NameOf::Part, ex.source, {}, "the name of node " + std::to_string(index));
     for (std::size_t i = 0; i < parts; ++i) {
       const PartName part{index, node.name, instances ? std::optional<std::size_t>(i) : std::nullopt};
       if (ex.boxes.size() >= limits.max_parts) {
@@ -791,8 +795,8 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
         fail(ErrorKind::Input, ex.source, {}, part.text() + " has no triangles: its mesh holds only points or lines",
              "export the part as a surface (triangles), or leave it out");
       }
-      const std::string object = instances ? node.name + " (instance " + std::to_string(i) + ")" : std::string();
-      adder.add(name, 0, mesh, object, whole);
+      const std::string object = shown_name(node.name) + (instances ? " (instance " + std::to_string(i) + ")" : "");
+      adder.add(label, 0, mesh, object, whole);
     }
   }
   if (ex.boxes.empty()) {
@@ -803,14 +807,6 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
 }
 
 }  // namespace
-
-std::string strip_numeric_suffix(std::string_view name) {
-  const std::size_t dot = name.rfind('.');
-  if (dot == std::string_view::npos || dot == 0 || dot + 1 == name.size()) return std::string(name);
-  for (std::size_t i = dot + 1; i < name.size(); ++i)
-    if (name[i] < '0' || name[i] > '9') return std::string(name);
-  return std::string(name.substr(0, dot));
-}
 
 void update_bounds(Example& example) {
   if (example.boxes.empty()) {
@@ -920,8 +916,9 @@ void refuse_points(const Example& ex, double given_tolerance) {
 
 Example load_example(const fs::path& path, const ExampleLimits& limits, unsigned threads) {
   std::error_code ec;
-  if (!fs::exists(path, ec)) {
-    fail(ErrorKind::Io, path.string(), {}, "no such file", "check the path of the example");
+  if (!fs::exists(path, ec)) {  // or it cannot be told: a link that leads to itself
+    fail(ErrorKind::Io, path.string(), {}, ec ? "cannot read: " + ec.message() : "no such file",
+         "check the path of the example");
   }
   if (fs::is_directory(path, ec)) {
     fail(ErrorKind::Io, path.string(), {}, "is a folder, not an example file",
@@ -951,23 +948,20 @@ std::vector<fs::path> example_files(const std::vector<std::string>& args) {
     const fs::path path(arg);
     std::error_code ec;
     if (!fs::exists(path, ec)) {
-      fail(ErrorKind::Io, arg, {}, "no such file or folder", "name example files (.obj, .glb, .gltf) or folders of them");
+      fail(ErrorKind::Io, arg, {}, ec ? "cannot read: " + ec.message() : "no such file or folder",
+           "name example files (.obj, .glb, .gltf) or folders of them");
     }
     if (!fs::is_directory(path, ec)) {
       if (format_of(path) == Format::Other) not_an_example(path);
       files.push_back(path);
       continue;
     }
-    std::vector<fs::path> inside;
-    for (const fs::directory_entry& e : fs::directory_iterator(path, ec)) {
-      if (e.is_regular_file(ec) && format_of(e.path()) != Format::Other) inside.push_back(e.path());
-    }
-    if (ec) fail(ErrorKind::Io, arg, {}, "cannot list the folder: " + ec.message(), "check its permissions");
+    const std::vector<fs::path> inside = regular_files_in(
+        path, [](const fs::path& p) { return format_of(p) != Format::Other; }, "an example file");
     if (inside.empty()) {
       fail(ErrorKind::Io, arg, {}, "the folder holds no example files (.obj, .glb or .gltf)",
            "put the labelled examples there, or name the files themselves");
     }
-    std::sort(inside.begin(), inside.end());
     files.insert(files.end(), inside.begin(), inside.end());
   }
   return files;

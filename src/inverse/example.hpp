@@ -100,11 +100,6 @@ Example load_example(const std::filesystem::path& path, const ExampleLimits& lim
 // without example files, (Usage) for a file of another kind.
 std::vector<std::filesystem::path> example_files(const std::vector<std::string>& args);
 
-// "window.001" -> "window", "wall.12" -> "wall", "v1.5" -> "v1": a final
-// '.' followed only by digits is dropped. Names that would become empty
-// (".001") and names without such a suffix are kept whole.
-std::string strip_numeric_suffix(std::string_view name);
-
 // The bounds of all boxes (both zero when there are none).
 void update_bounds(Example& example);
 

@@ -1,24 +1,10 @@
 #include "inverse/gltf_files.hpp"
 
-#include <algorithm>
+#include "graph/folder_confinement.hpp"
 
 namespace vern {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-bool has_parent_step(const fs::path& path) {
-  return std::any_of(path.begin(), path.end(), [](const fs::path& part) { return part == ".."; });
-}
-
-// Whether `inner` lies in `outer` or below it (both canonical).
-bool lies_within(const fs::path& inner, const fs::path& outer) {
-  auto [o, i] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
-  return o == outer.end();
-}
-
-}  // namespace
 
 std::string gltf_size_hint(const GltfFileRules& rules) {
   return "glTF files and the files they name are read whole: raise the limit with --max-gltf-mib (now " +
@@ -47,21 +33,13 @@ std::optional<fs::path> GltfFiles::resolve(const std::string& uri) {
   if (uri.empty() || uri.find('\0') != std::string::npos) return std::nullopt;
   const fs::path path(uri);
   if (rules_.outside_folder) return path.is_absolute() ? path : fs::path(folder_) / path;
-  auto outside = [&] {
+  std::optional<fs::path> inside = path_in_folder(folder_, uri);
+  if (!inside) {
     refuse(ErrorKind::Input, "the URI '" + uri + "' names a file outside the glTF's folder",
            "a glTF may name files in its own folder only: copy the file there and name it so, or pass "
            "--allow-outside-files if you trust this glTF");
-    return std::nullopt;
-  };
-  // Checked as written first, so nothing outside is even looked at.
-  if (path.is_absolute() || has_parent_step(path)) return outside();
-  const fs::path joined = fs::path(folder_) / path;
-  // A link in the folder may still lead out of it.
-  std::error_code ec;
-  const fs::path real = fs::weakly_canonical(joined, ec);
-  const fs::path real_folder = fs::canonical(folder_, ec);
-  if (ec || !lies_within(real, real_folder)) return outside();
-  return joined;
+  }
+  return inside;
 }
 
 bool GltfFiles::may_read(const std::string& joined) {

@@ -6,7 +6,8 @@
 // would hang the run, a URI to a 1 GB file would be read whole. So a URI
 // may name only a regular file in the glTF's folder or below it (no `..`,
 // no absolute path, no link leading out), unless the user allows files
-// outside (`--allow-outside-files`), and no file larger than a cap is read.
+// outside (`--allow-outside-files`; graph/folder_confinement.hpp), and no
+// file larger than a cap is read.
 // tinygltf opens the files through callbacks (example.cpp) that ask here.
 // The first refusal is kept, to be the example's error; what a refused
 // file holds and how large it is are never said.

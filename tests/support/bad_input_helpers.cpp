@@ -28,14 +28,23 @@ std::string fingerprint(const fs::path& path) {
 
 FolderSnapshot snapshot(const fs::path& folder) {
   FolderSnapshot files;
-  for (const auto& e : fs::recursive_directory_iterator(folder)) {
-    const std::string name = fs::relative(e.path(), folder).generic_string();
+  for (fs::recursive_directory_iterator it(folder), end; it != end; ++it) {
+    const fs::directory_entry& e = *it;
+    const std::string name = e.path().lexically_relative(folder).generic_string();
     // Links and FIFOs by what they are: reading through them could wait
-    // for a writer or never end (a link to /dev/zero).
-    if (e.is_symlink()) files[name] = "-> " + fs::read_symlink(e.path()).string();
-    else if (e.is_directory()) files[name] = "/";
-    else if (e.is_regular_file()) files[name] = fingerprint(e.path());
-    else files[name] = "special file";
+    // for a writer or never end (a link to /dev/zero), or fail (a link
+    // that leads to itself). Links are not followed into folders either.
+    const fs::file_status status = e.symlink_status();
+    if (fs::is_symlink(status)) {
+      files[name] = "-> " + fs::read_symlink(e.path()).string();
+      it.disable_recursion_pending();
+    } else if (fs::is_directory(status)) {
+      files[name] = "/";
+    } else if (fs::is_regular_file(status)) {
+      files[name] = fingerprint(e.path());
+    } else {
+      files[name] = "special file";
+    }
   }
   return files;
 }
