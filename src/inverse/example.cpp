@@ -6,6 +6,7 @@
 #include <cstring>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <string_view>
 #include <unordered_set>
 #include <utility>
@@ -24,7 +25,9 @@
 #include "graph/input_file.hpp"
 #include "graph/number_format.hpp"
 #include "graph/out_of_memory.hpp"
+#include "inverse/glb_chunks.hpp"
 #include "inverse/gltf_files.hpp"
+#include "inverse/gltf_rules.hpp"
 #include "inverse/loose_parts.hpp"
 #include "inverse/plain_glb.hpp"
 
@@ -173,7 +176,7 @@ struct PartName {
 class AccessorReader {
  public:
   AccessorReader(const tinygltf::Model& model, int index, const std::string& source, const PartName& who,
-                 std::string_view attribute)
+                 std::string_view attribute, AccessorUse use = AccessorUse::VertexAttribute)
       : source_(source), who_(who), attribute_(attribute) {
     if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) broken("refers to a missing accessor");
     const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(index)];
@@ -194,7 +197,7 @@ class AccessorReader {
     stride_ = static_cast<std::size_t>(stride);
     component_size_ = static_cast<std::size_t>(component_size);
     count_ = a.count;
-    if (count_ == 0) return;  // nothing is read, whatever the offsets say
+    if (count_ == 0) broken(accessor_problem(model, index, use));
     // Where the last element ends, in the view and in the buffer. Every
     // number here is the file's to choose: near 2^64 they would wrap round
     // into a range that fits, so each step is checked.
@@ -207,6 +210,7 @@ class AccessorReader {
     if (!end_in_buffer || *end_in_view > view.byteLength || *end_in_buffer > data.size()) {
       broken("reads past the end of its buffer");
     }
+    if (const std::string problem = accessor_problem(model, index, use); !problem.empty()) broken(problem);
     // Neither sum wraps: the start lies below the end.
     data_ = data.data() + view.byteOffset + a.byteOffset;
   }
@@ -334,7 +338,7 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
     if (!attributes.Has(a.name)) continue;
     const tinygltf::Value& index = attributes.Get(a.name);
     if (!index.IsInt()) broken(std::string(a.name) + " is not an accessor index");
-    a.reader.emplace(model, index.GetNumberAsInt(), source, who, a.accessor);
+    a.reader.emplace(model, index.GetNumberAsInt(), source, who, a.accessor, AccessorUse::Other);
     if (a.reader->components() != a.components)
       broken(std::string(a.name) + " must hold " + std::to_string(a.components) + " numbers per instance");
     if (count && *count != a.reader->count()) broken("attributes hold different numbers of instances");
@@ -438,49 +442,52 @@ void read_positions(const tinygltf::Model& model, int accessor, const std::strin
     out.positions.emplace_back(positions.get(i, 0), positions.get(i, 1), positions.get(i, 2));
 }
 
-// The rest of a primitive whose positions are read: normals and texture
-// coordinates (kept when there is one per position, as Mesh needs them)
-// and indices.
+// The rest of a primitive whose positions are read (and whose accessors
+// primitive_problem found sound: one NORMAL and TEXCOORD_0 per position):
+// normals, texture coordinates and indices.
 void read_surface(const tinygltf::Model& model, const tinygltf::Primitive& p, const std::string& source,
                   const PartName& who, LocalPrimitive& out) {
   const std::size_t count = out.positions.size();
   if (const auto nrm = p.attributes.find("NORMAL"); nrm != p.attributes.end()) {
     const AccessorReader normals(model, nrm->second, source, who, "NORMAL");
-    if (normals.components() == 3 && normals.count() == count) {
-      out.normals.reserve(count);
-      for (std::size_t i = 0; i < count; ++i) {
-        const glm::dvec3 stored(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
-        if (!std::isfinite(stored.x) || !std::isfinite(stored.y) || !std::isfinite(stored.z))
-          not_finite(source, who, "NORMAL", i);
-        out.normals.push_back(stored);
-      }
+    out.normals.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::dvec3 stored(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
+      if (!std::isfinite(stored.x) || !std::isfinite(stored.y) || !std::isfinite(stored.z))
+        not_finite(source, who, "NORMAL", i);
+      out.normals.push_back(stored);
     }
   }
   if (const auto tex = p.attributes.find("TEXCOORD_0"); tex != p.attributes.end()) {
     const AccessorReader uvs(model, tex->second, source, who, "TEXCOORD_0");
-    if (uvs.components() == 2 && uvs.count() == count) {
-      out.uvs.reserve(count);
-      // glTF's v points down, OBJ's (and Mesh's) up.
-      for (std::size_t i = 0; i < count; ++i) {
-        const glm::dvec2 uv(uvs.get(i, 0), 1.0 - uvs.get(i, 1));
-        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) not_finite(source, who, "TEXCOORD_0", i);
-        out.uvs.push_back(uv);
-      }
+    out.uvs.reserve(count);
+    // glTF's v points down, OBJ's (and Mesh's) up.
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::dvec2 uv(uvs.get(i, 0), 1.0 - uvs.get(i, 1));
+      if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) not_finite(source, who, "TEXCOORD_0", i);
+      out.uvs.push_back(uv);
     }
   }
-  out.mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+  out.mode = p.mode;
   if (p.indices < 0) {
     out.indices.resize(count);
     std::iota(out.indices.begin(), out.indices.end(), 0u);
     return;
   }
-  const AccessorReader reader(model, p.indices, source, who, "index");
+  const AccessorReader reader(model, p.indices, source, who, "index", AccessorUse::Indices);
+  const int component_type = model.accessors[static_cast<std::size_t>(p.indices)].componentType;
   out.indices.reserve(reader.count());
   for (std::size_t i = 0; i < reader.count(); ++i) {
     const std::uint32_t index = reader.index(i);
     if (index >= count) {
       fail(ErrorKind::Input, source, {},
            who.text() + ": index " + std::to_string(index) + " is past the " + std::to_string(count) + " vertices",
+           "export the file again, or check it with scripts/validate-gltf");
+    }
+    if (is_restart_index(component_type, index)) {
+      fail(ErrorKind::Input, source, {},
+           who.text() + ": index " + std::to_string(i) + " is " + std::to_string(index) +
+               ", the largest of its type, which glTF keeps for restarting strips",
            "export the file again, or check it with scripts/validate-gltf");
     }
     out.indices.push_back(index);
@@ -571,23 +578,33 @@ Mesh local_shape(const LocalMesh& local) {
   return shape;
 }
 
-// Reads a glTF mesh for the first part that uses it, placing each
-// primitive for that part as soon as it is read, so that the part's errors
-// come in the order they always did (a vertex placed beyond 1e12 before a
-// broken NORMAL accessor of its primitive). Any error in what is read
-// stops reading at this first part: later ones only place the mesh.
-// Whether it is whole is left to MeshReader.
-LocalMesh read_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, const Placement& placement,
-                    const std::string& source, const PartName& who, const ExampleLimits& limits, Mesh& out) {
+// Reads a glTF mesh (`mesh`, an index the file has) for the first part
+// that uses it, placing each primitive for that part as soon as it is
+// read, so that the part's errors come in the order they always did (a
+// vertex placed beyond 1e12 before a broken NORMAL accessor of its
+// primitive). Any error in what is read stops reading at this first part:
+// later ones only place the mesh. Whether it is whole is left to MeshReader.
+LocalMesh read_mesh(const tinygltf::Model& model, int mesh, const Placement& placement, const std::string& source,
+                    const PartName& who, const ExampleLimits& limits, Mesh& out) {
   LocalMesh local;
-  for (const tinygltf::Primitive& p : gmesh.primitives) {
+  const tinygltf::Mesh& gmesh = model.meshes[static_cast<std::size_t>(mesh)];
+  for (std::size_t k = 0; k < gmesh.primitives.size(); ++k) {
+    const tinygltf::Primitive& p = gmesh.primitives[k];
     const auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) continue;  // nothing to place
+    auto check = [&](const std::string& problem) {
+      if (problem.empty()) return;
+      fail(ErrorKind::Input, source, {},
+           who.text() + ": mesh " + std::to_string(mesh) + " primitive " + std::to_string(k) + " " + problem,
+           "export the file again, or check it with scripts/validate-gltf");
+    };
+    check(primitive_problem(model, p));
     LocalPrimitive& primitive = local.primitives.emplace_back();
     read_positions(model, pos->second, source, who, primitive);
     const auto base = static_cast<std::uint32_t>(out.positions.size());
     place_positions(primitive, placement.world, source, who, out);
     read_surface(model, p, source, who, primitive);
+    check(index_count_problem(p.mode, primitive.indices.size()));
     place_surface(primitive, placement, base, source, who, limits, out);
   }
   return local;
@@ -639,7 +656,7 @@ class MeshReader {
       place_mesh(*kept, placement, source_, who, limits_, out);
       return kept->whole;
     }
-    LocalMesh read = read_mesh(model_, model_.meshes[m], placement, source_, who, limits_, out);
+    LocalMesh read = read_mesh(model_, mesh, placement, source_, who, limits_, out);
     if (uses_[m] < 2) return false;  // loose pieces are looked for as in any part
     read.whole = loose_pieces(local_shape(read)).empty();
     kept = std::move(read);
@@ -676,9 +693,16 @@ tinygltf::Model load_with_tinygltf(const fs::path& path, bool binary, const Exam
   std::string err, warn;
   // tinygltf takes the length as an unsigned int: the cap keeps it below 4 GiB.
   const auto length = static_cast<unsigned int>(bytes.size());
-  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, files.folder())
-                         : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                                      length, files.folder());
+  bool ok = false;
+  try {
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, files.folder())
+                : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()), length,
+                                             files.folder());
+  } catch (const std::logic_error& e) {
+    // tinygltf indexes some vectors with at(): a buffer of byteLength 0
+    // in a GLB throws out_of_range. The file is what is wrong.
+    err = std::string("tinygltf could not read it (") + e.what() + ")";
+  }
   if (!ok) {
     // A file the glTF names that was refused is the reason, said our way.
     if (const auto& refused = files.refusal()) fail(refused->kind, source, {}, refused->message, refused->hint);
@@ -705,19 +729,24 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     fail(refused->kind, ex.source, {}, refused->problem,
          refused->kind == ErrorKind::Limit ? gltf_size_hint(limits.gltf) : "check the path and the file's permissions");
   }
+  // The container is checked before any reader sees it.
+  if (const std::string problem = binary ? glb_chunks(bytes).problem : ""; !problem.empty()) {
+    fail(ErrorKind::Input, ex.source, {}, "is not a valid GLB file: " + problem,
+         "export the file again, or check it with scripts/validate-gltf");
+  }
   // The common GLB is read without tinygltf's JSON document; every other
   // file, and every error, is tinygltf's (plain_glb.hpp).
   std::optional<tinygltf::Model> plain = binary ? read_plain_glb(bytes) : std::nullopt;
   tinygltf::Model model = plain ? std::move(*plain) : load_with_tinygltf(path, binary, limits, bytes, ex.source);
   plain.reset();
   bytes = {};
+  check_gltf_file_rules(model, ex.source);
 
-  // The default scene's roots; without scenes, every node no other node
-  // lists as a child.
+  // The default scene's roots (check_gltf_file_rules found it); without
+  // scenes, every node no other node lists as a child.
   std::vector<int> roots;
   if (!model.scenes.empty()) {
-    const auto scene = static_cast<std::size_t>(model.defaultScene >= 0 ? model.defaultScene : 0);
-    if (scene < model.scenes.size()) roots = model.scenes[scene].nodes;
+    roots = model.scenes[static_cast<std::size_t>(model.defaultScene >= 0 ? model.defaultScene : 0)].nodes;
   } else {
     std::vector<bool> is_child(model.nodes.size(), false);
     for (const tinygltf::Node& n : model.nodes)
@@ -753,13 +782,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     visited[static_cast<std::size_t>(index)] = true;
     const glm::dmat4 world = parent * local_matrix(node);
     for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.emplace_back(*it, world);
-    if (node.mesh < 0) continue;
-    if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
-      fail(ErrorKind::Input, ex.source, {},
-           who.text() + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
-               std::to_string(model.meshes.size()) + " mesh" + (model.meshes.size() == 1 ? "" : "es"),
-           "export the file again, or check it with scripts/validate-gltf");
-    }
+    if (node.mesh < 0) continue;  // else one the file has (check_gltf_file_rules)
     if (node.name.empty()) {
       fail(ErrorKind::Input, ex.source, {},
            who.text() + " has a mesh but no name: inference cannot tell which primitive it is",
@@ -780,15 +803,11 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
       }
       const Placement placement(instances ? world * (*instances)[i] : world);
       Mesh mesh;
+      // Each primitive placed draws a triangle or more (primitive_problem).
       const bool whole = meshes.place(node.mesh, placement, part, mesh);
       if (mesh.positions.empty()) {
         fail(ErrorKind::Input, ex.source, {}, part.text() + " has a mesh without vertex positions",
              "export the file again with geometry for every named part");
-      }
-      // The part's shape becomes its primitive's mesh, which needs faces.
-      if (mesh.face_sizes.empty()) {
-        fail(ErrorKind::Input, ex.source, {}, part.text() + " has no triangles: its mesh holds only points or lines",
-             "export the part as a surface (triangles), or leave it out");
       }
       const std::string object = instances ? node.name + " (instance " + std::to_string(i) + ")" : std::string();
       adder.add(name, 0, mesh, object, whole);
