@@ -117,6 +117,15 @@ void four_million_instances(const fs::path& d) {
   fs::resize_file(d / "instances.bin", 48000048);
 }
 
+// 18 MB of JSON: nine million numbers in `extras`, which tinygltf would
+// read into some 1.8 GB.
+void json_of_18_mb(const fs::path& d) {
+  std::string text = R"({"asset": {"version": "2.0"}, "extras": [1)";
+  text.reserve(18'000'100);
+  for (int i = 1; i < 9'000'000; ++i) text += ",1";
+  binary_file(d / "numbers.gltf", text + "]}");
+}
+
 // Files a failed run must leave as they were: the outputs of an earlier run.
 void earlier_outputs(const fs::path& d, const std::vector<std::string>& names) {
   for (const std::string& name : names) {
@@ -359,6 +368,17 @@ const std::vector<BadInput> kCases = {
    {}, [](const fs::path& d) {
      const std::string b = glb_bytes(d);
      binary_file(d / "v1.glb", b.substr(0, 4) + u32(1) + b.substr(8)); }},
+  // tinygltf reads extras recursively: 200,000 levels overflowed its stack.
+  {"gltf_json_nested_too_deep", "infer", {"deep.gltf", "-o", "style.grm"}, kInput,
+   "deep.gltf:1:", "its JSON nests arrays and objects more than 64 deep",
+   {}, [](const fs::path& d) {
+     write_text(d / "deep.gltf", R"({"asset": {"version": "2.0"}, "extras": )" + std::string(200000, '[') +
+                                     std::string(200000, ']') + "}"); }},
+  // JSON costs up to a few hundred bytes per value read: weighed first.
+  {"gltf_json_of_18mb_bounds_memory", "infer", {"numbers.gltf", "-o", "style.grm"}, kLimit,
+   "numbers.gltf: error: ", "MiB of memory once read: more than the limit of 256 MiB\n  hint: glTF JSON takes up "
+   "to a few hundred bytes per value once read: raise the limit with --max-gltf-mib (now 256)",
+   {}, json_of_18_mb, nullptr, 100},
   // Each instance is a part: reading stops at --max-parts before the
   // instances' transforms are made (4 million of 128 bytes: 512 MB).
   {"gltf_instances_past_max_parts", "infer", {"model.gltf", "-o", "style.grm"}, kLimit,

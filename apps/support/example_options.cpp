@@ -5,7 +5,9 @@ namespace vern {
 void add_example_options(CommandLine& cl) {
   cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
   cl.add({"--max-faces", "", 1, "N", "limit on faces per labelled part (default 1000000)"});
-  cl.add({"--max-gltf-mib", "", 1, "N", "limit on a glTF or GLB file and each file it names, read whole (default 256)"});
+  cl.add({"--max-gltf-mib", "", 1, "N",
+          "limit on a glTF or GLB file and each file it names, read whole, and on the memory\n"
+          "its JSON takes once read (default 256)"});
   cl.add({"--allow-outside-files", "", 0, "",
           "a glTF's URIs may name files outside its folder ('..', absolute paths, links out);\n"
           "without it they are refused: a glTF from elsewhere chooses them"});

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 #include <unordered_set>
@@ -28,6 +29,7 @@
 #include "inverse/glb_chunks.hpp"
 #include "inverse/gltf_files.hpp"
 #include "inverse/gltf_rules.hpp"
+#include "inverse/json_cost.hpp"
 #include "inverse/loose_parts.hpp"
 #include "inverse/plain_glb.hpp"
 
@@ -720,6 +722,31 @@ tinygltf::Model load_with_tinygltf(const fs::path& path, bool binary, const Exam
   return model;
 }
 
+// JSON nested deeper than this is refused: tinygltf reads extras and
+// extensions recursively. glTF's own objects nest 8 deep at most.
+constexpr std::size_t kMaxJsonDepth = 64;
+
+// Refuses a glTF's JSON text whose reading would take more memory than the
+// file limit (json_cost.hpp), or that nests deeper than kMaxJsonDepth.
+void check_json_cost(std::string_view text, bool binary, const std::string& source, const GltfFileRules& rules) {
+  const JsonCost cost = json_cost(text, kMaxJsonDepth);
+  if (cost.too_deep_at != JsonCost::npos) {
+    const SourceLoc at = text_location(text, cost.too_deep_at);
+    fail(ErrorKind::Input, source, binary ? SourceLoc{} : at,
+         std::string("its JSON") + (binary ? " (line " + std::to_string(at.line) + ")" : "") +
+             " nests arrays and objects more than " + std::to_string(kMaxJsonDepth) + " deep",
+         "glTF's own objects nest 8 deep: flatten the extras, or export the file again");
+  }
+  if (cost.bytes > rules.max_bytes) {
+    fail(ErrorKind::Limit, source, {},
+         "its JSON holds " + std::to_string(cost.values) + " values, which take up to " +
+             std::to_string((cost.bytes >> 20) + 1) + " MiB of memory once read: more than the limit of " +
+             mebibytes(rules.max_bytes),
+         "glTF JSON takes up to a few hundred bytes per value once read: raise the limit with --max-gltf-mib (now " +
+             std::to_string(rules.max_bytes >> 20) + "), or keep the geometry in binary buffers");
+  }
+}
+
 Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits& limits) {
   Example ex;
   ex.source = path.string();
@@ -729,11 +756,17 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     fail(refused->kind, ex.source, {}, refused->problem,
          refused->kind == ErrorKind::Limit ? gltf_size_hint(limits.gltf) : "check the path and the file's permissions");
   }
-  // The container is checked before any reader sees it.
-  if (const std::string problem = binary ? glb_chunks(bytes).problem : ""; !problem.empty()) {
-    fail(ErrorKind::Input, ex.source, {}, "is not a valid GLB file: " + problem,
-         "export the file again, or check it with scripts/validate-gltf");
+  // The container and the JSON are checked before any reader sees them.
+  std::span<const unsigned char> json = bytes;
+  if (binary) {
+    const GlbChunks chunks = glb_chunks(bytes);
+    if (!chunks.problem.empty()) {
+      fail(ErrorKind::Input, ex.source, {}, "is not a valid GLB file: " + chunks.problem,
+           "export the file again, or check it with scripts/validate-gltf");
+    }
+    json = chunks.json;
   }
+  check_json_cost({reinterpret_cast<const char*>(json.data()), json.size()}, binary, ex.source, limits.gltf);
   // The common GLB is read without tinygltf's JSON document; every other
   // file, and every error, is tinygltf's (plain_glb.hpp).
   std::optional<tinygltf::Model> plain = binary ? read_plain_glb(bytes) : std::nullopt;

@@ -82,11 +82,12 @@ struct ExampleLimits {
 // kMaxObjCoordinate (also after a glTF node's transform), a glTF node
 // reached twice or naming a missing mesh, a glTF URI that limits.gltf
 // refuses (gltf_files.hpp), or is not a valid OBJ or glTF file (glTF: by
-// the rules gltf_rules.hpp and glb_chunks.hpp check); Limit for more parts
-// than limits.max_parts, or a glTF file (or one it names) larger than
-// limits.gltf.max_bytes, or a part of more than limits.max_faces faces;
-// Usage for another extension. A part flat on one axis (a facade panel) is
-// fine.
+// the rules gltf_rules.hpp and glb_chunks.hpp check, and JSON nested more
+// than 64 deep); Limit for more parts than limits.max_parts, or a glTF file
+// (or one it names) larger than limits.gltf.max_bytes, or one whose JSON
+// would take more memory than that once read (json_cost.hpp), or a part of
+// more than limits.max_faces faces; Usage for another extension. A part
+// flat on one axis (a facade panel) is fine.
 // threads: 1 reads on this thread alone; otherwise a second thread reads an
 // OBJ's text ahead (obj_reader.hpp; the same example, and the same error).
 Example load_example(const std::filesystem::path& path, const ExampleLimits& limits = {}, unsigned threads = 1);
