@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "forward/gltf_container.hpp"
 #include "support/bad_input_helpers.hpp"
 #include "support/run_command.hpp"
 
@@ -115,6 +116,35 @@ void four_million_instances(const fs::path& d) {
  "scenes": [{"nodes": [0]}], "scene": 0})");
   binary_file(d / "instances.bin", box_bytes());
   fs::resize_file(d / "instances.bin", 48000048);
+}
+
+// Eleven nodes share one mesh of a million triangles over four corners
+// (indices as bytes: a 3 MB file). Each node places it anew: 11 million
+// faces, past --max-total-faces.
+void eleven_nodes_share_a_million_triangles(const fs::path& d) {
+  const std::size_t triangles = 1'000'000;
+  const float corners[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1};
+  std::string bin(reinterpret_cast<const char*>(corners), sizeof corners);
+  std::string indices;
+  const std::string four = std::string("\0\1\2\0\2\3\0\1\3\1\2\3", 12);
+  for (std::size_t t = 0; t < triangles / 4; ++t) indices += four;
+  bin += indices;
+  std::string nodes;
+  for (int i = 0; i <= 10; ++i) {
+    nodes += std::string(i ? ", " : "") + R"({"name": "wall.)" + std::to_string(i) +
+             R"(", "mesh": 0, "translation": [)" + std::to_string(2 * i) + ", 0, 0]}";
+  }
+  const std::string json = R"({"asset": {"version": "2.0"},
+ "buffers": [{"byteLength": )" + std::to_string(bin.size()) + R"(}],
+ "bufferViews": [{"buffer": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": )" +
+                     std::to_string(indices.size()) + R"(}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+               {"bufferView": 1, "componentType": 5121, "count": )" + std::to_string(indices.size()) +
+                     R"(, "type": "SCALAR"}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+ "nodes": [)" + nodes + R"(], "scenes": [{"nodes": [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10]}], "scene": 0})";
+  binary_file(d / "shared.glb",
+              glb_header(json.size(), bin.size()) + json + glb_between(json.size(), bin.size()) + bin);
 }
 
 // 18 MB of JSON: nine million numbers in `extras`, which tinygltf would
@@ -379,6 +409,14 @@ const std::vector<BadInput> kCases = {
    "numbers.gltf: error: ", "MiB of memory once read: more than the limit of 256 MiB\n  hint: glTF JSON takes up "
    "to a few hundred bytes per value once read: raise the limit with --max-gltf-mib (now 256)",
    {}, json_of_18_mb, nullptr, 100},
+  // Each node places a shared mesh anew: faces are bounded in all.
+  {"glb_shared_mesh_past_max_total_faces", "infer", {"shared.glb", "-o", "style.grm"}, kLimit,
+   "shared.glb: error: ", "the parts up to node 10 'wall.10' hold more than 10000000 faces in all",
+   {}, eleven_nodes_share_a_million_triangles},
+  {"gltf_past_max_total_faces", "infer", {"two_parts.gltf", "--max-total-faces", "5", "-o", "style.grm"}, kLimit,
+   "two_parts.gltf: error: ", "the parts up to node 1 'roof' hold more than 5 vertices in all (a mesh counts once "
+   "for each node that places it)\n  hint: raise the limit with --max-total-faces (now 5; it bounds vertices too)",
+   {"gltf/two_parts.gltf"}},
   // Each instance is a part: reading stops at --max-parts before the
   // instances' transforms are made (4 million of 128 bytes: 512 MB).
   {"gltf_instances_past_max_parts", "infer", {"model.gltf", "-o", "style.grm"}, kLimit,

@@ -80,6 +80,10 @@ class PartAdder {
   // `object`: how messages name the part (default: its name). `whole`:
   // the mesh is known to be one loose piece (a glTF mesh whole in its own
   // coordinates, LocalMesh), so there are no pieces to look for.
+  // Whether a part named `name` would not be the first of its label: its
+  // mesh is not kept, only its box and positions.
+  bool has_label(const std::string& name) const { return labels_.count(strip_numeric_suffix(name)) != 0; }
+
   void add(const std::string& name, std::uint32_t line, const Mesh& mesh, const std::string& object = {},
            bool whole = false) {
     const std::string& who = object.empty() ? name : object;
@@ -580,6 +584,31 @@ Mesh local_shape(const LocalMesh& local) {
   return shape;
 }
 
+// Vertices and faces placed so far in an example, held to
+// ExampleLimits::max_total_faces before they are placed. A mesh counts
+// once for each part that places it: a small file whose thousand nodes
+// share a mesh of a million triangles stops at the limit, not after a
+// billion triangles.
+class PlacedTotals {
+ public:
+  // The counts are each bounded by a buffer's size: the sums do not wrap.
+  void add(std::size_t vertices, std::size_t faces, const std::string& source, const PartName& who,
+           const ExampleLimits& limits) {
+    vertices_ += vertices;
+    faces_ += faces;
+    const bool too_many_faces = faces_ > limits.max_total_faces;
+    if (!too_many_faces && vertices_ <= limits.max_total_faces) return;
+    fail(ErrorKind::Limit, source, {},
+         "the parts up to " + who.text() + " hold more than " + std::to_string(limits.max_total_faces) +
+             (too_many_faces ? " faces" : " vertices") + " in all (a mesh counts once for each node that places it)",
+         "raise the limit with --max-total-faces (now " + std::to_string(limits.max_total_faces) +
+             (too_many_faces ? "" : "; it bounds vertices too") + "), or give the example fewer or simpler parts");
+  }
+
+ private:
+  std::size_t vertices_ = 0, faces_ = 0;
+};
+
 // Reads a glTF mesh (`mesh`, an index the file has) for the first part
 // that uses it, placing each primitive for that part as soon as it is
 // read, so that the part's errors come in the order they always did (a
@@ -587,7 +616,7 @@ Mesh local_shape(const LocalMesh& local) {
 // primitive). Any error in what is read stops reading at this first part:
 // later ones only place the mesh. Whether it is whole is left to MeshReader.
 LocalMesh read_mesh(const tinygltf::Model& model, int mesh, const Placement& placement, const std::string& source,
-                    const PartName& who, const ExampleLimits& limits, Mesh& out) {
+                    const PartName& who, const ExampleLimits& limits, PlacedTotals& totals, Mesh& out) {
   LocalMesh local;
   const tinygltf::Mesh& gmesh = model.meshes[static_cast<std::size_t>(mesh)];
   for (std::size_t k = 0; k < gmesh.primitives.size(); ++k) {
@@ -601,20 +630,25 @@ LocalMesh read_mesh(const tinygltf::Model& model, int mesh, const Placement& pla
            "export the file again, or check it with scripts/validate-gltf");
     };
     check(primitive_problem(model, p));
+    // Counted once read: the reading checks the counts against the buffers.
     LocalPrimitive& primitive = local.primitives.emplace_back();
     read_positions(model, pos->second, source, who, primitive);
+    totals.add(primitive.positions.size(), 0, source, who, limits);
     const auto base = static_cast<std::uint32_t>(out.positions.size());
     place_positions(primitive, placement.world, source, who, out);
     read_surface(model, p, source, who, primitive);
     check(index_count_problem(p.mode, primitive.indices.size()));
+    totals.add(0, triangle_count(primitive.mode, primitive.indices.size()), source, who, limits);
     place_surface(primitive, placement, base, source, who, limits, out);
   }
   return local;
 }
 
-// Places a mesh read for an earlier part, transformed to world space.
+// Places a mesh read for an earlier part, transformed to world space: its
+// positions, and unless `surface` is false its normals, texture
+// coordinates and faces.
 void place_mesh(const LocalMesh& local, const Placement& placement, const std::string& source, const PartName& who,
-                const ExampleLimits& limits, Mesh& out) {
+                const ExampleLimits& limits, bool surface, PlacedTotals& totals, Mesh& out) {
   std::size_t positions = 0, normals = 0, uvs = 0, triangles = 0;
   for (const LocalPrimitive& p : local.primitives) {
     positions += p.positions.size();
@@ -622,15 +656,18 @@ void place_mesh(const LocalMesh& local, const Placement& placement, const std::s
     uvs += p.uvs.size();
     triangles += triangle_count(p.mode, p.indices.size());
   }
+  totals.add(positions, triangles, source, who, limits);
   out.positions.reserve(positions);
-  out.normals.reserve(normals);
-  out.uvs.reserve(uvs);
-  out.corners.reserve(3 * triangles);
-  out.face_sizes.reserve(triangles);
+  if (surface) {
+    out.normals.reserve(normals);
+    out.uvs.reserve(uvs);
+    out.corners.reserve(3 * triangles);
+    out.face_sizes.reserve(triangles);
+  }
   for (const LocalPrimitive& p : local.primitives) {
     const auto base = static_cast<std::uint32_t>(out.positions.size());
     place_positions(p, placement.world, source, who, out);
-    place_surface(p, placement, base, source, who, limits, out);
+    if (surface) place_surface(p, placement, base, source, who, limits, out);
   }
 }
 
@@ -650,15 +687,18 @@ class MeshReader {
   }
 
   // Makes a part's mesh (`mesh`: an index the file has) in world space.
-  // Returns whether the part is known to be one loose piece.
-  bool place(int mesh, const Placement& placement, const PartName& who, Mesh& out) {
+  // Returns whether the part is known to be one loose piece. `surface`:
+  // whether the part needs its faces (it is the first of its label);
+  // a part known whole that does not is only its positions, which are all
+  // a part that is not its label's mesh keeps.
+  bool place(int mesh, const Placement& placement, const PartName& who, bool surface, Mesh& out) {
     const auto m = static_cast<std::size_t>(mesh);
     std::optional<LocalMesh>& kept = kept_[m];
     if (kept) {
-      place_mesh(*kept, placement, source_, who, limits_, out);
+      place_mesh(*kept, placement, source_, who, limits_, surface || !kept->whole, totals_, out);
       return kept->whole;
     }
-    LocalMesh read = read_mesh(model_, mesh, placement, source_, who, limits_, out);
+    LocalMesh read = read_mesh(model_, mesh, placement, source_, who, limits_, totals_, out);
     if (uses_[m] < 2) return false;  // loose pieces are looked for as in any part
     read.whole = loose_pieces(local_shape(read)).empty();
     kept = std::move(read);
@@ -673,6 +713,7 @@ class MeshReader {
   // or nodes the scene does not reach, count too: keeping is harmless).
   std::vector<std::size_t> uses_;
   std::vector<std::optional<LocalMesh>> kept_;
+  PlacedTotals totals_;
 };
 
 // tinygltf's file system: every file it opens is one GltfFiles allows.
@@ -837,7 +878,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
       const Placement placement(instances ? world * (*instances)[i] : world);
       Mesh mesh;
       // Each primitive placed draws a triangle or more (primitive_problem).
-      const bool whole = meshes.place(node.mesh, placement, part, mesh);
+      const bool whole = meshes.place(node.mesh, placement, part, !adder.has_label(name), mesh);
       if (mesh.positions.empty()) {
         fail(ErrorKind::Input, ex.source, {}, part.text() + " has a mesh without vertex positions",
              "export the file again with geometry for every named part");
