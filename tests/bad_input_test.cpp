@@ -197,6 +197,9 @@ const std::vector<BadInput> kCases = {
    "huge_coordinate.obj:8:3: error: ", "'1e308' is too large", {"obj/huge_coordinate.obj"}},
   {"obj_coordinate_overflows_double", "infer", {"coordinate_overflows_double.obj", "-o", "style.grm"}, kInput,
    "coordinate_overflows_double.obj:8:5: error: ", "'1e999' is out of range", {"obj/coordinate_overflows_double.obj"}},
+  {"obj_coordinate_underflows_double", "infer", {"coordinate_underflows_double.obj", "-o", "style.grm"}, kInput,
+   "coordinate_underflows_double.obj:8:5: error: ",
+   "'1e-400' is too small for a number: nearer to zero than any double", {"obj/coordinate_underflows_double.obj"}},
   // A file's own up axis (forward/obj_reader.hpp): y or z, before any vertex.
   {"obj_up_axis_unknown", "infer", {"up_axis_unknown.obj", "-o", "style.grm"}, kInput,
    "up_axis_unknown.obj:1:6: error: ", "'# up x' declares an up axis other than y or z", {"obj/up_axis_unknown.obj"}},
