@@ -5,9 +5,9 @@
 // `{ }` or `( )` and the parser never sees those newlines.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "graph/error.hpp"
 
@@ -32,8 +32,36 @@ struct Token {
   SourceLoc loc;
 };
 
-// Splits text into tokens; throws vern::Error (Input) naming file:line:col
-// for a character or number it cannot read. The last token is End.
-std::vector<Token> tokenize(std::string_view text, const std::string& source_name);
+// Reads text into tokens one at a time, so that a reader holds only the
+// few it is looking at: a token took some forty times the memory of the
+// text it stands for, and a grammar of a million lines held all of them.
+// A UTF-8 byte-order mark at the start of the text is skipped (editors on
+// Windows write one). Throws vern::Error (Input) naming file:line:col for a
+// character or number it cannot read. After the last token, End, it
+// returns End again.
+class Lexer {
+ public:
+  Lexer(std::string_view text, const std::string& source_name);
+  Token next();
+
+ private:
+  bool at_end() const { return pos_ >= text_.size(); }
+  void advance();
+  bool starts_with(std::string_view s) const { return text_.substr(pos_, s.size()) == s; }
+  void skip_space_and_comments();
+  double read_number(SourceLoc loc);
+  std::string read_string(SourceLoc loc);
+  TokenKind read_symbol(SourceLoc loc);
+  [[noreturn]] void error(SourceLoc loc, const std::string& message, const std::string& hint = {}) const;
+
+  std::string_view text_;
+  const std::string& source_;
+  std::size_t pos_ = 0;
+  std::uint32_t line_ = 1;
+  std::uint32_t column_ = 1;
+  int depth_ = 0;
+  bool started_ = false;                // a token other than End was returned
+  TokenKind last_ = TokenKind::Newline;  // the last token returned, once started
+};
 
 }  // namespace vern
