@@ -137,8 +137,8 @@ class Parser {
   }
   static std::string describe(const Token& t) {
     switch (t.kind) {
-      case TokenKind::Identifier: return "'" + std::string(t.text) + "'";
-      case TokenKind::Number: return "the number " + std::string(t.text);
+      case TokenKind::Identifier: return "'" + shown_name(t.text) + "'";
+      case TokenKind::Number: return "the number " + shown_name(t.text);
       case TokenKind::Newline:
       case TokenKind::End: return token_kind_name(t.kind);
       default: return token_kind_name(t.kind);
