@@ -94,7 +94,7 @@ Token Lexer::next() {
       advance();
       while (!at_end() && is_ident_char(text_[pos_])) advance();
       t.kind = TokenKind::Directive;
-      t.value = std::string(text_.substr(start + 1, pos_ - start - 1));
+      t.value = text_.substr(start + 1, pos_ - start - 1);
       if (t.value.empty())
         error(loc, "'@' must start a directive (@start, @scope or @primitives)",
               "write @scope 12, 8, 9 (no space after '@')");
@@ -168,26 +168,32 @@ double Lexer::read_number(SourceLoc loc) {
   return v;
 }
 
-std::string Lexer::read_string(SourceLoc loc) {
+std::string_view Lexer::read_string(SourceLoc loc) {
   advance();  // opening quote
-  std::string value;
+  const std::size_t start = pos_;
+  std::string value;  // once an escape is seen: the contents so far, unescaped
+  bool escaped = false;
   while (true) {
     if (at_end() || text_[pos_] == '\n') error(loc, "this string has no closing '\"'", "end it on the same line");
     const char c = text_[pos_];
     if (c == '"') {
+      const std::string_view contents = escaped ? std::string_view(value) : text_.substr(start, pos_ - start);
       advance();
       // Strings name primitives and files: text, never stray bytes.
-      if (const std::size_t bad = invalid_utf8_offset(value); bad != std::string::npos)
+      if (const std::size_t bad = invalid_utf8_offset(contents); bad != std::string::npos)
         error(loc, "this string is not UTF-8 text", "save the grammar file as UTF-8");
-      return value;
+      if (!escaped) return contents;
+      return unescaped_.emplace_back(std::move(value));
     }
     if (c == '\\' && pos_ + 1 < text_.size() && (text_[pos_ + 1] == '"' || text_[pos_ + 1] == '\\')) {
+      if (!escaped) value.assign(text_.substr(start, pos_ - start));
+      escaped = true;
       advance();
       value += text_[pos_];
       advance();
       continue;
     }
-    value += c;
+    if (escaped) value += c;
     advance();
   }
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <string_view>
 
@@ -13,7 +14,7 @@
 
 namespace vern {
 
-enum class TokenKind {
+enum class TokenKind : std::uint8_t {
   Identifier, Number, String, Directive,  // @start, @scope, @primitives
   Arrow,                                  // --> -> →
   LParen, RParen, LBrace, RBrace, Comma, Colon, Pipe, Tilde, Assign,
@@ -24,11 +25,13 @@ enum class TokenKind {
 
 const char* token_kind_name(TokenKind k);
 
+// A plain value, cheap to copy: its views are into the text, or (a string
+// with escapes, unescaped) into the Lexer that read it, and live as long.
 struct Token {
   TokenKind kind = TokenKind::End;
   std::string_view text;  // as written (a string's contents without quotes are in `value`)
   double number = 0.0;
-  std::string value;  // String: the unescaped contents; Directive: the name without '@'
+  std::string_view value;  // String: the unescaped contents; Directive: the name without '@'
   SourceLoc loc;
 };
 
@@ -50,7 +53,7 @@ class Lexer {
   bool starts_with(std::string_view s) const { return text_.substr(pos_, s.size()) == s; }
   void skip_space_and_comments();
   double read_number(SourceLoc loc);
-  std::string read_string(SourceLoc loc);
+  std::string_view read_string(SourceLoc loc);
   TokenKind read_symbol(SourceLoc loc);
   [[noreturn]] void error(SourceLoc loc, const std::string& message, const std::string& hint = {}) const;
 
@@ -60,6 +63,7 @@ class Lexer {
   std::uint32_t line_ = 1;
   std::uint32_t column_ = 1;
   int depth_ = 0;
+  std::deque<std::string> unescaped_;  // strings that held \" or \\, as their tokens' values
   bool started_ = false;                // a token other than End was returned
   TokenKind last_ = TokenKind::Newline;  // the last token returned, once started
 };

@@ -85,7 +85,6 @@ class Parser {
   Grammar run() {
     declare_rules();
     while (peek().kind != TokenKind::End) {
-      forget_read_tokens();
       if (accept(TokenKind::Newline)) continue;
       if (peek().kind == TokenKind::Directive) {
         directive();
@@ -104,22 +103,20 @@ class Parser {
  private:
   // ---- tokens ----
   // Token number pos_ + ahead, read from the text when first asked for.
-  // Tokens live in a deque, which keeps them in place as it grows: a
-  // caller may hold one while it reads on.
-  const Token& peek(std::size_t ahead = 0) {
-    const std::size_t at = pos_ + ahead;
-    while (first_ + tokens_.size() <= at && (tokens_.empty() || tokens_.back().kind != TokenKind::End))
-      tokens_.push_back(lexer_.next());
-    return tokens_[std::min(at - first_, tokens_.size() - 1)];
+  // Tokens are handed out as copies (a `const Token&` to one keeps it), so
+  // only those not yet read are kept: never more than the look-ahead, where
+  // holding the tokens of the file (or of a line of a million parts) took
+  // some 40 times the memory of the text.
+  Token peek(std::size_t ahead = 0) {
+    for (; first_ < pos_ && !ahead_.empty(); ++first_) ahead_.pop_front();
+    first_ = std::max(first_, pos_);  // read past the end: the lexer gives End again
+    while (ahead_.size() <= ahead) ahead_.push_back(lexer_.next());
+    return ahead_[ahead];
   }
-  const Token& next() {
-    const Token& t = peek();
+  Token next() {
+    const Token t = peek();
     if (t.kind != TokenKind::End) ++pos_;
     return t;
-  }
-  // Between lines, when nothing refers to the tokens already read.
-  void forget_read_tokens() {
-    for (; first_ < pos_ && tokens_.size() > 1; ++first_) tokens_.pop_front();
   }
   bool accept(TokenKind k) {
     if (peek().kind != k) return false;
@@ -128,7 +125,7 @@ class Parser {
   }
   // `hint` shows the construct being read as it is written: most of these
   // errors are a missing bracket, comma or ':', which that makes plain.
-  const Token& expect(TokenKind k, const std::string& context, const std::string& hint) {
+  Token expect(TokenKind k, const std::string& context, const std::string& hint) {
     if (peek().kind != k) {
       error(peek().loc, "expected " + std::string(token_kind_name(k)) + " " + context + ", found " + describe(peek()),
             hint);
@@ -269,7 +266,7 @@ class Parser {
       g_.primitives =
           expect(TokenKind::String, "after @primitives (a quoted path)", "write @primitives \"style.prims.obj\"").value;
     } else {
-      error(d.loc, "unknown directive '@" + d.value + "'", "directives are @start, @scope and @primitives");
+      error(d.loc, "unknown directive '@" + std::string(d.value) + "'", "directives are @start, @scope and @primitives");
     }
   }
 
@@ -558,7 +555,8 @@ class Parser {
     } else if (first.kind == TokenKind::String) {
       next();
       if (!parse_hex_colour(first.value, rgb))
-        error(first.loc, "'" + first.value + "' is not a colour", "write colour(\"#rrggbb\"), colour(red) or colour(r, g, b)");
+        error(first.loc, "'" + std::string(first.value) + "' is not a colour",
+              "write colour(\"#rrggbb\"), colour(red) or colour(r, g, b)");
       c.rgb = {Expr::number(rgb[0], first.loc), Expr::number(rgb[1], first.loc), Expr::number(rgb[2], first.loc)};
     } else if (first.kind == TokenKind::Identifier && peek(1).kind == TokenKind::RParen && !is_value_name(first.text)) {
       std::vector<std::string> names;
@@ -575,7 +573,7 @@ class Parser {
     return add(std::move(c), loc);
   }
 
-  static bool parse_hex_colour(const std::string& s, double rgb[3]) {
+  static bool parse_hex_colour(std::string_view s, double rgb[3]) {
     if (s.size() != 7 || s[0] != '#') return false;
     for (int i = 0; i < 3; ++i) {
       unsigned v = 0;
@@ -808,7 +806,7 @@ class Parser {
   const std::string& source_;
   std::string_view text_;
   Lexer lexer_;
-  std::deque<Token> tokens_;  // tokens_[0] is token number first_
+  std::deque<Token> ahead_;  // read from the text, not yet passed: ahead_[0] is token number first_
   std::size_t first_ = 0;
   std::size_t pos_ = 0;
   Grammar g_;
