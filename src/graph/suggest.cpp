@@ -52,6 +52,10 @@ std::string closest_name(std::string_view name, const std::vector<std::string>& 
 
 std::string suggest(std::string_view name, const std::vector<std::string>& candidates, const std::string& what) {
   if (auto best = closest_name(name, candidates); !best.empty()) return "did you mean '" + shown_name(best) + "'?";
+  return listed(candidates, what);
+}
+
+std::string listed(const std::vector<std::string>& candidates, const std::string& what) {
   if (candidates.empty()) return "there are no " + what;
   std::string list;
   for (std::size_t i = 0; i < candidates.size() && i < 12; ++i) list += (i ? ", " : "") + shown_name(candidates[i]);

@@ -21,8 +21,11 @@ std::optional<std::size_t> edit_distance_within(std::string_view a, std::string_
 std::string closest_name(std::string_view name, const std::vector<std::string>& candidates);
 
 // A hint for an unknown name: "did you mean 'garage'?" when one candidate is
-// close, otherwise "<what> are: a, b, c" (at most 12 listed).
+// close, otherwise listed(candidates, what).
 std::string suggest(std::string_view name, const std::vector<std::string>& candidates, const std::string& what);
+
+// "<what> are: a, b, c" (at most 12 listed), or "there are no <what>".
+std::string listed(const std::vector<std::string>& candidates, const std::string& what);
 
 // A name as a message shows it: whole up to 60 bytes, else its start and
 // how long it is ("aaaa... (400000 characters)"), so that a hostile name
