@@ -30,9 +30,9 @@
 // there are several, or when the only one has a condition or a priority.
 #include "graph/parser.hpp"
 
+#include <array>
 #include <cctype>
 #include <cmath>
-#include <deque>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -108,10 +108,13 @@ class Parser {
   // holding the tokens of the file (or of a line of a million parts) took
   // some 40 times the memory of the text.
   Token peek(std::size_t ahead = 0) {
-    for (; first_ < pos_ && !ahead_.empty(); ++first_) ahead_.pop_front();
-    first_ = std::max(first_, pos_);  // read past the end: the lexer gives End again
-    while (ahead_.size() <= ahead) ahead_.push_back(lexer_.next());
-    return ahead_[ahead];
+    const std::size_t passed = std::min(pos_ - first_, count_);  // more: read past the end, which stays End
+    head_ = (head_ + passed) % ahead_.size();
+    count_ -= passed;
+    first_ = pos_;
+    if (ahead >= ahead_.size()) throw Error(ErrorKind::Internal, "the grammar parser looks too far ahead");
+    while (count_ <= ahead) ahead_[(head_ + count_++) % ahead_.size()] = lexer_.next();
+    return ahead_[(head_ + ahead) % ahead_.size()];
   }
   Token next() {
     const Token t = peek();
@@ -125,10 +128,11 @@ class Parser {
   }
   // `hint` shows the construct being read as it is written: most of these
   // errors are a missing bracket, comma or ':', which that makes plain.
-  Token expect(TokenKind k, const std::string& context, const std::string& hint) {
+  Token expect(TokenKind k, std::string_view context, std::string_view hint) {
     if (peek().kind != k) {
-      error(peek().loc, "expected " + std::string(token_kind_name(k)) + " " + context + ", found " + describe(peek()),
-            hint);
+      error(peek().loc,
+            "expected " + std::string(token_kind_name(k)) + " " + std::string(context) + ", found " + describe(peek()),
+            std::string(hint));
     }
     return next();
   }
@@ -806,8 +810,11 @@ class Parser {
   const std::string& source_;
   std::string_view text_;
   Lexer lexer_;
-  std::deque<Token> ahead_;  // read from the text, not yet passed: ahead_[0] is token number first_
-  std::size_t first_ = 0;
+  // The tokens read from the text and not yet passed, a ring: token number
+  // first_ + k is ahead_[(head_ + k) % 4], for k below count_. (A deque
+  // made and freed a block every few tokens.)
+  std::array<Token, 4> ahead_;
+  std::size_t head_ = 0, count_ = 0, first_ = 0;
   std::size_t pos_ = 0;
   Grammar g_;
   std::map<std::string, RuleId> labels_;
