@@ -156,6 +156,28 @@ void json_of_18_mb(const fs::path& d) {
   binary_file(d / "numbers.gltf", text + "]}");
 }
 
+// A grammar of `lines` alternatives of one label, 15 bytes a line.
+void many_alternatives(const fs::path& path, std::size_t lines) {
+  std::string text;
+  text.reserve(15 * lines);
+  for (std::size_t i = 0; i < lines; ++i) text += "a --> I(x) : 1\n";
+  write_text(path, text);
+}
+
+// A rule of `count` parameters, q0 to q(count - 1).
+void many_parameters(const fs::path& path, std::size_t count) {
+  std::string text = "p --> nil\nr(q0";
+  for (std::size_t i = 1; i < count; ++i) text += ", q" + std::to_string(i);
+  write_text(path, text + ") --> nil\n");
+}
+
+// min() of 65,534 arguments, half of them a parameter, derived 100 times.
+void min_of_many_arguments(const fs::path& path) {
+  std::string text = "p --> repeatN(x, 100){ q(1) }\nq(v) --> split(x){ ~min(1";
+  for (int i = 1; i < 65534; ++i) text += i % 2 ? ", v" : ", 1";
+  write_text(path, text + ") : I(rect) }\n");
+}
+
 // Files a failed run must leave as they were: the outputs of an earlier run.
 void earlier_outputs(const fs::path& d, const std::vector<std::string>& names) {
   for (const std::string& name : names) {
@@ -260,6 +282,9 @@ const std::vector<BadInput> kCases = {
    "huge_coordinate.obj:8:3: error: ", "'1e308' is too large", {"obj/huge_coordinate.obj"}},
   {"obj_coordinate_overflows_double", "infer", {"coordinate_overflows_double.obj", "-o", "style.grm"}, kInput,
    "coordinate_overflows_double.obj:8:5: error: ", "'1e999' is out of range", {"obj/coordinate_overflows_double.obj"}},
+  {"obj_coordinate_underflows_double", "infer", {"coordinate_underflows_double.obj", "-o", "style.grm"}, kInput,
+   "coordinate_underflows_double.obj:8:5: error: ",
+   "'1e-400' is too small for a number: nearer to zero than any double", {"obj/coordinate_underflows_double.obj"}},
   // A file's own up axis (forward/obj_reader.hpp): y or z, before any vertex.
   {"obj_up_axis_unknown", "infer", {"up_axis_unknown.obj", "-o", "style.grm"}, kInput,
    "up_axis_unknown.obj:1:6: error: ", "'# up x' declares an up axis other than y or z", {"obj/up_axis_unknown.obj"}},
@@ -550,6 +575,23 @@ const std::vector<BadInput> kCases = {
    "directive_without_name.grm:1:1: error: ", "'@' must start a directive", {"grammar/directive_without_name.grm"}},
   {"grammar_number_too_large", "generate", {"number_too_large.grm", "-o", "out.obj"}, kInput,
    "number_too_large.grm:1:17: error: ", "the number 1e999 is too large", {"grammar/number_too_large.grm"}},
+  {"grammar_number_too_small", "generate", {"number_too_small.grm", "-o", "out.obj"}, kInput,
+   "number_too_small.grm:1:17: error: ", "the number 1e-400 is too small: nearer to zero than any double",
+   {"grammar/number_too_small.grm"}},
+  {"grammar_number_without_exponent", "generate", {"number_without_exponent.grm", "-o", "out.obj"}, kInput,
+   "number_without_exponent.grm:1:17: error: ", "the number 2e has no digits after its exponent 'e'",
+   {"grammar/number_without_exponent.grm"}},
+  {"grammar_infinity_as_number", "generate", {"infinity_as_number.grm", "-o", "out.obj"}, kInput,
+   "infinity_as_number.grm:1:32: error: ", "'inf' is not a number here: a grammar's numbers are finite",
+   {"grammar/infinity_as_number.grm"}},
+  // Editors on Windows start UTF-8 files with a byte-order mark.
+  {"grammar_byte_order_mark_works", "generate", {"bom.grm", "-o", "out.obj"}, kOk,
+   "", "", {}, [](const fs::path& d) {
+     write_text(d / "bom.grm", "\xEF\xBB\xBF" + test::read_file(kCorpus / "grammar/ok.grm")); },
+   nullptr, 0, {"out.obj"}},
+  {"grammar_byte_order_mark_inside", "generate", {"byte_order_mark_inside.grm", "-o", "out.obj"}, kInput,
+   "byte_order_mark_inside.grm:1:31: error: ", "unexpected byte-order mark (U+FEFF) after the start of the file",
+   {"grammar/byte_order_mark_inside.grm"}},
   {"grammar_number_unreadable", "generate", {"number_unreadable.grm", "-o", "out.obj"}, kInput,
    "number_unreadable.grm:1:17: error: ", "cannot read the number '1.2.3'", {"grammar/number_unreadable.grm"}},
   {"grammar_number_runs_into_name", "generate", {"number_runs_into_name.grm", "-o", "out.obj"}, kInput,
@@ -647,6 +689,18 @@ const std::vector<BadInput> kCases = {
      std::string text = "p --> split(x){ choice(1";
      for (int i = 1; i < 70000; ++i) text += ", 1";
      write_text(d / "many.grm", text + ") : nil }\n"); }},
+  {"grammar_too_many_parameters", "generate", {"many.grm", "-o", "out.obj"}, kInput,
+   "many.grm:2:", "'r' has more than 65535 parameters",
+   {}, [](const fs::path& d) { many_parameters(d / "many.grm", 70000); }},
+  // Not a timing test: a walk over the arguments per argument took some
+  // ten seconds per min(), here derived 100 times, and a "did you mean"
+  // over two names of 2,000,000 characters the product of their lengths.
+  {"grammar_min_of_many_arguments_works", "generate", {"min.grm", "-o", "out.obj"}, kOk,
+   "", "", {}, [](const fs::path& d) { min_of_many_arguments(d / "min.grm"); }, nullptr, 0, {"out.obj"}},
+  {"grammar_unknown_rule_very_long_name", "generate", {"long.grm", "-o", "out.obj"}, kInput,
+   "long.grm:1:", "unknown rule '" + std::string(40, 'a') + "... (2000000 characters)'",
+   {}, [](const fs::path& d) {
+     write_text(d / "long.grm", std::string(2000000, 'a') + " --> " + std::string(1999999, 'a') + "b\n"); }},
   {"grammar_nesting_too_deep", "generate", {"deep.grm", "-o", "out.obj"}, kInput,
    "deep.grm:1:", "nested more than 256 deep",
    {}, [](const fs::path& d) {
@@ -834,6 +888,13 @@ const std::vector<BadInput> kCases = {
    {"terminal_explosion.grm", "--max-terminals", "100000000000", "-j", "1", "-o", "out.obj"}, kLimit,
    "terminal_explosion.grm: error: ", "out of memory deriving 1 building", {"grammar/terminal_explosion.grm"},
    nullptr, "out.obj", 0, {}, {}, 300},
+  {"limit_memory_reading_names_the_grammar", "generate", {"many.grm", "-o", "out.obj"}, kLimit,
+   "many.grm: error: ", "out of memory while reading this grammar",
+   {}, [](const fs::path& d) { many_alternatives(d / "many.grm", 1000000); }, nullptr, 0, {}, {}, 100},
+  // 2.25 MB of alternatives took 196 MB (tokens held whole, a heap block
+  // per number, Choose options copied); now 54 MB, and 128 MB under ASan.
+  {"grammar_many_alternatives_memory", "generate", {"many.grm", "-o", "out.obj"}, kOk,
+   "", "", {}, [](const fs::path& d) { many_alternatives(d / "many.grm", 150000); }, nullptr, 160, {"out.obj"}},
   {"limit_operations", "generate", {"ok.grm", "--max-operations", "2", "-o", "out.obj"}, kLimit,
    "ok.grm:1:", "more than 2 operations in one derivation", kValidGrammar},
   {"limit_repeat_subnormal_tile", "generate", {"repeat_subnormal_tile.grm", "-o", "out.obj"}, kLimit,
