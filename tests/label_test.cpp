@@ -122,7 +122,7 @@ TEST(Label, MessagesShowHostileNamesAsEscapes) {
   EXPECT_EQ(shown_name("a\0b"s), "a\\x00b");
   EXPECT_EQ(shown_name("fen\xEAtre"), "fen\\xEAtre");
   EXPECT_EQ(shown_name("a\xE2\x80\xAE" "b"), "a\\u202Eb");
-  EXPECT_EQ(shown_name(std::string(300, 'a')), std::string(100, 'a') + "...");
+  EXPECT_EQ(shown_name(std::string(300, 'a')), std::string(40, 'a') + "... (300 characters)");
 }
 
 TEST(Label, ReadingANameThatIsNoLabelNamesThePlaceAndWhatItDecodesTo) {

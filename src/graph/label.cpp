@@ -1,5 +1,6 @@
 #include "graph/label.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "graph/utf8.hpp"
@@ -112,10 +113,17 @@ void require_label(std::string_view label, const std::string& file, SourceLoc lo
 }
 
 std::string shown_name(std::string_view text) {
-  constexpr std::size_t kShown = 100;
+  constexpr std::size_t kShown = 60, kStart = 40;
   if (text.size() <= kShown && is_printable_ascii(text)) return std::string(text);
+  // A longer name shows its start, cut before a UTF-8 continuation byte,
+  // never inside a character.
+  std::size_t cut = text.size();
+  if (text.size() > kShown) {
+    cut = kStart;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  }
   std::string out;
-  const std::string_view head = text.substr(0, kShown);
+  const std::string_view head = text.substr(0, cut);
   for (std::size_t at = 0; at < head.size();) {
     const std::size_t bad = invalid_utf8_offset(head.substr(at, 4));
     char escape[16];
@@ -142,7 +150,11 @@ std::string shown_name(std::string_view text) {
       out.append(head.substr(start, at - start));
     }
   }
-  if (text.size() > kShown) out += "...";
+  if (cut < text.size()) {
+    const auto characters = std::count_if(text.begin(), text.end(),
+                                          [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
+    out += "... (" + std::to_string(characters) + " characters)";
+  }
   return out;
 }
 

@@ -55,9 +55,10 @@ std::optional<std::string> label_fault(std::string_view text);
 void require_label(std::string_view label, const std::string& file, SourceLoc loc, const std::string& what);
 
 // Text from a file as a message may show it: control characters, bidirectional
-// controls and bytes that are not UTF-8 as escapes (\n, \t, \x1B, \u202E), and
-// at most 100 bytes of it ("..." after), so that a hostile name can neither
-// break a message's lines nor drive the terminal.
+// controls and bytes that are not UTF-8 as escapes (\n, \t, \x1B, \u202E),
+// whole up to 60 bytes, else its first 40 and how long it is
+// ("aaaa... (400000 characters)"), so that a hostile name can neither break
+// a message's lines, drive the terminal nor make a message of megabytes.
 std::string shown_name(std::string_view text);
 
 // "window.001" -> "window", "wall.12" -> "wall", "v1.5" -> "v1": a final

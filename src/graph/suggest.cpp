@@ -63,15 +63,4 @@ std::string listed(const std::vector<std::string>& candidates, const std::string
   return what + " are: " + list;
 }
 
-std::string shown_name(std::string_view name) {
-  constexpr std::size_t kShown = 60, kStart = 40;
-  if (name.size() <= kShown) return std::string(name);
-  // Cut before a UTF-8 continuation byte, never inside a character.
-  std::size_t cut = kStart;
-  while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;
-  const auto characters = std::count_if(name.begin(), name.end(),
-                                        [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
-  return std::string(name.substr(0, cut)) + "... (" + std::to_string(characters) + " characters)";
-}
-
 }  // namespace vern

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "graph/label.hpp"  // shown_name: how the names suggested are shown
+
 namespace vern {
 
 // The Levenshtein distance between a and b when it is at most `limit`,
@@ -27,9 +29,5 @@ std::string suggest(std::string_view name, const std::vector<std::string>& candi
 // "<what> are: a, b, c" (at most 12 listed), or "there are no <what>".
 std::string listed(const std::vector<std::string>& candidates, const std::string& what);
 
-// A name as a message shows it: whole up to 60 bytes, else its start and
-// how long it is ("aaaa... (400000 characters)"), so that a hostile name
-// does not make a message of megabytes.
-std::string shown_name(std::string_view name);
 
 }  // namespace vern
