@@ -35,7 +35,7 @@ constexpr int kOk = 0, kUsage = 2, kInput = 3, kLimit = 4, kIo = 5;
 
 struct BadInput {
   const char* name;
-  const char* tool;               // generate, infer or check
+  const char* tool;               // generate, infer, check or evaluate
   std::vector<std::string> args;  // run in the case's folder
   int exit_code;
   std::string where;  // the place the message must name ("x.obj:2:3: error: ")
@@ -895,6 +895,27 @@ const std::vector<BadInput> kCases = {
    [](const fs::path& d) { write_text(d / "file", "a file, not a folder\n"); }},
   {"infer_unwritable_primitives_out", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out", "meshes/style.obj"},
    kIo, "meshes/style.obj: error: ", "cannot write here: meshes is not an existing folder", kValidObj, nullptr, "style.grm"},
+
+  // evaluate's --keep writes a grammar per grammar evaluated, and
+  // --random-styles-write the styles: none may be a grammar evaluated, and
+  // no two may be one file.
+  {"evaluate_keep_is_the_grammars_folder", "evaluate", {"ok.grm", "-k", "2", "-n", "2", "--keep", "."}, kUsage,
+   "evaluate: error: ", "the output ./ok.grm is the grammar file itself", kValidGrammar},
+  {"evaluate_two_grammars_kept_in_one_file", "evaluate",
+   {"a/ok.grm", "b/ok.grm", "-k", "2", "-n", "2", "--keep", "kept"}, kUsage, "evaluate: error: ",
+   "the grammar inferred from a/ok.grm and the grammar inferred from b/ok.grm would both be written to kept/ok.grm", {},
+   [](const fs::path& d) {
+     for (const char* folder : {"a", "b", "kept"}) fs::create_directory(d / folder);
+     fs::copy_file(kCorpus / "grammar/ok.grm", d / "a/ok.grm");
+     fs::copy_file(kCorpus / "grammar/ok.grm", d / "b/ok.grm"); }},
+  {"evaluate_kept_over_another_grammar", "evaluate",
+   {"ok.grm", "ok.3.grm", "--precision-recall", "--counts", "3", "--samples", "2", "--keep", "."}, kUsage,
+   "evaluate: error: ", "the output ./ok.3.grm is the grammar file itself (ok.3.grm)", kValidGrammar,
+   [](const fs::path& d) { fs::copy_file(kCorpus / "grammar/ok.grm", d / "ok.3.grm"); }},
+  {"evaluate_random_style_written_over_a_grammar", "evaluate",
+   {"random_style_0.grm", "-k", "2", "-n", "2", "--random-styles", "1", "--seed", "3", "--random-styles-write", "."},
+   kUsage, "evaluate: error: ", "the output ./random_style_0.grm is the grammar file itself (random_style_0.grm)", {},
+   [](const fs::path& d) { fs::copy_file(kCorpus / "grammar/ok.grm", d / "random_style_0.grm"); }},
 
   {"check_unknown_option", "check", {"ok.grm", "two_parts.obj", "--breif"}, kUsage,
    "check: error: ", "unknown option '--breif'\n  hint: did you mean '--brief'?", kGrammarAndObj},
