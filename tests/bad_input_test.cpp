@@ -132,6 +132,18 @@ void secret_beside_the_folder(const fs::path& d) {
   binary_file(d / "secret.bin", box_bytes());
 }
 
+// model.gltf, whose buffer is the file `name`: an input no command line names.
+void buffer_named(const fs::path& d, const std::string& name) {
+  write_text(d / "model.gltf", gltf_naming(name, 48));
+  binary_file(d / name, box_bytes());
+}
+
+// A --primitives folder `p` holding one mesh, `name`.
+void primitives_folder(const fs::path& d, const std::string& name) {
+  fs::create_directory(d / "p");
+  fs::copy_file(kCorpus / "obj/two_parts.obj", d / "p" / name);
+}
+
 void fifo(const fs::path& path) { ASSERT_EQ(mkfifo(path.c_str(), 0644), 0) << path; }
 
 // The grammars copied in moved into g/, with a valid OBJ, secret.obj, beside
@@ -847,6 +859,16 @@ const std::vector<BadInput> kCases = {
      fs::create_directory(d / "out");
      fs::copy_file(kCorpus / "obj/two_parts.obj", d / "out/variant_000.obj"); }},
 
+  // Every file a run reads is an input, named on the command line or not:
+  // a glTF's buffer, a mesh of a primitives folder (the run fails at the
+  // first output that is one, before anything is renamed).
+  {"generate_output_is_in_the_primitives_folder", "generate", {"ok.grm", "--primitives", "p", "-o", "p/x.obj"}, kUsage,
+   "p/x.obj: error: ", "this output is a file the run has read", kValidGrammar,
+   [](const fs::path& d) { primitives_folder(d, "x.obj"); }},
+  {"generate_output_folder_is_the_primitives_folder", "generate", {"ok.grm", "--primitives", "p", "-o", "p/"}, kUsage,
+   "p/variant_000.obj: error: ", "this output is a file the run has read", kValidGrammar,
+   [](const fs::path& d) { primitives_folder(d, "variant_000.obj"); }},
+
   {"infer_unknown_option", "infer", {"two_parts.obj", "-o", "style.grm", "--tolerence", "1"}, kUsage,
    "infer: error: ", "unknown option '--tolerence'\n  hint: did you mean '--tolerance'?", kValidObj},
   {"infer_missing_value", "infer", {"two_parts.obj", "-o"}, kUsage,
@@ -886,6 +908,15 @@ const std::vector<BadInput> kCases = {
        if (e.path().extension() == ".obj") fs::copy_file(e.path(), d / "examples" / e.path().filename());
      earlier_outputs(d, {"style.grm", "style.prims.obj", "style.prims.mtl"}); },
    nullptr, 0, {}, {}, 0, 3000},
+  {"infer_gltf_buffer_is_the_meshes_materials", "infer", {"model.gltf", "-o", "style.grm"}, kUsage,
+   "style.prims.mtl: error: ", "this output is a file the run has read (as ./style.prims.mtl)", {},
+   [](const fs::path& d) { buffer_named(d, "style.prims.mtl"); }},
+  {"infer_gltf_buffer_is_the_grammar", "infer", {"model.gltf", "-o", "style.grm"}, kUsage,
+   "style.grm: error: ", "this output is a file the run has read (as ./style.grm)", {},
+   [](const fs::path& d) { buffer_named(d, "style.grm"); }},
+  {"infer_primitives_folder_holds_the_meshes", "infer", {"two_parts.obj", "--primitives", "p", "-o", "p/s.grm"}, kUsage,
+   "p/s.prims.obj: error: ", "this output is a file the run has read", kValidObj,
+   [](const fs::path& d) { primitives_folder(d, "s.prims.obj"); }},
   {"infer_primitives_out_not_obj", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out", "style.glb"}, kUsage,
    "infer: error: ", "--primitives-out must name an .obj file", kValidObj},
   {"infer_output_is_a_folder", "infer", {"two_parts.obj", "-o", "style.grm"}, kIo,

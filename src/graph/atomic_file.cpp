@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "graph/error.hpp"
+#include "graph/files_read.hpp"
 #include "graph/interrupt_cleanup.hpp"
 #include "graph/write_all.hpp"
 
@@ -102,8 +103,11 @@ void OutputFiles::stage(const fs::path& path, std::span<const std::string_view> 
 }
 
 OutputFile OutputFiles::open(const fs::path& path) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) fail(ErrorKind::Io, path.string(), {}, "is a folder, not a file", "name a file to write");
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) fail(ErrorKind::Io, path.string(), {}, "is a folder, not a file", "name a file to write");
+    refuse_file_read(path, st);
+  }
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   watch_folder(folder);
   std::string temp = temporary_template(path);
@@ -130,6 +134,8 @@ void OutputFile::close() {
 }
 
 void OutputFiles::commit() {
+  // Checked again: a file read since it was staged is an input too.
+  for (const Staged& s : staged_) refuse_file_read(s.destination);
   const SignalsHeld held;
   std::vector<Replaced> replaced;
   replaced.reserve(staged_.size());

@@ -6,7 +6,8 @@
 // and watches it), and every file of a run is written before any is
 // renamed over its destination. A failure while writing (a full disk, a
 // signal) leaves whatever was there before untouched; a rename that fails
-// at the end puts back what the renames before it replaced.
+// at the end puts back what the renames before it replaced. A destination
+// that is a file the run has read is refused (files_read.hpp).
 #pragma once
 
 #include <filesystem>
@@ -54,7 +55,8 @@ class OutputFiles {
   // Writes the pieces, one after another (a large file need not be joined
   // in memory first), to a temporary file beside `path`. Throws
   // vern::Error (Io) naming path when it is a folder, or its folder is
-  // missing or not writable, or the disk is full.
+  // missing or not writable, or the disk is full; (Usage) when it is a
+  // file this run has read (files_read.hpp).
   void stage(const std::filesystem::path& path, std::span<const std::string_view> pieces);
   void stage(const std::filesystem::path& path, std::string_view content);
 
@@ -65,7 +67,9 @@ class OutputFiles {
   // Renames every staged file over its destination, in the order staged.
   // Signals wait until it is done. When a rename fails, the destinations
   // replaced before it get their earlier files back (those that were new
-  // are removed) and vern::Error (Io) names the one that failed.
+  // are removed) and vern::Error (Io) names the one that failed. Throws
+  // vern::Error (Usage) before renaming anything when a destination is a
+  // file this run has read.
   void commit();
 
  private:
