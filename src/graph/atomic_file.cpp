@@ -102,6 +102,14 @@ void OutputFiles::stage(const fs::path& path, std::span<const std::string_view> 
   file.close();
 }
 
+FolderClaim& OutputFiles::claim(const fs::path& folder, const fs::path& output) {
+  // A folder of a million variants asks a million times: the last one first.
+  for (auto it = claims_.rbegin(); it != claims_.rend(); ++it)
+    if ((*it)->folder() == folder) return **it;
+  claims_.push_back(std::make_unique<FolderClaim>(folder, output));
+  return *claims_.back();
+}
+
 OutputFile OutputFiles::open(const fs::path& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0) {
@@ -109,7 +117,7 @@ OutputFile OutputFiles::open(const fs::path& path) {
     refuse_file_read(path, st);
   }
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  watch_folder(folder);
+  claim(folder, path).sweep(path.filename().string());
   std::string temp = temporary_template(path);
   const int fd = ::mkstemp(temp.data());
   if (fd < 0) io_error(path, "cannot create a temporary file in " + folder.string(), errno);
@@ -157,6 +165,7 @@ void OutputFiles::commit() {
   for (const Replaced& r : replaced)
     if (!r.backup.empty()) ::unlink(r.backup.c_str());
   staged_.clear();
+  claims_.clear();
 }
 
 void write_file_atomically(const fs::path& path, std::string_view content) {

@@ -3,19 +3,23 @@
 //
 // Everything the toolkit writes goes through here: the bytes go to a
 // temporary file in the destination's folder (interrupt_cleanup.hpp names
-// and watches it), and every file of a run is written before any is
-// renamed over its destination. A failure while writing (a full disk, a
-// signal) leaves whatever was there before untouched; a rename that fails
-// at the end puts back what the renames before it replaced. A destination
-// that is a file the run has read is refused (files_read.hpp).
+// and watches it; folder_claim.hpp claims the folder while it is there),
+// and every file of a run is written before any is renamed over its
+// destination. A failure while writing (a full disk, a signal) leaves
+// whatever was there before untouched; a rename that fails at the end
+// puts back what the renames before it replaced. A destination that is a
+// file the run has read is refused (files_read.hpp).
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#include "graph/folder_claim.hpp"
 
 namespace vern {
 
@@ -56,7 +60,8 @@ class OutputFiles {
   // in memory first), to a temporary file beside `path`. Throws
   // vern::Error (Io) naming path when it is a folder, or its folder is
   // missing or not writable, or the disk is full; (Usage) when it is a
-  // file this run has read (files_read.hpp).
+  // file this run has read (files_read.hpp). First removes what runs that
+  // are over left for `path` (folder_claim.hpp).
   void stage(const std::filesystem::path& path, std::span<const std::string_view> pieces);
   void stage(const std::filesystem::path& path, std::string_view content);
 
@@ -77,6 +82,8 @@ class OutputFiles {
     std::filesystem::path destination;
     std::string temporary;
   };
+  FolderClaim& claim(const std::filesystem::path& folder, const std::filesystem::path& output);
+  std::vector<std::unique_ptr<FolderClaim>> claims_;  // given up after the temporaries are gone
   std::vector<Staged> staged_;
 };
 
