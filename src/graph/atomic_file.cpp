@@ -37,6 +37,14 @@ mode_t output_mode(const fs::path& destination) {
   return 0666 & ~g_umask;
 }
 
+// A run of a few files (infer's three, one scene and its materials) puts
+// each on disk alone as it is closed (fsync): it waits for its own bytes
+// only. Past these, the commit puts the whole file system on disk at once
+// (syncfs), as costly as one fsync where each costs a journal commit:
+// generate's 2000 variants (4000 files) took a median 4.26 s so, 19.8 s
+// with an fsync each, 3.91 s before anything was synced.
+constexpr std::size_t kSyncedOneByOne = 16;
+
 [[noreturn]] void io_error(const fs::path& path, const std::string& what, int err) {
   fail(ErrorKind::Io, path.string(), {}, what + ": " + std::strerror(err), "check that the folder exists and is writable");
 }
@@ -122,7 +130,7 @@ OutputFile OutputFiles::open(const fs::path& path) {
   const int fd = ::mkstemp(temp.data());
   if (fd < 0) io_error(path, "cannot create a temporary file in " + folder.string(), errno);
   staged_.push_back({path, temp});  // removed by the destructor unless committed
-  return OutputFile(path, fd);
+  return OutputFile(path, fd, durability_ == Durability::Synced && staged_.size() <= kSyncedOneByOne);
 }
 
 OutputFile::~OutputFile() {
@@ -136,14 +144,21 @@ void OutputFile::write(std::string_view content) {
 void OutputFile::close() {
   if (fd_ < 0) return;
   ::fchmod(fd_, output_mode(destination_));
-  const int fd = fd_;
-  fd_ = -1;
+  const int fd = std::exchange(fd_, -1);
+  // On disk before it is renamed over anything: after a power cut the
+  // destination holds this file whole, or the earlier one.
+  const int unsynced = !sync_ || ::fsync(fd) == 0 ? 0 : errno;
   if (::close(fd) != 0) io_error(destination_, "cannot write", errno);
+  if (unsynced) io_error(destination_, "cannot write", unsynced);
 }
 
 void OutputFiles::commit() {
   // Checked again: a file read since it was staged is an input too.
   for (const Staged& s : staged_) refuse_file_read(s.destination);
+  const bool synced = durability_ == Durability::Synced;
+  if (synced && staged_.size() > kSyncedOneByOne)
+    for (const std::unique_ptr<FolderClaim>& folder : claims_)
+      if (const int err = folder->sync_file_system()) io_error(folder->folder(), "cannot write", err);
   const SignalsHeld held;
   std::vector<Replaced> replaced;
   replaced.reserve(staged_.size());
@@ -160,6 +175,13 @@ void OutputFiles::commit() {
       replaced.pop_back();
       put_back(replaced);
       io_error(s.destination, "cannot replace", err);
+    }
+  }
+  // The renames on disk: once per folder, not once per file.
+  for (const std::unique_ptr<FolderClaim>& folder : claims_) {
+    if (const int err = synced ? folder->sync_folder() : 0) {
+      put_back(replaced);
+      io_error(folder->folder(), "cannot write the folder", err);
     }
   }
   for (const Replaced& r : replaced)

@@ -225,4 +225,8 @@ void FolderClaim::sweep(const std::string& name) {
   leftovers_.erase(it);
 }
 
+int FolderClaim::sync_folder() const { return ::fsync(folder_fd_) == 0 ? 0 : errno; }
+
+int FolderClaim::sync_file_system() const { return ::syncfs(folder_fd_) == 0 ? 0 : errno; }
+
 }  // namespace vern

@@ -45,6 +45,13 @@ class FolderClaim {
   // name in this folder).
   void sweep(const std::string& name);
 
+  // Puts the folder's entries (the renames into it) on disk (fsync): 0,
+  // or the errno of the failure.
+  int sync_folder() const;
+  // Puts everything written to the folder's file system on disk (syncfs),
+  // this run's files with it: 0, or the errno of the failure.
+  int sync_file_system() const;
+
  private:
   // Whether a run still holds the folder.
   enum class Holding { NotAsked, Live, Over, Untold };
