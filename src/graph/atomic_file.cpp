@@ -1,12 +1,10 @@
 #include "graph/atomic_file.hpp"
 
 #include <fcntl.h>
-#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 
@@ -48,23 +46,6 @@ constexpr std::size_t kSyncedOneByOne = 16;
 [[noreturn]] void io_error(const fs::path& path, const std::string& what, int err) {
   fail(ErrorKind::Io, path.string(), {}, what + ": " + std::strerror(err), "check that the folder exists and is writable");
 }
-
-// Signals that end a run wait while the renames run: a run is then either
-// all renamed or (the handler removing the temporaries) not at all.
-class SignalsHeld {
- public:
-  SignalsHeld() {
-    sigset_t all;
-    sigfillset(&all);
-    pthread_sigmask(SIG_BLOCK, &all, &saved_);
-  }
-  ~SignalsHeld() { pthread_sigmask(SIG_SETMASK, &saved_, nullptr); }
-  SignalsHeld(const SignalsHeld&) = delete;
-  SignalsHeld& operator=(const SignalsHeld&) = delete;
-
- private:
-  sigset_t saved_;
-};
 
 // A destination's earlier file, kept under another name while the run's
 // files are renamed, so that a failed rename can put it back.
@@ -127,7 +108,10 @@ OutputFile OutputFiles::open(const fs::path& path) {
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   claim(folder, path).sweep(path.filename().string());
   std::string temp = temporary_template(path);
-  const int fd = ::mkstemp(temp.data());
+  const int fd = [&] {
+    const SignalsWait made_whole;
+    return ::mkstemp(temp.data());
+  }();
   if (fd < 0) io_error(path, "cannot create a temporary file in " + folder.string(), errno);
   staged_.push_back({path, temp});  // removed by the destructor unless committed
   return OutputFile(path, fd, durability_ == Durability::Synced && staged_.size() <= kSyncedOneByOne);
@@ -159,7 +143,7 @@ void OutputFiles::commit() {
   if (synced && staged_.size() > kSyncedOneByOne)
     for (const std::unique_ptr<FolderClaim>& folder : claims_)
       if (const int err = folder->sync_file_system()) io_error(folder->folder(), "cannot write", err);
-  const SignalsHeld held;
+  const SignalsWait renamed_whole;
   std::vector<Replaced> replaced;
   replaced.reserve(staged_.size());
   for (const Staged& s : staged_) {

@@ -123,7 +123,10 @@ FolderClaim::FolderClaim(const fs::path& folder, const fs::path& output) : folde
   if (folder_fd_ < 0) io_error(output, "cannot create a temporary file in " + folder_.string(), errno);
   for (int attempt = 0; lock_fd_ < 0; ++attempt) {
     std::string path = lock_file_template(folder_);
-    const int fd = ::mkostemps(path.data(), 5, O_CLOEXEC);
+    const int fd = [&] {
+      const SignalsWait made_whole;
+      return ::mkostemps(path.data(), 5, O_CLOEXEC);
+    }();
     if (fd < 0 || attempt == 8) {
       const int err = fd < 0 ? errno : EAGAIN;
       if (fd >= 0) ::close(fd);

@@ -2,7 +2,9 @@
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/random.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -19,8 +21,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // Only async-signal-safe calls run in the handler: open, getdents64,
-// unlinkat, close, signal, raise; the folders and the name to look for are
-// prepared before any signal can need them.
+// unlinkat, close, nanosleep, signal, raise; the folders and the name to
+// look for are prepared before any signal can need them.
 constexpr std::size_t kMaxFolders = 64;
 constexpr std::size_t kMaxPath = 4096;
 
@@ -89,7 +91,17 @@ void remove_own_temporaries(const char* folder, const char* tag) {
   ::close(dir);
 }
 
+// A signal is ending the run; changes to its files under way (SignalsWait).
+std::atomic<bool> g_ending{false};
+std::atomic<int> g_changing{0};
+
 void on_signal(int sig) {
+  // Changes begun from now on wait for the end; those under way end first.
+  g_ending.store(true);
+  while (g_changing.load() > 0) {
+    const timespec a_millisecond{0, 1'000'000};
+    ::nanosleep(&a_millisecond, nullptr);
+  }
   const std::size_t count = g_folder_count.load();
   for (std::size_t i = 0; i < count && i < kMaxFolders; ++i)
     if (g_folders[i].ready.load()) remove_own_temporaries(g_folders[i].path, g_own_tag);
@@ -139,6 +151,24 @@ void watch_folder(const fs::path& folder) {
   std::memcpy(g_folders[count].path, path.c_str(), path.size() + 1);
   g_folders[count].ready.store(true);
   g_folder_count.store(count + 1);
+}
+
+SignalsWait::SignalsWait() {
+  sigset_t all;
+  sigfillset(&all);
+  pthread_sigmask(SIG_BLOCK, &all, &saved_);
+  g_changing.fetch_add(1);
+  if (g_ending.load()) {
+    // Too late: the handler, on another thread, has removed (or is
+    // removing) this run's files and ends the process.
+    g_changing.fetch_sub(1);
+    for (;;) ::pause();
+  }
+}
+
+SignalsWait::~SignalsWait() {
+  g_changing.fetch_sub(1);
+  pthread_sigmask(SIG_SETMASK, &saved_, nullptr);
 }
 
 void install_interrupt_cleanup() {

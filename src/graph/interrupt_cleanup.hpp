@@ -12,6 +12,8 @@
 // into the folder sweeps (folder_claim.hpp).
 #pragma once
 
+#include <signal.h>
+
 #include <filesystem>
 #include <string>
 
@@ -31,6 +33,24 @@ std::string lock_file_template(const std::filesystem::path& folder);
 // Watches `folder` from now on: a signal that ends the run removes this
 // run's files there. Up to 64 folders a process; more are not watched.
 void watch_folder(const std::filesystem::path& folder);
+
+// A change to the run's files that a signal must not cut short: a
+// temporary made (the handler must find it to remove it), the files of a
+// run renamed into place (all of them, or none). While one lasts, signals
+// wait in its thread, and a handler running on another thread (the
+// command runs on a thread of its own, and derives on several) waits for
+// it to end. One begun after a signal has come waits for the end of the
+// process instead.
+class SignalsWait {
+ public:
+  SignalsWait();
+  ~SignalsWait();
+  SignalsWait(const SignalsWait&) = delete;
+  SignalsWait& operator=(const SignalsWait&) = delete;
+
+ private:
+  sigset_t saved_;
+};
 
 // Installs handlers for the signals that end a process and come from
 // outside it (SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGPIPE, SIGALRM, SIGUSR1,
