@@ -450,8 +450,10 @@ TEST(Example, InstancingErrors) {
 // Two meshes in the xy plane (y-up): "pair", two triangles apart, and
 // "quad", two triangles whose corners meet at equal positions (not shared
 // indices). Each node of `nodes` names a mesh of `meshes`, a list of
-// POSITION accessors: 0 for the pair's, 1 for the quad's.
-std::string two_meshes_gltf(const std::string& meshes, const std::string& nodes) {
+// POSITION accessors: 0 for the pair's, 1 for the quad's; the scene's
+// roots are the nodes `roots` lists.
+std::string two_meshes_gltf(const std::string& meshes, const std::string& nodes,
+                            const std::string& roots = "0, 1, 2, 3") {
   const float v[36] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 3, 0, 0, 4, 0, 0, 3, 1, 0,   // pair
                        0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0};  // quad
   std::string bytes(sizeof v, '\0');
@@ -468,7 +470,7 @@ std::string two_meshes_gltf(const std::string& meshes, const std::string& nodes)
                 {"bufferView": 1, "componentType": 5126, "count": 6, "type": "VEC3"}],
   "meshes": [)" + mesh_list + R"(],
   "nodes": [)" + nodes + R"(],
-  "scenes": [{"nodes": [0, 1, 2, 3]}], "scene": 0})";
+  "scenes": [{"nodes": [)" + roots + R"(]}], "scene": 0})";
 }
 
 // A mesh that several nodes use is read once and placed for each
@@ -514,11 +516,11 @@ TEST(Example, ASharedMeshFailsAtTheFirstNodeThatCannotBePlaced) {
   TempFolder dir;
   const std::string far = R"("scale": [1e300, 1, 1])";
   write_text(dir / "first.gltf",
-             two_meshes_gltf("0", R"({"name": "a", "mesh": 0, )" + far + R"(}, {"name": "b", "mesh": 0})"));
+             two_meshes_gltf("0", R"({"name": "a", "mesh": 0, )" + far + R"(}, {"name": "b", "mesh": 0})", "0, 1"));
   std::string e = load_error(dir / "first.gltf");
   EXPECT_TRUE(contains(e, "node 0 'a': vertex 1 lies at (1e+300, 0, 0)")) << e;
   write_text(dir / "second.gltf",
-             two_meshes_gltf("0", R"({"name": "a", "mesh": 0}, {"name": "b", "mesh": 0, )" + far + "}"));
+             two_meshes_gltf("0", R"({"name": "a", "mesh": 0}, {"name": "b", "mesh": 0, )" + far + "}", "0, 1"));
   e = load_error(dir / "second.gltf");
   EXPECT_TRUE(contains(e, "node 1 'b': vertex 1 lies at (1e+300, 0, 0)")) << e;
 }

@@ -21,6 +21,27 @@ TEST(Expr, PostOrderKeepsSubtreeSizesAndChildren) {
   EXPECT_EQ(e.node(sum_kids[1]).number, 2.0);
 }
 
+// A one-node Expr keeps its place in the text without a heap block, and
+// copies, moves and growth keep it.
+TEST(Expr, OneNodeKeepsItsLocation) {
+  const SourceLoc at{3, 7}, plus{3, 9}, other{4, 1};
+  Expr e = Expr::number(2, at);
+  EXPECT_EQ(e.loc(), at);
+  Expr copy = e;
+  EXPECT_EQ(copy.loc(), at);
+  Expr moved = std::move(copy);
+  EXPECT_EQ(moved.loc(), at);
+  moved = Expr::param(0, other);
+  EXPECT_EQ(moved.loc(), other);
+  const Expr sum = Expr::binary(BinaryOp::Add, e, Expr::number(1), plus);
+  ASSERT_EQ(sum.nodes().size(), 3u);
+  EXPECT_EQ(sum.loc(0), at);
+  EXPECT_EQ(sum.loc(1), SourceLoc{});
+  EXPECT_EQ(sum.loc(), plus);
+  EXPECT_EQ(sum, Expr::binary(BinaryOp::Add, Expr::number(2), Expr::number(1)));  // places take no part
+  EXPECT_EQ(Expr().loc(), SourceLoc{});
+}
+
 TEST(Expr, NegatedLiteralIsOneLiteral) {
   Expr e = Expr::unary(UnaryOp::Neg, Expr::number(2.5));
   EXPECT_EQ(e, Expr::number(-2.5));

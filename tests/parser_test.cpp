@@ -175,6 +175,19 @@ TEST(Parser, ReportsUnknownNamesWithSuggestions) {
   EXPECT_NE(parse_error("p --> colour(purpel)").find("unknown colour 'purpel'"), std::string::npos);
 }
 
+// A name of megabytes makes no message of megabytes; a character that may
+// show as nothing is named by its code point.
+TEST(Parser, ShowsWhatItQuotesReadably) {
+  const std::string name(100, 'a');
+  EXPECT_NE(parse_error("p --> split " + name).find("found '" + std::string(40, 'a') + "... (100 characters)'"),
+            std::string::npos);
+  EXPECT_NE(parse_error("p --> " + name).find("unknown rule '" + std::string(40, 'a') + "... (100 characters)'"),
+            std::string::npos);
+  EXPECT_NE(parse_error("p --> split(x){ 1 \xE2\x89\x88 2 : nil }").find("character '\xE2\x89\x88' (U+2248)"),
+            std::string::npos);
+  EXPECT_NE(parse_error("p --> nil\xC2\xA0").find("unexpected character '\xC2\xA0' (U+00A0)"), std::string::npos);
+}
+
 TEST(Parser, ReportsWrongArgumentCounts) {
   EXPECT_EQ(parse_error("p --> wall(x)\nwall(a, b) --> nil"),
             "g.grm:1:7: error: 'wall' takes 2 arguments, given 1\n  hint: it is defined at 2:1 as wall(a, b)");

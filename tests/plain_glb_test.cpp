@@ -132,6 +132,7 @@ TEST(PlainGlb, EverythingElseIsLeftToTinygltf) {
       {R"("componentType":5126,)", ""},                                       // a required key missing
       {R"("componentType":5126,)", R"("componentType":5000,)"},               // a type tinygltf refuses
       {R"("byteLength")", R"("uri":"two_parts.bin","byteLength")"},           // a buffer in another file
+      {R"("buffers":[{"byteLength":1464}])", R"("buffers":[{"byteLength":0}])"},  // tinygltf throws on it
       {R"("scene":0,)", R"("scene":0,"animations":[],)"},                     // a part of glTF beyond the form
       {R"("scene":0,)", R"("scene":0,,)"},                                    // not JSON
   };
@@ -139,10 +140,12 @@ TEST(PlainGlb, EverythingElseIsLeftToTinygltf) {
     const Glb edited = base.with(from, to);
     EXPECT_FALSE(plain(edited.bytes())) << to;
   }
-  // The container: a short length, another version, bytes after the JSON.
+  // The container: a short length, another version, bytes after the JSON
+  // (glb_chunks.hpp checks it first).
   std::string glb = base.bytes();
   EXPECT_FALSE(plain(glb.substr(0, glb.size() - 4)));
   EXPECT_FALSE(plain(glb.substr(0, 4) + std::string("\1\0\0\0", 4) + glb.substr(8)));
+  EXPECT_FALSE(plain(glb + std::string(4, '\0')));
   Glb trailing = base;
   trailing.json += "x";
   EXPECT_FALSE(plain(trailing.bytes()));

@@ -1,6 +1,7 @@
 #include "support/command_stack.hpp"
 
 #include <pthread.h>
+#include <signal.h>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -20,10 +21,12 @@ struct Job {
   const std::function<int()>* work;
   int result = 0;
   std::exception_ptr error;
+  sigset_t mask;  // the signal mask the work runs with: the caller's own
 };
 
 void* run_job(void* arg) {
   auto* job = static_cast<Job*>(arg);
+  pthread_sigmask(SIG_SETMASK, &job->mask, nullptr);
   try {
     job->result = (*job->work)();
   } catch (...) {
@@ -42,12 +45,23 @@ int run_on_command_stack(const std::function<int()>& work) {
   if (::pthread_attr_init(&attr) != 0) return work();
   const bool sized = ::pthread_attr_setstacksize(&attr, command_stack_size()) == 0;
   if (sized) ::pthread_setattr_default_np(&attr);
-  Job job{&work, 0, nullptr};
+  // Signals from outside (Ctrl-C, SIGTERM) go to the thread that writes
+  // the files, as they did when the work ran here: its handler removes the
+  // temporaries (interrupt_cleanup.hpp) while no other thread makes more.
+  // This thread only waits, with every signal blocked.
+  Job job{&work, 0, nullptr, {}};
+  sigset_t all;
+  sigfillset(&all);
+  pthread_sigmask(SIG_BLOCK, &all, &job.mask);
   pthread_t thread;
   const bool started = sized && ::pthread_create(&thread, &attr, run_job, &job) == 0;
   ::pthread_attr_destroy(&attr);
-  if (!started) return work();
+  if (!started) {
+    pthread_sigmask(SIG_SETMASK, &job.mask, nullptr);
+    return work();
+  }
   ::pthread_join(thread, nullptr);
+  pthread_sigmask(SIG_SETMASK, &job.mask, nullptr);
   if (job.error) std::rethrow_exception(job.error);
   return job.result;
 }

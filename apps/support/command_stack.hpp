@@ -17,8 +17,23 @@
 
 namespace vern {
 
+// How many times larger a frame is in this build than in a plain one: the
+// address sanitizer's redzones and instrumentation make frames about three
+// times larger, and the limits above are promises in depth, not in bytes.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr std::size_t kFrameScale = 4;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr std::size_t kFrameScale = 4;
+#else
+inline constexpr std::size_t kFrameScale = 1;
+#endif
+#else
+inline constexpr std::size_t kFrameScale = 1;
+#endif
+
 // The stack a command's threads get when the user's limit is smaller.
-inline constexpr std::size_t kMinimumStack = std::size_t{8} << 20;
+inline constexpr std::size_t kMinimumStack = (std::size_t{8} << 20) * kFrameScale;
 // The most a thread is given when the limit is larger or unlimited: address
 // space, reserved but only used as deep as recursion goes.
 inline constexpr std::size_t kMaximumStack = std::size_t{1} << 30;

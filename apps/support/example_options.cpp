@@ -5,7 +5,12 @@ namespace vern {
 void add_example_options(CommandLine& cl) {
   cl.add({"--max-parts", "", 1, "N", "limit on labelled parts per example (default 10000)"});
   cl.add({"--max-faces", "", 1, "N", "limit on faces per labelled part (default 1000000)"});
-  cl.add({"--max-gltf-mib", "", 1, "N", "limit on a glTF or GLB file and each file it names, read whole (default 256)"});
+  cl.add({"--max-total-faces", "", 1, "N",
+          "limit on faces (and vertices) a glTF example's parts place in all, a mesh counting\n"
+          "once for each node that places it (default 10000000)"});
+  cl.add({"--max-gltf-mib", "", 1, "N",
+          "limit on a glTF or GLB file and each file it names, read whole, and on the memory\n"
+          "its JSON takes once read (default 256)"});
   cl.add({"--allow-outside-files", "", 0, "",
           "a glTF's URIs may name files outside its folder ('..', absolute paths, links out);\n"
           "without it they are refused: a glTF from elsewhere chooses them"});
@@ -20,6 +25,10 @@ ExampleLimits example_limits(const ParsedCommandLine& args) {
     limits.max_parts = static_cast<std::size_t>(CommandLine::integer(args, "--max-parts", 1, 100'000'000));
   if (args.has("--max-faces"))
     limits.max_faces = static_cast<std::size_t>(CommandLine::integer(args, "--max-faces", 1, 1'000'000'000));
+  if (args.has("--max-total-faces")) {
+    limits.max_total_faces =
+        static_cast<std::size_t>(CommandLine::integer(args, "--max-total-faces", 1, 1'000'000'000'000));
+  }
   // tinygltf reads lengths as 32-bit numbers: below 4 GiB.
   if (args.has("--max-gltf-mib"))
     limits.gltf.max_bytes = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-gltf-mib", 1, 4095)) << 20;

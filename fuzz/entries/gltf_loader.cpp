@@ -1,7 +1,9 @@
 // glTF in (JSON, or binary GLB when it starts with the "glTF" magic): the
-// example loader takes it or says what is wrong with the file; what it
-// takes must keep the example's promises. A GLB the plain reader reads
-// (inverse/plain_glb.hpp) must read the same through tinygltf.
+// example loader takes it, or says what is wrong with the file or which
+// limit it reaches (a small file may place one mesh many times over:
+// --max-faces, --max-total-faces); what it takes must keep the example's
+// promises. A GLB the plain reader reads (inverse/plain_glb.hpp) must read
+// the same through tinygltf.
 #include <cstring>
 
 #include "entries.hpp"
@@ -18,7 +20,7 @@ std::string gltf_loader(Bytes input) {
     if (std::string d = plain_glb_disagreement(input); !d.empty()) return d;
   }
   const std::string path = scratch_file(binary ? "fuzz.glb" : "fuzz.gltf", input).string();
-  return judged([&] { return example_invariants(load_example(path)); }, {ErrorKind::Input}, path);
+  return judged([&] { return example_invariants(load_example(path)); }, {ErrorKind::Input, ErrorKind::Limit}, path);
 }
 
 }  // namespace vern::fuzz

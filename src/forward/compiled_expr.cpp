@@ -89,9 +89,12 @@ struct Compiler {
 
   void emit(Instr op, std::uint32_t index = 0, double number = 0.0) { out.push_back({op, index, number}); }
 
-  // A constant that must become code after all, at position `at`.
-  void materialise(const Piece& p, std::size_t at) {
-    if (p.constant) out.insert(out.begin() + static_cast<std::ptrdiff_t>(at), Instruction{Instr::Number, 0, p.value});
+  // A constant that must become code after all, written at the end. An
+  // operand that waits on the next to know whether the two fold is written
+  // at once and taken back if they do: put in front of the next one's code
+  // afterwards, it moved all of that code (n^2 moves for a list of n).
+  void materialise(const Piece& p) {
+    if (p.constant) emit(Instr::Number, 0, p.value);
   }
 
   Piece num(std::size_t i) {
@@ -127,7 +130,7 @@ struct Compiler {
     double v;
     if (operand.constant) {
       if (apply(op, operand.value, v)) return {true, v};
-      materialise(operand, out.size());
+      materialise(operand);
     }
     emit(op);
     return {};
@@ -152,16 +155,19 @@ struct Compiler {
       const std::size_t jump = out.size();
       emit(op);
       const Piece b = num(rhs);
-      materialise(b, out.size());
+      materialise(b);
       emit(Instr::Truth);
       out[jump].index = static_cast<std::uint32_t>(out.size() - jump - 1);
       return {};
     }
+    materialise(a);
     const Piece b = values ? val(rhs) : num(rhs);
     double v;
-    if (a.constant && b.constant && apply(op, a.value, b.value, v)) return {true, v};
-    materialise(b, out.size());
-    materialise(a, start);
+    if (a.constant && b.constant && apply(op, a.value, b.value, v)) {
+      out.resize(start);  // a's number, the only code since start
+      return {true, v};
+    }
+    materialise(b);
     emit(op);
     return {};
   }
@@ -179,10 +185,10 @@ struct Compiler {
     }
     std::vector<std::size_t> roots = e.children(i);
     std::vector<Piece> args;
-    std::vector<std::size_t> starts;
+    const std::size_t start = out.size();
     for (std::size_t r : roots) {
-      starts.push_back(out.size());
       args.push_back(num(r));
+      materialise(args.back());
     }
     const bool all_constant = std::all_of(args.begin(), args.end(), [](const Piece& p) { return p.constant; });
     Instr op = Instr::End;
@@ -213,13 +219,14 @@ struct Compiler {
       if (op == Instr::Min || op == Instr::Max) {
         for (std::size_t k = 1; k < argc; ++k)
           v = op == Instr::Min ? std::min(v, args[k].value) : std::max(v, args[k].value);
+        out.resize(start);  // the arguments' numbers, the only code since start
         return {true, v};
       }
-      if (apply(op, args[0].value, v)) return {true, v};
+      if (apply(op, args[0].value, v)) {
+        out.resize(start);
+        return {true, v};
+      }
     }
-    // Constants become code from the last argument back, so the earlier
-    // insertion points stay valid.
-    for (std::size_t k = argc; k-- > 0;) materialise(args[k], starts[k]);
     emit(op, static_cast<std::uint32_t>(argc));
     return {};
   }
@@ -262,7 +269,7 @@ CompiledExpr ExprCode::code(const Expr& e, bool value_context) {
     code_.resize(begin);
     return {ExprForm::Literal, 0, p.value, &e};
   }
-  c.materialise(p, code_.size());
+  c.materialise(p);
   code_.push_back({Instr::End, 0, 0.0});
   if (!c.ok || stack_depth(code_, begin) > kStack) {
     code_.resize(begin);

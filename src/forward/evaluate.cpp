@@ -1,6 +1,7 @@
 #include "forward/evaluate.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "graph/number_format.hpp"
 
@@ -151,9 +152,14 @@ struct Evaluator {
     switch (f) {
       case Function::Min:
       case Function::Max: {
-        double best = num(r[0]);
+        // Past 8 arguments, all their roots in one walk: a walk per
+        // argument made min() of 65,535 arguments take seconds each time.
+        std::vector<std::size_t> all;
+        if (argc > 8) all = e.children(i);
+        const std::size_t* at = argc > 8 ? all.data() : r;
+        double best = num(at[0]);
         for (std::size_t k = 1; k < argc; ++k) {
-          const double v = num(nth(i, k, r));
+          const double v = num(at[k]);
           best = f == Function::Min ? std::min(best, v) : std::max(best, v);
         }
         return best;

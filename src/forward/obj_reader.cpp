@@ -14,6 +14,7 @@
 #include "forward/chunked_vector.hpp"
 #include "forward/obj_lines.hpp"
 #include "forward/obj_plain_line.hpp"
+#include "graph/decimal_range.hpp"
 #include "graph/error.hpp"
 #include "graph/input_file.hpp"
 #include "graph/label.hpp"
@@ -294,7 +295,10 @@ class Reader {
     double value = 0.0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec == std::errc::result_out_of_range) {
-      error(token.column, "the " + std::string(what) + " '" + std::string(token.text) + "' is out of range for a number",
+      error(token.column,
+            "the " + std::string(what) + " '" + std::string(token.text) + "' is " +
+                (decimal_underflows(text) ? "too small for a number: nearer to zero than any double (4.9e-324)"
+                                          : "out of range for a number"),
             "the exporter wrote broken geometry: fix or delete that element");
     }
     if (ec != std::errc() || end != text.data() + text.size()) {

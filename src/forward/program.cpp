@@ -36,6 +36,7 @@ Program compile(const Grammar& g) {
   // children (and calls to rule bodies) that come later in the arena.
   p.nodes.resize(n);
   std::array<std::uint32_t, 12> used{};
+  std::size_t parts = 0, options = 0, args = 0, faces = 0;
   for (NodeId id = 0; id < n; ++id) {
     const Operation& op = g.op(id);
     Target& t = p.nodes[id];
@@ -48,7 +49,27 @@ Program compile(const Grammar& g) {
     // repeat and repeatN share a table, as do T and S.
     OpKind table = t.kind == OpKind::RepeatN ? OpKind::Repeat : t.kind == OpKind::Scale ? OpKind::Translate : t.kind;
     t.index = used[static_cast<std::size_t>(table)]++;
+    if (const auto* s = std::get_if<Split>(&op)) parts += s->parts.size();
+    if (const auto* c = std::get_if<Choose>(&op)) options += c->options.size();
+    if (const auto* c = std::get_if<Call>(&op)) args += c->args.size();
+    if (const auto* c = std::get_if<Comp>(&op)) faces += c->parts.size();
   }
+  // Every table at its final size at once: grown by doubling, each held
+  // up to twice its size, and half as much again while it moved (a grammar
+  // of 200,000 alternatives has as many options).
+  const auto count = [&](OpKind k) { return used[static_cast<std::size_t>(k)]; };
+  p.splits.reserve(count(OpKind::Split));
+  p.parts.reserve(parts);
+  p.repeats.reserve(count(OpKind::Repeat));
+  p.chooses.reserve(count(OpKind::Choose));
+  p.options.reserve(options);
+  p.calls.reserve(count(OpKind::Call));
+  p.args.reserve(args);
+  p.transforms.reserve(count(OpKind::Translate));
+  p.rotates.reserve(count(OpKind::Rotate));
+  p.comps.reserve(count(OpKind::Comp));
+  p.faces.reserve(faces);
+  p.colours.reserve(count(OpKind::Colour));
   for (NodeId id = 0; id < n; ++id) {
     std::visit(Overload{
                    [&](const Split& op) {

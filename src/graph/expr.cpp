@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <functional>
+#include <memory>
 
 namespace vern {
 
@@ -59,27 +60,55 @@ const char* operator_text(BinaryOp op) {
   return "?";
 }
 
-Expr::Expr(const Expr& other)
-    : single_(other.single_), many_(other.many_ ? std::make_unique<Many>(*other.many_) : nullptr) {}
+Expr::Expr(const Expr& other) : single_(other.single_) {
+  if (other.is_single()) rest_.single_loc = other.rest_.single_loc;
+  else if (other.rest_.many) rest_.many = new Many(*other.rest_.many);
+}
 
 Expr& Expr::operator=(const Expr& other) {
   if (this != &other) *this = Expr(other);
   return *this;
 }
 
+Expr::Expr(Expr&& other) noexcept : single_(other.single_), rest_(other.rest_) {
+  other.single_.size = 0;
+  other.rest_.many = nullptr;
+}
+
+Expr& Expr::operator=(Expr&& other) noexcept {
+  if (this != &other) {
+    release();
+    single_ = other.single_;
+    rest_ = other.rest_;
+    other.single_.size = 0;
+    other.rest_.many = nullptr;
+  }
+  return *this;
+}
+
+Expr::~Expr() { release(); }
+
+void Expr::release() {
+  if (!is_single()) delete rest_.many;
+  single_.size = 0;
+  rest_.many = nullptr;
+}
+
 void Expr::push(ExprNode n, SourceLoc loc) {
-  if (empty() && !loc.known()) {
+  if (empty()) {
     single_ = n;
+    rest_.single_loc = loc;
     return;
   }
-  if (!many_) many_ = std::make_unique<Many>();
   if (is_single()) {
-    many_->nodes.push_back(single_);
-    many_->locs.push_back({});
+    auto many = std::make_unique<Many>();
+    many->nodes.push_back(single_);
+    many->locs.push_back(rest_.single_loc);
     single_.size = 0;
+    rest_.many = many.release();
   }
-  many_->nodes.push_back(n);
-  many_->locs.push_back(loc);
+  rest_.many->nodes.push_back(n);
+  rest_.many->locs.push_back(loc);
 }
 
 void Expr::append(const Expr& child) {
@@ -117,7 +146,7 @@ Expr Expr::unary(UnaryOp op, Expr operand, SourceLoc loc) {
   if (op == UnaryOp::Neg && operand.nodes().size() == 1 && operand.node(0).kind == ExprKind::Number) {
     const double negated = -operand.node(0).number;
     if (operand.is_single()) operand.single_.number = negated;
-    else operand.many_->nodes[0].number = negated;
+    else operand.rest_.many->nodes[0].number = negated;
     if (loc.known()) {
       Expr e;
       e.push({.kind = ExprKind::Number, .number = negated}, loc);
@@ -173,7 +202,7 @@ void Expr::set_leaf(std::size_t i, const ExprNode& leaf) {
   if (nodes()[i].size != 1 || leaf.size != 1 || leaf.argc != 0)
     throw Error(ErrorKind::Internal, "Expr::set_leaf: only a leaf replaces a leaf");
   if (is_single()) single_ = leaf;
-  else many_->nodes[i] = leaf;
+  else rest_.many->nodes[i] = leaf;
 }
 
 std::optional<double> Expr::literal() const {

@@ -5,10 +5,12 @@
 // root is the last node and the whole tree lives in one allocation. That
 // makes an Expr cheap to copy, hash and compare (the inverse pipeline
 // hash-conses graphs full of them) and quick to evaluate. An Expr of one
-// node without a source location, what inference builds most (a number,
-// an axis), holds it inline and allocates nothing: an inferred graph holds
-// millions of plain numbers, and every node of the graph's arena has room
-// for several Exprs, so an Expr is kept to 32 bytes.
+// node, what inference builds most (a number, an axis) and most of what a
+// grammar's text holds, keeps it and its source location inline and
+// allocates nothing: an inferred graph holds millions of plain numbers, a
+// read grammar one per size and priority (each an allocation of some 110
+// bytes, once), and every node of the graph's arena has room for several
+// Exprs, so an Expr is kept to 32 bytes.
 //
 // Names are resolved when an Expr is built: a parameter is the slot of the
 // enclosing rule's parameter list, a constant the index of the grammar's
@@ -19,7 +21,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -73,8 +74,9 @@ class Expr {
   Expr() = default;  // the empty expression: "not given"
   Expr(const Expr& other);
   Expr& operator=(const Expr& other);
-  Expr(Expr&&) noexcept = default;
-  Expr& operator=(Expr&&) noexcept = default;
+  Expr(Expr&& other) noexcept;
+  Expr& operator=(Expr&& other) noexcept;
+  ~Expr();
 
   static Expr number(double v, SourceLoc loc = {});
   static Expr axis(Axis a, SourceLoc loc = {});
@@ -84,15 +86,18 @@ class Expr {
   static Expr binary(BinaryOp op, Expr lhs, Expr rhs, SourceLoc loc = {});
   static Expr call(Function f, std::vector<Expr> args, SourceLoc loc = {});
 
-  bool empty() const { return !is_single() && !many_; }
+  bool empty() const { return !is_single() && !rest_.many; }
   std::size_t root() const { return nodes().size() - 1; }
   std::span<const ExprNode> nodes() const {
     if (is_single()) return {&single_, 1};
-    if (many_) return many_->nodes;
+    if (rest_.many) return rest_.many->nodes;
     return {};
   }
   const ExprNode& node(std::size_t i) const { return nodes()[i]; }
-  SourceLoc loc(std::size_t i) const { return many_ && i < many_->locs.size() ? many_->locs[i] : SourceLoc{}; }
+  SourceLoc loc(std::size_t i) const {
+    if (is_single()) return i == 0 ? rest_.single_loc : SourceLoc{};
+    return rest_.many && i < rest_.many->locs.size() ? rest_.many->locs[i] : SourceLoc{};
+  }
   SourceLoc loc() const { return empty() ? SourceLoc{} : loc(root()); }
 
   // Roots of node i's children, in order (at most argc entries written).
@@ -122,9 +127,16 @@ class Expr {
   };
   // A subtree size of 0 marks single_ unused (a real node counts itself).
   bool is_single() const { return single_.size != 0; }
+  void release();  // frees many's nodes; the Expr is then empty
 
   ExprNode single_{.size = 0};  // the one node, inline
-  std::unique_ptr<Many> many_;   // else all nodes, when there are any
+  // With the one node, its location; else all nodes, when there are any
+  // (owned: nullptr when the Expr is empty).
+  union Rest {
+    Many* many;
+    SourceLoc single_loc;
+    Rest() : many(nullptr) {}
+  } rest_;
 };
 
 // Mixes v into seed (boost-style, 64-bit); shared by every structural hash.

@@ -30,16 +30,18 @@
 // there are several, or when the only one has a condition or a priority.
 #include "graph/parser.hpp"
 
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <numbers>
-#include <sstream>
 
 #include "graph/input_file.hpp"
 #include "graph/label.hpp"
 #include "graph/lexer.hpp"
 #include "graph/name_index.hpp"
+#include "graph/out_of_memory.hpp"
 #include "graph/reserved_words.hpp"
 #include "graph/stack_guard.hpp"
 #include "graph/suggest.hpp"
@@ -61,13 +63,13 @@ constexpr NamedColour kColours[] = {
 };
 
 
-// One written rule line, before alternatives are gathered into a Choose.
-struct Alternative {
-  Expr condition;
-  Expr priority;
-  bool priority_written = false;
-  NodeId body = 0;
-  SourceLoc loc;
+// The rule lines of one label read so far, as the Choose they become
+// holds them (gathered in another form and copied, they cost twice).
+struct Alternatives {
+  std::size_t lines = 0;  // rule lines of the label, as the first pass counted them
+  std::vector<ChooseOption> options;
+  bool first_priority_written = false;  // a lone line without one needs no Choose
+  SourceLoc first_loc;
 };
 
 struct RuleHeader {
@@ -78,7 +80,7 @@ struct RuleHeader {
 
 class Parser {
  public:
-  Parser(std::string_view text, const std::string& source) : source_(source), tokens_(tokenize(text, source)) {
+  Parser(std::string_view text, const std::string& source) : source_(source), text_(text), lexer_(text, source) {
     g_.source_name = source;
   }
 
@@ -102,10 +104,25 @@ class Parser {
 
  private:
   // ---- tokens ----
-  const Token& peek(std::size_t ahead = 0) const {
-    return tokens_[std::min(pos_ + ahead, tokens_.size() - 1)];
+  // Token number pos_ + ahead, read from the text when first asked for.
+  // Tokens are handed out as copies (a `const Token&` to one keeps it), so
+  // only those not yet read are kept: never more than the look-ahead, where
+  // holding the tokens of the file (or of a line of a million parts) took
+  // some 40 times the memory of the text.
+  Token peek(std::size_t ahead = 0) {
+    const std::size_t passed = std::min(pos_ - first_, count_);  // more: read past the end, which stays End
+    head_ = (head_ + passed) % ahead_.size();
+    count_ -= passed;
+    first_ = pos_;
+    if (ahead >= ahead_.size()) throw Error(ErrorKind::Internal, "the grammar parser looks too far ahead");
+    while (count_ <= ahead) ahead_[(head_ + count_++) % ahead_.size()] = lexer_.next();
+    return ahead_[(head_ + ahead) % ahead_.size()];
   }
-  const Token& next() { return tokens_[pos_ < tokens_.size() - 1 ? pos_++ : pos_]; }
+  Token next() {
+    const Token t = peek();
+    if (t.kind != TokenKind::End) ++pos_;
+    return t;
+  }
   bool accept(TokenKind k) {
     if (peek().kind != k) return false;
     ++pos_;
@@ -113,17 +130,18 @@ class Parser {
   }
   // `hint` shows the construct being read as it is written: most of these
   // errors are a missing bracket, comma or ':', which that makes plain.
-  const Token& expect(TokenKind k, const std::string& context, const std::string& hint) {
+  Token expect(TokenKind k, std::string_view context, std::string_view hint) {
     if (peek().kind != k) {
-      error(peek().loc, "expected " + std::string(token_kind_name(k)) + " " + context + ", found " + describe(peek()),
-            hint);
+      error(peek().loc,
+            "expected " + std::string(token_kind_name(k)) + " " + std::string(context) + ", found " + describe(peek()),
+            std::string(hint));
     }
     return next();
   }
   static std::string describe(const Token& t) {
     switch (t.kind) {
-      case TokenKind::Identifier: return "'" + std::string(t.text) + "'";
-      case TokenKind::Number: return "the number " + std::string(t.text);
+      case TokenKind::Identifier: return "'" + shown_name(t.text) + "'";
+      case TokenKind::Number: return "the number " + shown_name(t.text);
       case TokenKind::Newline:
       case TokenKind::End: return token_kind_name(t.kind);
       default: return token_kind_name(t.kind);
@@ -152,6 +170,9 @@ class Parser {
   static constexpr int kMaxNesting = 256;
   // An expression node counts its arguments in 16 bits (graph/expr.hpp).
   static constexpr std::size_t kMaxArguments = 65535;
+  // And a rule as many parameters: more than any rule needs, and each call
+  // binds them all on the derivation's stack of arguments.
+  static constexpr std::size_t kMaxParameters = kMaxArguments;
 
   class Nesting {
    public:
@@ -188,38 +209,58 @@ class Parser {
   }
 
   // ---- pass 1: every rule label, so calls may name rules defined later ----
+  // A line that starts with a name (not `name =`) is a rule when an arrow
+  // follows before its end. The text is read a second time for this, a
+  // token at a time: holding its tokens for the second pass cost more
+  // memory than everything else the reader builds.
   void declare_rules() {
-    std::size_t i = 0;
-    // The lexer reports newlines only outside ( ) and { }, so a Newline
-    // token always starts a new line of the file's structure.
+    // Lines that started with a name and have shown no arrow yet, each
+    // with its bracket depth: the lexer reports newlines only outside
+    // ( ) and { }, but a stray ')' takes this count below zero, and then
+    // the line goes on to the next newline where it is back at zero.
+    struct Candidate {
+      std::string label;
+      SourceLoc loc;
+      int depth = 0;
+    };
+    std::vector<Candidate> open;
+    Lexer lexer(text_, source_);
+    Token t = lexer.next();
     bool line_start = true;
-    while (tokens_[i].kind != TokenKind::End) {
-      const Token& t = tokens_[i];
-      if (line_start && t.kind == TokenKind::Identifier && tokens_[i + 1].kind != TokenKind::Assign) {
-        // A rule line: IDENT [ ( ... ) ] [: ...] ARROW; find the arrow on this line.
-        std::size_t j = i + 1;
-        int d = 0;
-        bool is_rule = false;
-        for (; tokens_[j].kind != TokenKind::End && !(d == 0 && tokens_[j].kind == TokenKind::Newline); ++j) {
-          if (tokens_[j].kind == TokenKind::LParen || tokens_[j].kind == TokenKind::LBrace) ++d;
-          if (tokens_[j].kind == TokenKind::RParen || tokens_[j].kind == TokenKind::RBrace) --d;
-          if (tokens_[j].kind == TokenKind::Arrow) {
-            is_rule = true;
-            break;
-          }
+    while (t.kind != TokenKind::End) {
+      Token following = lexer.next();
+      std::size_t kept = 0;
+      for (Candidate& c : open) {
+        if (t.kind == TokenKind::Arrow) {
+          declare_rule(c.label, c.loc);
+          continue;
         }
-        const std::string label(t.text);
-        if (is_rule && !labels_.count(label)) {
-          labels_.emplace(label, static_cast<RuleId>(g_.rules.size()));
-          g_.rules.push_back({label, {}, 0, t.loc});
-          declared_params_.push_back(-1);
-        }
+        if (t.kind == TokenKind::Newline && c.depth == 0) continue;  // no arrow on its line
+        if (t.kind == TokenKind::LParen || t.kind == TokenKind::LBrace) ++c.depth;
+        if (t.kind == TokenKind::RParen || t.kind == TokenKind::RBrace) --c.depth;
+        if (&open[kept] != &c) open[kept] = std::move(c);
+        ++kept;
       }
+      open.resize(kept);
+      if (line_start && t.kind == TokenKind::Identifier && following.kind != TokenKind::Assign)
+        open.push_back({std::string(t.text), t.loc});
       line_start = t.kind == TokenKind::Newline;
-      ++i;
+      t = std::move(following);
     }
-    alternatives_.resize(g_.rules.size());
+    // Room for each label's lines at once: grown by doubling, 200,000
+    // alternatives of one label held room for up to twice as many.
+    for (Alternatives& a : alternatives_) a.options.reserve(a.lines);
     for (const auto& r : g_.rules) rule_names_.push_back(r.label);
+  }
+
+  void declare_rule(const std::string& label, SourceLoc loc) {
+    const auto [it, added] = labels_.try_emplace(label, static_cast<RuleId>(g_.rules.size()));
+    if (added) {
+      g_.rules.push_back({label, {}, 0, loc});
+      declared_params_.push_back(-1);
+      alternatives_.emplace_back();
+    }
+    ++alternatives_[it->second].lines;
   }
 
   // ---- lines ----
@@ -240,7 +281,7 @@ class Parser {
       g_.primitives = path.value;
       g_.primitives_loc = path.loc;
     } else {
-      error(d.loc, "unknown directive '@" + d.value + "'", "directives are @start, @scope and @primitives");
+      error(d.loc, "unknown directive '@" + std::string(d.value) + "'", "directives are @start, @scope and @primitives");
     }
   }
 
@@ -253,6 +294,7 @@ class Parser {
     next();  // '='
     skip_newlines();
     params_ = nullptr;
+    param_ids_ = nullptr;
     Expr value = expression();
     // Added once its value is read: a constant uses only those above it.
     constant_ids_.add(n, static_cast<std::uint32_t>(g_.constants.size()));
@@ -272,14 +314,20 @@ class Parser {
     if (is_operation_word(label))
       error(name.loc, "'" + label + "' is an operation and cannot be a rule label", "choose another label");
     std::vector<std::string> params;
+    NameIndex<std::uint32_t> param_ids;  // params by name: a long list is not read through per name
     if (accept(TokenKind::LParen)) {
       if (!accept(TokenKind::RParen)) {
         do {
           const Token& p = expect(TokenKind::Identifier, "(a parameter name)",
                                   "parameters are names: floors(n, height) --> ...; values go in calls");
           check_free_name(p, "a parameter");
-          for (const auto& q : params)
-            if (q == p.text) error(p.loc, "the parameter '" + q + "' is listed twice", "give each parameter its own name");
+          if (param_ids.find(p.text))
+            error(p.loc, "the parameter '" + std::string(p.text) + "' is listed twice",
+                  "give each parameter its own name");
+          if (params.size() == kMaxParameters)
+            error(p.loc, "'" + shown_name(label) + "' has more than " + std::to_string(kMaxParameters) + " parameters",
+                  "pass fewer values: a rule can compute the others from them, or read constants");
+          param_ids.add(p.text, static_cast<std::uint32_t>(params.size()));
           params.emplace_back(p.text);
         } while (accept(TokenKind::Comma));
         expect(TokenKind::RParen, "to close the parameter list", "write floors(n, height) --> ...");
@@ -307,41 +355,41 @@ class Parser {
             "all rules of one label take the same parameters");
     }
     params_ = &params;
-    Alternative alt;
-    alt.loc = name.loc;
+    param_ids_ = &param_ids;
+    ChooseOption alt;
     if (accept(TokenKind::Colon)) alt.condition = expression();
     if (!accept(TokenKind::Arrow)) {
       error(peek().loc, "expected '-->' in the rule for '" + label + "', found " + describe(peek()),
             "a rule reads: label(params) : condition --> operation : priority");
     }
     skip_newlines();
-    alt.body = operation();
-    if (accept(TokenKind::Colon)) {
-      alt.priority = expression();
-      alt.priority_written = true;
-    } else {
-      alt.priority = Expr::number(1.0);
-    }
+    alt.child = operation();
+    const bool priority_written = accept(TokenKind::Colon);
+    alt.priority = priority_written ? expression() : Expr::number(1.0);
     params_ = nullptr;
-    alternatives_[id].push_back(std::move(alt));
+    param_ids_ = nullptr;
+    Alternatives& alts = alternatives_[id];
+    if (alts.options.empty()) {
+      alts.first_priority_written = priority_written;
+      alts.first_loc = name.loc;
+    }
+    alts.options.push_back(std::move(alt));
   }
 
   void finish_rules() {
     for (RuleId id = 0; id < g_.rules.size(); ++id) {
-      auto& alts = alternatives_[id];
-      if (alts.size() == 1 && alts[0].condition.empty() && !alts[0].priority_written) {
-        g_.rules[id].body = alts[0].body;
+      Alternatives& alts = alternatives_[id];
+      if (alts.options.size() == 1 && alts.options[0].condition.empty() && !alts.first_priority_written) {
+        g_.rules[id].body = alts.options[0].child;
         continue;
       }
-      Choose choose;
-      for (auto& a : alts) choose.options.push_back({std::move(a.condition), std::move(a.priority), a.body});
-      g_.rules[id].body = g_.add({std::move(choose), alts[0].loc});
+      g_.rules[id].body = g_.add({Choose{std::move(alts.options)}, alts.first_loc});
     }
     if (g_.rules.empty()) error({1, 1}, "the grammar has no rules", "a rule reads: plot --> split(x){ ~1 : I(rect) }");
     if (!start_label_.empty()) {
       auto it = labels_.find(start_label_);
       if (it == labels_.end())
-        error(start_loc_, "@start names '" + start_label_ + "', which has no rule",
+        error(start_loc_, "@start names '" + shown_name(start_label_) + "', which has no rule",
               suggest(start_label_, rule_names_, "the rules"));
       g_.start_rule = it->second;
       g_.start_written = true;
@@ -523,12 +571,13 @@ class Parser {
     } else if (first.kind == TokenKind::String) {
       next();
       if (!parse_hex_colour(first.value, rgb))
-        error(first.loc, "'" + first.value + "' is not a colour", "write colour(\"#rrggbb\"), colour(red) or colour(r, g, b)");
+        error(first.loc, "'" + std::string(first.value) + "' is not a colour",
+              "write colour(\"#rrggbb\"), colour(red) or colour(r, g, b)");
       c.rgb = {Expr::number(rgb[0], first.loc), Expr::number(rgb[1], first.loc), Expr::number(rgb[2], first.loc)};
     } else if (first.kind == TokenKind::Identifier && peek(1).kind == TokenKind::RParen && !is_value_name(first.text)) {
       std::vector<std::string> names;
       for (const auto& n : kColours) names.emplace_back(n.name);
-      error(first.loc, "unknown colour '" + std::string(first.text) + "'", suggest(first.text, names, "the colours"));
+      error(first.loc, "unknown colour '" + shown_name(first.text) + "'", suggest(first.text, names, "the colours"));
     } else {
       c.rgb[0] = expression();
       expect(TokenKind::Comma, "between colour components (r, g, b from 0 to 1)", form);
@@ -540,7 +589,7 @@ class Parser {
     return add(std::move(c), loc);
   }
 
-  static bool parse_hex_colour(const std::string& s, double rgb[3]) {
+  static bool parse_hex_colour(std::string_view s, double rgb[3]) {
     if (s.size() != 7 || s[0] != '#') return false;
     for (int i = 0; i < 3; ++i) {
       unsigned v = 0;
@@ -559,9 +608,7 @@ class Parser {
   }
 
   bool is_value_name(std::string_view n) const {
-    if (params_)
-      for (const auto& p : *params_)
-        if (p == n) return true;
+    if (param_ids_ && param_ids_->find(n)) return true;
     return constant_ids_.find(n).has_value();
   }
 
@@ -569,7 +616,7 @@ class Parser {
     const std::string label(name.text);
     auto it = labels_.find(label);
     if (it == labels_.end()) {
-      error(name.loc, "unknown rule '" + label + "'", suggest(label, rule_names_, "the rules"));
+      error(name.loc, "unknown rule '" + shown_name(label) + "'", suggest(label, rule_names_, "the rules"));
     }
     Call c;
     c.rule = it->second;
@@ -698,7 +745,7 @@ class Parser {
       if (!f) {
         std::vector<std::string> names;
         for (const auto& info : function_table()) names.emplace_back(info.name);
-        error(t.loc, "unknown function '" + std::string(n) + "'", suggest(n, names, "the functions"));
+        error(t.loc, "unknown function '" + shown_name(n) + "'", suggest(n, names, "the functions"));
       }
       next();
       std::vector<Expr> args;
@@ -717,10 +764,8 @@ class Parser {
           error(a.loc(), std::string(n) + " expects numbers, found an axis", "axes can only be compared with == and !=");
       return Expr::call(*f, std::move(args), t.loc);
     }
-    if (params_) {
-      for (std::size_t i = 0; i < params_->size(); ++i)
-        if ((*params_)[i] == n) return Expr::param(static_cast<std::uint32_t>(i), t.loc);
-    }
+    if (param_ids_)
+      if (auto i = param_ids_->find(n)) return Expr::param(*i, t.loc);
     if (auto c = constant_ids_.find(n)) return Expr::constant(*c, t.loc);
     if (n == "x") return Expr::axis(Axis::X, t.loc);
     if (n == "y") return Expr::axis(Axis::Y, t.loc);
@@ -729,15 +774,26 @@ class Parser {
     if (n == "rand") return Expr::call(Function::Rand, {}, t.loc);
     if (auto f = find_function(n))
       error(t.loc, "the function '" + std::string(n) + "' needs its arguments", "write " + call_form(*f));
+    if (names_no_number(n))
+      error(t.loc, "'" + std::string(n) + "' is not a number here: a grammar's numbers are finite",
+            "write a finite number, such as 1e30 for a size larger than any building");
     std::vector<std::string> known;
     if (params_) known = *params_;
     for (const auto& c : g_.constants) known.push_back(c.name);
     std::string hint = known.empty() ? "no constants or parameters are defined here: define it above as '" +
-                                           std::string(n) + " = value', or make it a parameter of the rule"
+                                           shown_name(n) + " = value', or make it a parameter of the rule"
                                      : suggest(n, known, "the names in scope here");
-    if (labels_.count(std::string(n))) hint += " ('" + std::string(n) + "' is a rule, not a value)";
+    if (labels_.count(std::string(n))) hint += " ('" + shown_name(n) + "' is a rule, not a value)";
     if (!params_) hint += "; a constant can use only the constants defined above it";
-    error(t.loc, "unknown name '" + std::string(n) + "'", hint);
+    error(t.loc, "unknown name '" + shown_name(n) + "'", hint);
+  }
+
+  // inf, nan, Infinity: what other languages (and from_chars) read as a
+  // number that is not finite, which a size, count or angle cannot be.
+  static bool names_no_number(std::string_view n) {
+    std::string lower(n);
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return lower == "inf" || lower == "infinity" || lower == "nan";
   }
 
   void check_arity(Function f, std::size_t n, const Token& t) const {
@@ -764,16 +820,23 @@ class Parser {
   }
 
   const std::string& source_;
-  std::vector<Token> tokens_;
+  std::string_view text_;
+  Lexer lexer_;
+  // The tokens read from the text and not yet passed, a ring: token number
+  // first_ + k is ahead_[(head_ + k) % 4], for k below count_. (A deque
+  // made and freed a block every few tokens.)
+  std::array<Token, 4> ahead_;
+  std::size_t head_ = 0, count_ = 0, first_ = 0;
   std::size_t pos_ = 0;
   Grammar g_;
   std::map<std::string, RuleId> labels_;
   NameIndex<std::uint32_t> constant_ids_;  // g_.constants by name
   std::vector<std::string> rule_names_;
   std::vector<int> declared_params_;
-  std::vector<std::vector<Alternative>> alternatives_;
+  std::vector<Alternatives> alternatives_;
   std::vector<PendingCall> pending_calls_;
-  const std::vector<std::string>* params_ = nullptr;
+  const std::vector<std::string>* params_ = nullptr;     // of the rule being read
+  const NameIndex<std::uint32_t>* param_ids_ = nullptr;  // the same by name
   std::string start_label_;
   SourceLoc start_loc_;
   int nesting_ = 0;
@@ -797,6 +860,22 @@ Grammar parse_grammar(std::string_view text, const std::string& source_name) {
   return Parser(text, source_name).run();
 }
 
+namespace {
+
+// The file's text in a string of its size: one copy of it, where a stream
+// buffer copied out whole held two.
+std::string whole_text(std::ifstream& in, const std::filesystem::path& path) {
+  std::string text;
+  std::error_code ec;
+  if (const auto size = std::filesystem::file_size(path, ec); !ec) text.reserve(size);
+  char block[1 << 16];
+  while (in.read(block, sizeof block) || in.gcount() > 0) text.append(block, static_cast<std::size_t>(in.gcount()));
+  if (in.bad()) fail(ErrorKind::Io, path.string(), {}, "cannot read the grammar file", "check the file and its disk");
+  return text;
+}
+
+}  // namespace
+
 Grammar read_grammar_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
@@ -804,9 +883,10 @@ Grammar read_grammar_file(const std::filesystem::path& path) {
   require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(ErrorKind::Io, path.string(), {}, "cannot open the grammar file", "check the path");
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  return parse_grammar(buf.str(), path.string());
+  const std::string name = path.string();
+  return naming_out_of_memory(name, "while reading this grammar",
+                              "read a smaller grammar (fewer rule lines), or free memory for the run",
+                              [&] { return parse_grammar(whole_text(in, path), name); });
 }
 
 }  // namespace vern

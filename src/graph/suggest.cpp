@@ -4,40 +4,74 @@
 
 namespace vern {
 
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+std::optional<std::size_t> edit_distance_within(std::string_view a, std::string_view b, std::size_t limit) {
+  if (a.size() > b.size()) std::swap(a, b);
+  if (b.size() - a.size() > limit) return std::nullopt;  // that many insertions at least
+  // row[j] is the distance from a's first i characters to b's first j,
+  // for the j within `limit` of i; `over` stands for every larger value.
+  const std::size_t over = limit + 1;
+  std::vector<std::size_t> row(b.size() + 1, over);
+  for (std::size_t j = 0; j <= std::min(b.size(), limit); ++j) row[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
+    const std::size_t first = i > limit ? i - limit : 1;
+    const std::size_t last = std::min(b.size(), i + limit);
+    std::size_t diagonal = row[first - 1];
+    std::size_t left = first == 1 ? std::min(i, over) : over;
+    if (first == 1) row[0] = left;
+    std::size_t smallest = left;
+    for (std::size_t j = first; j <= last; ++j) {
       const std::size_t up = row[j];
-      const std::size_t substitute = diag + (a[i - 1] == b[j - 1] ? 0 : 1);
-      row[j] = std::min(std::min(row[j] + 1, row[j - 1] + 1), substitute);
-      diag = up;
+      const std::size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+      const std::size_t d = std::min({up + 1, left + 1, substitute, over});
+      diagonal = up;
+      row[j] = left = d;
+      smallest = std::min(smallest, d);
     }
+    if (smallest > limit) return std::nullopt;  // every path goes through this row
   }
+  if (row[b.size()] > limit) return std::nullopt;
   return row[b.size()];
 }
 
 std::string closest_name(std::string_view name, const std::vector<std::string>& candidates) {
-  // A third of the name's length (at least 2) counts as a typo, not a new word.
-  std::size_t best_distance = std::max<std::size_t>(2, name.size() / 3) + 1;
+  // A third of the name's length (at least 2) counts as a typo, not a new
+  // word; and no more than 8 edits, which a name of up to 26 characters
+  // never reaches: more is a different name, and it would only make each
+  // comparison cost more.
+  std::size_t limit = std::min<std::size_t>(std::max<std::size_t>(2, name.size() / 3), 8);
   std::string best;
   for (const auto& c : candidates) {
-    const std::size_t d = edit_distance(name, c);
-    if (d < best_distance) best_distance = d, best = c;
+    const auto d = edit_distance_within(name, c, limit);
+    if (!d) continue;
+    best = c;
+    if (*d == 0) break;
+    limit = *d - 1;  // the first of the closest wins: only a closer one replaces it
   }
   return best;
 }
 
 std::string suggest(std::string_view name, const std::vector<std::string>& candidates, const std::string& what) {
-  if (auto best = closest_name(name, candidates); !best.empty()) return "did you mean '" + best + "'?";
+  if (auto best = closest_name(name, candidates); !best.empty()) return "did you mean '" + shown_name(best) + "'?";
+  return listed(candidates, what);
+}
+
+std::string listed(const std::vector<std::string>& candidates, const std::string& what) {
   if (candidates.empty()) return "there are no " + what;
   std::string list;
-  for (std::size_t i = 0; i < candidates.size() && i < 12; ++i) list += (i ? ", " : "") + candidates[i];
+  for (std::size_t i = 0; i < candidates.size() && i < 12; ++i) list += (i ? ", " : "") + shown_name(candidates[i]);
   if (candidates.size() > 12) list += ", ...";
   return what + " are: " + list;
+}
+
+std::string shown_name(std::string_view name) {
+  constexpr std::size_t kShown = 60, kStart = 40;
+  if (name.size() <= kShown) return std::string(name);
+  // Cut before a UTF-8 continuation byte, never inside a character.
+  std::size_t cut = kStart;
+  while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;
+  const auto characters = std::count_if(name.begin(), name.end(),
+                                        [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
+  return std::string(name.substr(0, cut)) + "... (" + std::to_string(characters) + " characters)";
 }
 
 }  // namespace vern

@@ -2,20 +2,34 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace vern {
 
-// Levenshtein distance between two names.
-std::size_t edit_distance(std::string_view a, std::string_view b);
+// The Levenshtein distance between a and b when it is at most `limit`,
+// else nullopt. Only the cells within `limit` of the diagonal can lie on
+// such a path, and the work stops at the first row with none within it:
+// at most (2 * limit + 1) steps per character of the shorter name, where
+// the whole table took the product of both lengths (two names of 400,000
+// characters: half a minute).
+std::optional<std::size_t> edit_distance_within(std::string_view a, std::string_view b, std::size_t limit);
 
 // The candidate closest to name when it is close enough to be a likely typo.
 std::string closest_name(std::string_view name, const std::vector<std::string>& candidates);
 
 // A hint for an unknown name: "did you mean 'garage'?" when one candidate is
-// close, otherwise "<what> are: a, b, c" (at most 12 listed).
+// close, otherwise listed(candidates, what).
 std::string suggest(std::string_view name, const std::vector<std::string>& candidates, const std::string& what);
+
+// "<what> are: a, b, c" (at most 12 listed), or "there are no <what>".
+std::string listed(const std::vector<std::string>& candidates, const std::string& what);
+
+// A name as a message shows it: whole up to 60 bytes, else its start and
+// how long it is ("aaaa... (400000 characters)"), so that a hostile name
+// does not make a message of megabytes.
+std::string shown_name(std::string_view name);
 
 }  // namespace vern

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <numeric>
 #include <optional>
+#include <span>
+#include <stdexcept>
 #include <string_view>
 #include <unordered_set>
 #include <utility>
@@ -26,7 +28,10 @@
 #include "graph/label.hpp"
 #include "graph/number_format.hpp"
 #include "graph/out_of_memory.hpp"
+#include "inverse/glb_chunks.hpp"
 #include "inverse/gltf_files.hpp"
+#include "inverse/gltf_rules.hpp"
+#include "inverse/json_cost.hpp"
 #include "inverse/loose_parts.hpp"
 #include "inverse/plain_glb.hpp"
 
@@ -73,6 +78,10 @@ std::string too_many_faces_hint(const ExampleLimits& limits) {
 class PartAdder {
  public:
   PartAdder(Example& example, const ExampleLimits& limits) : example_(example), limits_(limits) {}
+
+  // Whether a part labelled `label` would not be the first of its label:
+  // its mesh is not kept, only its box and positions.
+  bool has_label(const std::string& label) const { return labels_.count(label) != 0; }
 
   // `label`: the part's (graph/label.hpp); `object`: how messages name the
   // part (its name in the file). `whole`: the mesh is known to be one loose
@@ -177,7 +186,7 @@ struct PartName {
 class AccessorReader {
  public:
   AccessorReader(const tinygltf::Model& model, int index, const std::string& source, const PartName& who,
-                 std::string_view attribute)
+                 std::string_view attribute, AccessorUse use = AccessorUse::VertexAttribute)
       : source_(source), who_(who), attribute_(attribute) {
     if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) broken("refers to a missing accessor");
     const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(index)];
@@ -198,7 +207,7 @@ class AccessorReader {
     stride_ = static_cast<std::size_t>(stride);
     component_size_ = static_cast<std::size_t>(component_size);
     count_ = a.count;
-    if (count_ == 0) return;  // nothing is read, whatever the offsets say
+    if (count_ == 0) broken(accessor_problem(model, index, use));
     // Where the last element ends, in the view and in the buffer. Every
     // number here is the file's to choose: near 2^64 they would wrap round
     // into a range that fits, so each step is checked.
@@ -211,6 +220,7 @@ class AccessorReader {
     if (!end_in_buffer || *end_in_view > view.byteLength || *end_in_buffer > data.size()) {
       broken("reads past the end of its buffer");
     }
+    if (const std::string problem = accessor_problem(model, index, use); !problem.empty()) broken(problem);
     // Neither sum wraps: the start lies below the end.
     data_ = data.data() + view.byteOffset + a.byteOffset;
   }
@@ -338,7 +348,7 @@ std::optional<std::vector<glm::dmat4>> instance_matrices(const tinygltf::Model& 
     if (!attributes.Has(a.name)) continue;
     const tinygltf::Value& index = attributes.Get(a.name);
     if (!index.IsInt()) broken(std::string(a.name) + " is not an accessor index");
-    a.reader.emplace(model, index.GetNumberAsInt(), source, who, a.accessor);
+    a.reader.emplace(model, index.GetNumberAsInt(), source, who, a.accessor, AccessorUse::Other);
     if (a.reader->components() != a.components)
       broken(std::string(a.name) + " must hold " + std::to_string(a.components) + " numbers per instance");
     if (count && *count != a.reader->count()) broken("attributes hold different numbers of instances");
@@ -442,49 +452,52 @@ void read_positions(const tinygltf::Model& model, int accessor, const std::strin
     out.positions.emplace_back(positions.get(i, 0), positions.get(i, 1), positions.get(i, 2));
 }
 
-// The rest of a primitive whose positions are read: normals and texture
-// coordinates (kept when there is one per position, as Mesh needs them)
-// and indices.
+// The rest of a primitive whose positions are read (and whose accessors
+// primitive_problem found sound: one NORMAL and TEXCOORD_0 per position):
+// normals, texture coordinates and indices.
 void read_surface(const tinygltf::Model& model, const tinygltf::Primitive& p, const std::string& source,
                   const PartName& who, LocalPrimitive& out) {
   const std::size_t count = out.positions.size();
   if (const auto nrm = p.attributes.find("NORMAL"); nrm != p.attributes.end()) {
     const AccessorReader normals(model, nrm->second, source, who, "NORMAL");
-    if (normals.components() == 3 && normals.count() == count) {
-      out.normals.reserve(count);
-      for (std::size_t i = 0; i < count; ++i) {
-        const glm::dvec3 stored(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
-        if (!std::isfinite(stored.x) || !std::isfinite(stored.y) || !std::isfinite(stored.z))
-          not_finite(source, who, "NORMAL", i);
-        out.normals.push_back(stored);
-      }
+    out.normals.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::dvec3 stored(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
+      if (!std::isfinite(stored.x) || !std::isfinite(stored.y) || !std::isfinite(stored.z))
+        not_finite(source, who, "NORMAL", i);
+      out.normals.push_back(stored);
     }
   }
   if (const auto tex = p.attributes.find("TEXCOORD_0"); tex != p.attributes.end()) {
     const AccessorReader uvs(model, tex->second, source, who, "TEXCOORD_0");
-    if (uvs.components() == 2 && uvs.count() == count) {
-      out.uvs.reserve(count);
-      // glTF's v points down, OBJ's (and Mesh's) up.
-      for (std::size_t i = 0; i < count; ++i) {
-        const glm::dvec2 uv(uvs.get(i, 0), 1.0 - uvs.get(i, 1));
-        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) not_finite(source, who, "TEXCOORD_0", i);
-        out.uvs.push_back(uv);
-      }
+    out.uvs.reserve(count);
+    // glTF's v points down, OBJ's (and Mesh's) up.
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::dvec2 uv(uvs.get(i, 0), 1.0 - uvs.get(i, 1));
+      if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) not_finite(source, who, "TEXCOORD_0", i);
+      out.uvs.push_back(uv);
     }
   }
-  out.mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+  out.mode = p.mode;
   if (p.indices < 0) {
     out.indices.resize(count);
     std::iota(out.indices.begin(), out.indices.end(), 0u);
     return;
   }
-  const AccessorReader reader(model, p.indices, source, who, "index");
+  const AccessorReader reader(model, p.indices, source, who, "index", AccessorUse::Indices);
+  const int component_type = model.accessors[static_cast<std::size_t>(p.indices)].componentType;
   out.indices.reserve(reader.count());
   for (std::size_t i = 0; i < reader.count(); ++i) {
     const std::uint32_t index = reader.index(i);
     if (index >= count) {
       fail(ErrorKind::Input, source, {},
            who.text() + ": index " + std::to_string(index) + " is past the " + std::to_string(count) + " vertices",
+           "export the file again, or check it with scripts/validate-gltf");
+    }
+    if (is_restart_index(component_type, index)) {
+      fail(ErrorKind::Input, source, {},
+           who.text() + ": index " + std::to_string(i) + " is " + std::to_string(index) +
+               ", the largest of its type, which glTF keeps for restarting strips",
            "export the file again, or check it with scripts/validate-gltf");
     }
     out.indices.push_back(index);
@@ -575,31 +588,71 @@ Mesh local_shape(const LocalMesh& local) {
   return shape;
 }
 
-// Reads a glTF mesh for the first part that uses it, placing each
-// primitive for that part as soon as it is read, so that the part's errors
-// come in the order they always did (a vertex placed beyond 1e12 before a
-// broken NORMAL accessor of its primitive). Any error in what is read
-// stops reading at this first part: later ones only place the mesh.
-// Whether it is whole is left to MeshReader.
-LocalMesh read_mesh(const tinygltf::Model& model, const tinygltf::Mesh& gmesh, const Placement& placement,
-                    const std::string& source, const PartName& who, const ExampleLimits& limits, Mesh& out) {
+// Vertices and faces placed so far in an example, held to
+// ExampleLimits::max_total_faces before they are placed. A mesh counts
+// once for each part that places it: a small file whose thousand nodes
+// share a mesh of a million triangles stops at the limit, not after a
+// billion triangles.
+class PlacedTotals {
+ public:
+  // The counts are each bounded by a buffer's size: the sums do not wrap.
+  void add(std::size_t vertices, std::size_t faces, const std::string& source, const PartName& who,
+           const ExampleLimits& limits) {
+    vertices_ += vertices;
+    faces_ += faces;
+    const bool too_many_faces = faces_ > limits.max_total_faces;
+    if (!too_many_faces && vertices_ <= limits.max_total_faces) return;
+    fail(ErrorKind::Limit, source, {},
+         "the parts up to " + who.text() + " hold more than " + std::to_string(limits.max_total_faces) +
+             (too_many_faces ? " faces" : " vertices") + " in all (a mesh counts once for each node that places it)",
+         "raise the limit with --max-total-faces (now " + std::to_string(limits.max_total_faces) +
+             (too_many_faces ? "" : "; it bounds vertices too") + "), or give the example fewer or simpler parts");
+  }
+
+ private:
+  std::size_t vertices_ = 0, faces_ = 0;
+};
+
+// Reads a glTF mesh (`mesh`, an index the file has) for the first part
+// that uses it, placing each primitive for that part as soon as it is
+// read, so that the part's errors come in the order they always did (a
+// vertex placed beyond 1e12 before a broken NORMAL accessor of its
+// primitive). Any error in what is read stops reading at this first part:
+// later ones only place the mesh. Whether it is whole is left to MeshReader.
+LocalMesh read_mesh(const tinygltf::Model& model, int mesh, const Placement& placement, const std::string& source,
+                    const PartName& who, const ExampleLimits& limits, PlacedTotals& totals, Mesh& out) {
   LocalMesh local;
-  for (const tinygltf::Primitive& p : gmesh.primitives) {
+  const tinygltf::Mesh& gmesh = model.meshes[static_cast<std::size_t>(mesh)];
+  for (std::size_t k = 0; k < gmesh.primitives.size(); ++k) {
+    const tinygltf::Primitive& p = gmesh.primitives[k];
     const auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) continue;  // nothing to place
+    auto check = [&](const std::string& problem) {
+      if (problem.empty()) return;
+      fail(ErrorKind::Input, source, {},
+           who.text() + ": mesh " + std::to_string(mesh) + " primitive " + std::to_string(k) + " " + problem,
+           "export the file again, or check it with scripts/validate-gltf");
+    };
+    check(primitive_problem(model, p));
+    // Counted once read: the reading checks the counts against the buffers.
     LocalPrimitive& primitive = local.primitives.emplace_back();
     read_positions(model, pos->second, source, who, primitive);
+    totals.add(primitive.positions.size(), 0, source, who, limits);
     const auto base = static_cast<std::uint32_t>(out.positions.size());
     place_positions(primitive, placement.world, source, who, out);
     read_surface(model, p, source, who, primitive);
+    check(index_count_problem(p.mode, primitive.indices.size()));
+    totals.add(0, triangle_count(primitive.mode, primitive.indices.size()), source, who, limits);
     place_surface(primitive, placement, base, source, who, limits, out);
   }
   return local;
 }
 
-// Places a mesh read for an earlier part, transformed to world space.
+// Places a mesh read for an earlier part, transformed to world space: its
+// positions, and unless `surface` is false its normals, texture
+// coordinates and faces.
 void place_mesh(const LocalMesh& local, const Placement& placement, const std::string& source, const PartName& who,
-                const ExampleLimits& limits, Mesh& out) {
+                const ExampleLimits& limits, bool surface, PlacedTotals& totals, Mesh& out) {
   std::size_t positions = 0, normals = 0, uvs = 0, triangles = 0;
   for (const LocalPrimitive& p : local.primitives) {
     positions += p.positions.size();
@@ -607,15 +660,18 @@ void place_mesh(const LocalMesh& local, const Placement& placement, const std::s
     uvs += p.uvs.size();
     triangles += triangle_count(p.mode, p.indices.size());
   }
+  totals.add(positions, triangles, source, who, limits);
   out.positions.reserve(positions);
-  out.normals.reserve(normals);
-  out.uvs.reserve(uvs);
-  out.corners.reserve(3 * triangles);
-  out.face_sizes.reserve(triangles);
+  if (surface) {
+    out.normals.reserve(normals);
+    out.uvs.reserve(uvs);
+    out.corners.reserve(3 * triangles);
+    out.face_sizes.reserve(triangles);
+  }
   for (const LocalPrimitive& p : local.primitives) {
     const auto base = static_cast<std::uint32_t>(out.positions.size());
     place_positions(p, placement.world, source, who, out);
-    place_surface(p, placement, base, source, who, limits, out);
+    if (surface) place_surface(p, placement, base, source, who, limits, out);
   }
 }
 
@@ -635,15 +691,18 @@ class MeshReader {
   }
 
   // Makes a part's mesh (`mesh`: an index the file has) in world space.
-  // Returns whether the part is known to be one loose piece.
-  bool place(int mesh, const Placement& placement, const PartName& who, Mesh& out) {
+  // Returns whether the part is known to be one loose piece. `surface`:
+  // whether the part needs its faces (it is the first of its label);
+  // a part known whole that does not is only its positions, which are all
+  // a part that is not its label's mesh keeps.
+  bool place(int mesh, const Placement& placement, const PartName& who, bool surface, Mesh& out) {
     const auto m = static_cast<std::size_t>(mesh);
     std::optional<LocalMesh>& kept = kept_[m];
     if (kept) {
-      place_mesh(*kept, placement, source_, who, limits_, out);
+      place_mesh(*kept, placement, source_, who, limits_, surface || !kept->whole, totals_, out);
       return kept->whole;
     }
-    LocalMesh read = read_mesh(model_, model_.meshes[m], placement, source_, who, limits_, out);
+    LocalMesh read = read_mesh(model_, mesh, placement, source_, who, limits_, totals_, out);
     if (uses_[m] < 2) return false;  // loose pieces are looked for as in any part
     read.whole = loose_pieces(local_shape(read)).empty();
     kept = std::move(read);
@@ -658,6 +717,7 @@ class MeshReader {
   // or nodes the scene does not reach, count too: keeping is harmless).
   std::vector<std::size_t> uses_;
   std::vector<std::optional<LocalMesh>> kept_;
+  PlacedTotals totals_;
 };
 
 // tinygltf's file system: every file it opens is one GltfFiles allows.
@@ -680,9 +740,16 @@ tinygltf::Model load_with_tinygltf(const fs::path& path, bool binary, const Exam
   std::string err, warn;
   // tinygltf takes the length as an unsigned int: the cap keeps it below 4 GiB.
   const auto length = static_cast<unsigned int>(bytes.size());
-  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, files.folder())
-                         : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                                      length, files.folder());
+  bool ok = false;
+  try {
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), length, files.folder())
+                : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()), length,
+                                             files.folder());
+  } catch (const std::logic_error& e) {
+    // tinygltf indexes some vectors with at(): a buffer of byteLength 0
+    // in a GLB throws out_of_range. The file is what is wrong.
+    err = std::string("tinygltf could not read it (") + e.what() + ")";
+  }
   if (!ok) {
     // A file the glTF names that was refused is the reason, said our way.
     if (const auto& refused = files.refusal()) fail(refused->kind, source, {}, refused->message, refused->hint);
@@ -700,6 +767,31 @@ tinygltf::Model load_with_tinygltf(const fs::path& path, bool binary, const Exam
   return model;
 }
 
+// JSON nested deeper than this is refused: tinygltf reads extras and
+// extensions recursively. glTF's own objects nest 8 deep at most.
+constexpr std::size_t kMaxJsonDepth = 64;
+
+// Refuses a glTF's JSON text whose reading would take more memory than the
+// file limit (json_cost.hpp), or that nests deeper than kMaxJsonDepth.
+void check_json_cost(std::string_view text, bool binary, const std::string& source, const GltfFileRules& rules) {
+  const JsonCost cost = json_cost(text, kMaxJsonDepth);
+  if (cost.too_deep_at != JsonCost::npos) {
+    const SourceLoc at = text_location(text, cost.too_deep_at);
+    fail(ErrorKind::Input, source, binary ? SourceLoc{} : at,
+         std::string("its JSON") + (binary ? " (line " + std::to_string(at.line) + ")" : "") +
+             " nests arrays and objects more than " + std::to_string(kMaxJsonDepth) + " deep",
+         "glTF's own objects nest 8 deep: flatten the extras, or export the file again");
+  }
+  if (cost.bytes > rules.max_bytes) {
+    fail(ErrorKind::Limit, source, {},
+         "its JSON holds " + std::to_string(cost.values) + " values, which take up to " +
+             std::to_string((cost.bytes >> 20) + 1) + " MiB of memory once read: more than the limit of " +
+             mebibytes(rules.max_bytes),
+         "glTF JSON takes up to a few hundred bytes per value once read: raise the limit with --max-gltf-mib (now " +
+             std::to_string(rules.max_bytes >> 20) + "), or keep the geometry in binary buffers");
+  }
+}
+
 Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits& limits) {
   Example ex;
   ex.source = path.string();
@@ -709,19 +801,30 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     fail(refused->kind, ex.source, {}, refused->problem,
          refused->kind == ErrorKind::Limit ? gltf_size_hint(limits.gltf) : "check the path and the file's permissions");
   }
+  // The container and the JSON are checked before any reader sees them.
+  std::span<const unsigned char> json = bytes;
+  if (binary) {
+    const GlbChunks chunks = glb_chunks(bytes);
+    if (!chunks.problem.empty()) {
+      fail(ErrorKind::Input, ex.source, {}, "is not a valid GLB file: " + chunks.problem,
+           "export the file again, or check it with scripts/validate-gltf");
+    }
+    json = chunks.json;
+  }
+  check_json_cost({reinterpret_cast<const char*>(json.data()), json.size()}, binary, ex.source, limits.gltf);
   // The common GLB is read without tinygltf's JSON document; every other
   // file, and every error, is tinygltf's (plain_glb.hpp).
   std::optional<tinygltf::Model> plain = binary ? read_plain_glb(bytes) : std::nullopt;
   tinygltf::Model model = plain ? std::move(*plain) : load_with_tinygltf(path, binary, limits, bytes, ex.source);
   plain.reset();
   bytes = {};
+  check_gltf_file_rules(model, ex.source);
 
-  // The default scene's roots; without scenes, every node no other node
-  // lists as a child.
+  // The default scene's roots (check_gltf_file_rules found it); without
+  // scenes, every node no other node lists as a child.
   std::vector<int> roots;
   if (!model.scenes.empty()) {
-    const auto scene = static_cast<std::size_t>(model.defaultScene >= 0 ? model.defaultScene : 0);
-    if (scene < model.scenes.size()) roots = model.scenes[scene].nodes;
+    roots = model.scenes[static_cast<std::size_t>(model.defaultScene >= 0 ? model.defaultScene : 0)].nodes;
   } else {
     std::vector<bool> is_child(model.nodes.size(), false);
     for (const tinygltf::Node& n : model.nodes)
@@ -757,13 +860,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     visited[static_cast<std::size_t>(index)] = true;
     const glm::dmat4 world = parent * local_matrix(node);
     for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.emplace_back(*it, world);
-    if (node.mesh < 0) continue;
-    if (static_cast<std::size_t>(node.mesh) >= model.meshes.size()) {
-      fail(ErrorKind::Input, ex.source, {},
-           who.text() + " refers to mesh " + std::to_string(node.mesh) + ", but the file has " +
-               std::to_string(model.meshes.size()) + " mesh" + (model.meshes.size() == 1 ? "" : "es"),
-           "export the file again, or check it with scripts/validate-gltf");
-    }
+    if (node.mesh < 0) continue;  // else one the file has (check_gltf_file_rules)
     if (node.name.empty()) {
       fail(ErrorKind::Input, ex.source, {},
            who.text() + " has a mesh but no name: inference cannot tell which primitive it is",
@@ -785,15 +882,11 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
       }
       const Placement placement(instances ? world * (*instances)[i] : world);
       Mesh mesh;
-      const bool whole = meshes.place(node.mesh, placement, part, mesh);
+      // Each primitive placed draws a triangle or more (primitive_problem).
+      const bool whole = meshes.place(node.mesh, placement, part, !adder.has_label(label), mesh);
       if (mesh.positions.empty()) {
         fail(ErrorKind::Input, ex.source, {}, part.text() + " has a mesh without vertex positions",
              "export the file again with geometry for every named part");
-      }
-      // The part's shape becomes its primitive's mesh, which needs faces.
-      if (mesh.face_sizes.empty()) {
-        fail(ErrorKind::Input, ex.source, {}, part.text() + " has no triangles: its mesh holds only points or lines",
-             "export the part as a surface (triangles), or leave it out");
       }
       const std::string object = shown_name(node.name) + (instances ? " (instance " + std::to_string(i) + ")" : "");
       adder.add(label, 0, mesh, object, whole);

@@ -63,6 +63,13 @@ struct ExampleLimits {
   // mesh is linear in its vertices, but a scanned statue need not be a
   // part of a grammar of buildings. Reading stops at the first face past it.
   std::size_t max_faces = 1'000'000;
+  // Faces, and vertices, that a glTF example's parts place in all
+  // (infer/check --max-total-faces): a mesh counts once for each node or
+  // instance that places it, so a small file cannot make a billion faces
+  // of one mesh a thousand nodes share. Reading stops before the part past
+  // it is placed. An OBJ's faces are each a line of the file, read as they
+  // come: its size bounds them.
+  std::size_t max_total_faces = 10'000'000;
   // Which files a glTF may have read, and how large (gltf_files.hpp;
   // infer/check --allow-outside-files, --max-gltf-mib).
   GltfFileRules gltf;
@@ -85,11 +92,14 @@ struct ExampleLimits {
 // axis, within default_tolerance), a vertex that is not finite or beyond
 // kMaxObjCoordinate (also after a glTF node's transform), a glTF node
 // reached twice or naming a missing mesh, a glTF URI that limits.gltf
-// refuses (gltf_files.hpp), or is not a valid OBJ or glTF file; Limit for
-// more parts than limits.max_parts, or a glTF file (or one it names) larger
-// than limits.gltf.max_bytes, or a part of more than limits.max_faces
-// faces; Usage for another extension. A part flat on one axis (a facade
-// panel) is fine.
+// refuses (gltf_files.hpp), or is not a valid OBJ or glTF file (glTF: by
+// the rules gltf_rules.hpp and glb_chunks.hpp check, and JSON nested more
+// than 64 deep); Limit for more parts than limits.max_parts, or a glTF file
+// (or one it names) larger than limits.gltf.max_bytes, or one whose JSON
+// would take more memory than that once read (json_cost.hpp), or a part of
+// more than limits.max_faces faces, or glTF parts that place more than
+// limits.max_total_faces faces or vertices in all; Usage for another
+// extension. A part flat on one axis (a facade panel) is fine.
 // threads: 1 reads on this thread alone; otherwise a second thread reads an
 // OBJ's text ahead (obj_reader.hpp; the same example, and the same error).
 Example load_example(const std::filesystem::path& path, const ExampleLimits& limits = {}, unsigned threads = 1);

@@ -25,7 +25,9 @@ namespace vern {
 
 struct GltfFileRules {
   bool outside_folder = false;  // URIs may name files anywhere
-  std::uint64_t max_bytes = std::uint64_t{256} << 20;  // per file: the glTF or GLB itself, each buffer, each image
+  // Per file: the glTF or GLB itself, each buffer, each image; and the
+  // memory the glTF's JSON may take once read (json_cost.hpp).
+  std::uint64_t max_bytes = std::uint64_t{256} << 20;
 };
 
 // The hint for a file over rules.max_bytes: the flag that raises it.

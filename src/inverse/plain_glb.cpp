@@ -5,10 +5,12 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 #include <string_view>
 #include <vector>
 
 #include "forward/gltf_container.hpp"
+#include "inverse/glb_chunks.hpp"
 #include "inverse/json_cursor.hpp"
 
 namespace vern {
@@ -18,12 +20,6 @@ namespace {
 using Declined = JsonCursor::Declined;
 
 [[noreturn]] void decline() { throw Declined{}; }
-
-std::uint32_t word(std::span<const unsigned char> bytes, std::size_t at) {
-  std::uint32_t v = 0;
-  std::memcpy(&v, bytes.data() + at, 4);  // GLB is little-endian, as every target of ours
-  return v;
-}
 
 // Keys an object may hold, each once. A key outside the list declines.
 class Keys {
@@ -122,8 +118,13 @@ class Reader {
 
   void asset() {
     object({"version", "generator", "copyright", "minVersion"}, [&](std::size_t k, Keys&) {
-      json_.string();
-      if (k == 0) version_ = true;
+      const std::string_view text = json_.string();
+      if (k == 0) {
+        model_.asset.version = text;
+        version_ = true;
+      } else if (k == 3) {
+        model_.asset.minVersion = text;
+      }
     });
   }
 
@@ -252,7 +253,8 @@ class Reader {
       if (k == 0) length = json_.unsigned_integer();
       else b.name = json_.string();
     });
-    if (!length || bin_.empty() || *length > bin_.size()) decline();
+    // tinygltf throws on a buffer of byteLength 0 in a GLB.
+    if (!length || *length == 0 || bin_.empty() || *length > bin_.size()) decline();
     b.data.assign(bin_.begin(), bin_.begin() + static_cast<std::ptrdiff_t>(*length));
   }
 
@@ -265,28 +267,15 @@ class Reader {
 }  // namespace
 
 std::optional<tinygltf::Model> read_plain_glb(std::span<const unsigned char> bytes) {
-  // The header and chunks (laid out as gltf_container.hpp says) as
-  // tinygltf checks them, a little stricter: the file is exactly as long as
-  // it says, and the binary chunk lies in it whole.
-  constexpr std::uint32_t kJson = 0x4E4F534A, kBin = 0x004E4942;
-  if (bytes.size() < kGlbJsonOffset || std::memcmp(bytes.data(), "glTF", 4) != 0 || word(bytes, 4) != 2 ||
-      word(bytes, 8) != bytes.size() || word(bytes, 16) != kJson)
+  // The container as glb_chunks checks it, and as tinygltf reads it: what
+  // follows the JSON chunk is the BIN chunk, of 4 bytes or more.
+  const GlbChunks chunks = glb_chunks(bytes);
+  if (!chunks.problem.empty()) return std::nullopt;
+  if (kGlbJsonOffset + chunks.json.size() != bytes.size() && (!chunks.has_bin || chunks.bin.size() < 4))
     return std::nullopt;
-  const std::uint64_t json_length = word(bytes, 12);
-  const std::uint64_t json_end = kGlbJsonOffset + json_length;
-  if (json_length < 4 || json_end > bytes.size() || json_end % 4 != 0) return std::nullopt;
-  std::span<const unsigned char> bin;
-  if (json_end != bytes.size()) {
-    if (json_end + 8 > bytes.size()) return std::nullopt;
-    const std::uint64_t bin_length = word(bytes, json_end);
-    if (bin_length < 4 || bin_length % 4 != 0 || word(bytes, json_end + 4) != kBin ||
-        json_end + 8 + bin_length > bytes.size())
-      return std::nullopt;
-    bin = bytes.subspan(json_end + 8, bin_length);
-  }
-  const std::string_view text(reinterpret_cast<const char*>(bytes.data() + kGlbJsonOffset), json_length);
+  const std::string_view text(reinterpret_cast<const char*>(chunks.json.data()), chunks.json.size());
   try {
-    return Reader(text, bin).read();
+    return Reader(text, chunks.bin).read();
   } catch (const Declined&) {
     return std::nullopt;
   }
@@ -300,6 +289,8 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
 
 // The first difference in the fields load_gltf_example reads, or "".
 std::string read_fields_difference(const tinygltf::Model& a, const tinygltf::Model& b) {
+  if (a.asset.version != b.asset.version || a.asset.minVersion != b.asset.minVersion) return "asset version";
+  if (a.extensionsUsed != b.extensionsUsed || a.extensionsRequired != b.extensionsRequired) return "extensions";
   if (a.defaultScene != b.defaultScene) return "default scene";
   if (a.scenes.size() != b.scenes.size()) return "scene count";
   for (std::size_t i = 0; i < a.scenes.size(); ++i)
@@ -346,7 +337,8 @@ std::string read_fields_difference(const tinygltf::Model& a, const tinygltf::Mod
   }
   if (a.buffers.size() != b.buffers.size()) return "buffer count";
   for (std::size_t i = 0; i < a.buffers.size(); ++i)
-    if (a.buffers[i].data != b.buffers[i].data) return "buffer " + std::to_string(i) + " data";
+    if (a.buffers[i].uri != b.buffers[i].uri || a.buffers[i].data != b.buffers[i].data)
+      return "buffer " + std::to_string(i) + " data";
   return "";
 }
 
@@ -360,8 +352,12 @@ std::string plain_glb_disagreement(std::span<const unsigned char> bytes) {
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
   std::string err, warn;
-  if (!loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()), ""))
-    return "read as a plain GLB, but tinygltf refuses it: " + err;
+  try {
+    if (!loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()), ""))
+      return "read as a plain GLB, but tinygltf refuses it: " + err;
+  } catch (const std::logic_error& e) {
+    return "read as a plain GLB, but tinygltf throws on it: " + std::string(e.what());
+  }
   const std::string difference = read_fields_difference(*plain, model);
   return difference.empty() ? "" : "read as a plain GLB, its " + difference + " differs from tinygltf's";
 }
