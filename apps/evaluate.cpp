@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include "eval/class_means.hpp"
@@ -20,6 +21,7 @@
 #include "graph/parser.hpp"
 #include "support/command_line.hpp"
 #include "support/guarded_main.hpp"
+#include "support/output_paths.hpp"
 
 namespace fs = std::filesystem;
 using namespace vern;
@@ -133,6 +135,49 @@ std::vector<RandomStyle> random_styles(const ParsedCommandLine& args) {
 }
 
 std::string style_name(std::size_t index) { return "random_style_" + std::to_string(index); }
+
+// Every file this run writes, checked before any work: none may be a
+// grammar evaluated, and no two may be one file (only the last written
+// would be left). --keep writes FOLDER/NAME.grm per grammar, NAME.N.grm
+// per example count N with --precision-recall (random grammars are
+// random_SEED, random styles random_style_I); --random-styles-write writes
+// FOLDER/random_style_I.grm.
+void check_written_files(const ParsedCommandLine& args, std::size_t styles) {
+  const std::vector<fs::path> grammars(args.positional.begin(), args.positional.end());
+  std::map<std::string, std::string> written;  // the file, its folder resolved -> what is written there
+  auto add = [&](const fs::path& folder, const fs::path& real, const std::string& file, const std::string& what) {
+    const auto [it, fresh] = written.try_emplace((real / file).string(), what);
+    if (!fresh)
+      throw Error(ErrorKind::Usage, "evaluate: error: " + it->second + " and " + what + " would both be written to " +
+                                        (folder / file).string() +
+                                        "\n  hint: rename one of the grammars, or write them to separate folders");
+    check_output_file("evaluate", folder / file, grammars, "the grammar file");
+  };
+  std::error_code ec;
+  if (args.has("--random-styles-write")) {
+    const fs::path folder = args.value("--random-styles-write");
+    const fs::path real = fs::canonical(folder, ec);
+    for (std::size_t i = 0; i < styles; ++i)
+      add(folder, real, style_name(i) + ".grm", "random style " + std::to_string(i));
+  }
+  if (!args.has("--keep")) return;
+  const fs::path folder = args.value("--keep");
+  const fs::path real = fs::canonical(folder, ec);
+  std::vector<std::string> suffixes = {".grm"};
+  if (args.has("--precision-recall")) {
+    suffixes.clear();
+    for (const std::uint32_t count : example_counts(args)) suffixes.push_back("." + std::to_string(count) + ".grm");
+  }
+  auto keep = [&](const std::string& name, const std::string& source) {
+    for (const std::string& suffix : suffixes) add(folder, real, name + suffix, "the grammar inferred from " + source);
+  };
+  for (const std::string& file : args.positional) keep(fs::path(file).stem().string(), file);
+  if (!args.has("--precision-recall")) return;
+  if (args.has("--random"))
+    for (long long seed = 1, n = CommandLine::integer(args, "--random", 1, 100000); seed <= n; ++seed)
+      keep("random_" + std::to_string(seed), "random grammar " + std::to_string(seed));
+  for (std::size_t i = 0; i < styles; ++i) keep(style_name(i), "random style " + std::to_string(i));
+}
 
 // For each class, the styles that contain it and their mean precision and
 // recall per N; then all styles, and how many are at 0.25 or below.
@@ -286,10 +331,12 @@ int run(int argc, char** argv) {
   std::error_code ec;
   if (args.has("--keep") && !fs::is_directory(args.value("--keep"), ec))
     throw Error(ErrorKind::Io, args.value("--keep") + ": error: not an existing folder\n  hint: create it first");
+  if (args.has("--random-styles-write") && !fs::is_directory(args.value("--random-styles-write"), ec))
+    throw Error(ErrorKind::Io,
+                args.value("--random-styles-write") + ": error: not an existing folder\n  hint: create it first");
+  check_written_files(args, styles.size());
   if (args.has("--random-styles-write")) {
     const fs::path folder = args.value("--random-styles-write");
-    if (!fs::is_directory(folder, ec))
-      throw Error(ErrorKind::Io, folder.string() + ": error: not an existing folder\n  hint: create it first");
     for (std::size_t i = 0; i < styles.size(); ++i)
       write_file_atomically(folder / (style_name(i) + ".grm"), styles[i].text);
     if (!args.has("--precision-recall") && args.positional.empty()) return 0;

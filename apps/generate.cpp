@@ -14,6 +14,7 @@
 #include "forward/primitive_check.hpp"
 #include "forward/variants.hpp"
 #include "graph/atomic_file.hpp"
+#include "graph/files_read.hpp"
 #include "graph/number_format.hpp"
 #include "graph/out_of_memory.hpp"
 #include "graph/parser.hpp"
@@ -294,6 +295,9 @@ int run(int argc, char** argv) {
   }
   const PrimitiveLibrary library =
       primitives_for(grammar, grammar_path, primitives_path, args.has("--allow-outside-files"));
+  // A mesh of a primitives folder is an input too: said before deriving.
+  if (one_file)
+    for (const fs::path& file : files_written(output, *file_format)) refuse_file_read(file);
   for (const auto& w : unknown_primitive_warnings(grammar, library)) {
     if (options.derive.strict) {
       // The warning's text, reported as the error --strict makes it.

@@ -11,6 +11,7 @@
 #include "graph/alongside.hpp"
 #include "graph/atomic_file.hpp"
 #include "graph/description_length.hpp"
+#include "graph/files_read.hpp"
 #include "graph/folder_confinement.hpp"
 #include "graph/out_of_memory.hpp"
 #include "graph/parallel_for.hpp"
@@ -155,6 +156,9 @@ int run(int argc, char** argv) {
   PrimitiveLibrary library = PrimitiveLibrary::builtin();
   if (args.has("--primitives")) library.load(args.value("--primitives"));
   options.primitives = &library;
+  // Every file read is an input, not only those named: a buffer a glTF
+  // names, a mesh of the --primitives folder. Said before inferring.
+  for (const fs::path& out : {output, prims, prims_mtl}) refuse_file_read(out);
   // Out of memory, the examples are named: the one, or the first and last.
   const std::string named = files.size() == 1 ? "this example"
                                               : std::to_string(files.size()) + " examples (" + files.front().string() +

@@ -36,7 +36,7 @@ constexpr int kOk = 0, kUsage = 2, kInput = 3, kLimit = 4, kIo = 5;
 
 struct BadInput {
   const char* name;
-  const char* tool;               // generate, infer or check
+  const char* tool;               // generate, infer, check or evaluate
   std::vector<std::string> args;  // run in the case's folder
   int exit_code;
   std::string where;  // the place the message must name ("x.obj:2:3: error: ")
@@ -191,6 +191,18 @@ void secret_beside_the_folder(const fs::path& d) {
   fs::create_directory(d / "ex");
   write_text(d / "ex/model.gltf", gltf_naming("../secret.bin", 48));
   binary_file(d / "secret.bin", box_bytes());
+}
+
+// model.gltf, whose buffer is the file `name`: an input no command line names.
+void buffer_named(const fs::path& d, const std::string& name) {
+  write_text(d / "model.gltf", gltf_naming(name, 48));
+  binary_file(d / name, box_bytes());
+}
+
+// A --primitives folder `p` holding one mesh, `name`.
+void primitives_folder(const fs::path& d, const std::string& name) {
+  fs::create_directory(d / "p");
+  fs::copy_file(kCorpus / "obj/two_parts.obj", d / "p" / name);
 }
 
 void fifo(const fs::path& path) { ASSERT_EQ(mkfifo(path.c_str(), 0644), 0) << path; }
@@ -991,6 +1003,16 @@ const std::vector<BadInput> kCases = {
      fs::create_directory(d / "out");
      fs::copy_file(kCorpus / "obj/two_parts.obj", d / "out/variant_000.obj"); }},
 
+  // Every file a run reads is an input, named on the command line or not:
+  // a glTF's buffer, a mesh of a primitives folder (the run fails at the
+  // first output that is one, before anything is renamed).
+  {"generate_output_is_in_the_primitives_folder", "generate", {"ok.grm", "--primitives", "p", "-o", "p/x.obj"}, kUsage,
+   "p/x.obj: error: ", "this output is a file the run has read", kValidGrammar,
+   [](const fs::path& d) { primitives_folder(d, "x.obj"); }},
+  {"generate_output_folder_is_the_primitives_folder", "generate", {"ok.grm", "--primitives", "p", "-o", "p/"}, kUsage,
+   "p/variant_000.obj: error: ", "this output is a file the run has read", kValidGrammar,
+   [](const fs::path& d) { primitives_folder(d, "variant_000.obj"); }},
+
   {"infer_unknown_option", "infer", {"two_parts.obj", "-o", "style.grm", "--tolerence", "1"}, kUsage,
    "infer: error: ", "unknown option '--tolerence'\n  hint: did you mean '--tolerance'?", kValidObj},
   {"infer_missing_value", "infer", {"two_parts.obj", "-o"}, kUsage,
@@ -1030,6 +1052,15 @@ const std::vector<BadInput> kCases = {
        if (e.path().extension() == ".obj") fs::copy_file(e.path(), d / "examples" / e.path().filename());
      earlier_outputs(d, {"style.grm", "style.prims.obj", "style.prims.mtl"}); },
    nullptr, 0, {}, {}, 0, 3000},
+  {"infer_gltf_buffer_is_the_meshes_materials", "infer", {"model.gltf", "-o", "style.grm"}, kUsage,
+   "style.prims.mtl: error: ", "this output is a file the run has read (as ./style.prims.mtl)", {},
+   [](const fs::path& d) { buffer_named(d, "style.prims.mtl"); }},
+  {"infer_gltf_buffer_is_the_grammar", "infer", {"model.gltf", "-o", "style.grm"}, kUsage,
+   "style.grm: error: ", "this output is a file the run has read (as ./style.grm)", {},
+   [](const fs::path& d) { buffer_named(d, "style.grm"); }},
+  {"infer_primitives_folder_holds_the_meshes", "infer", {"two_parts.obj", "--primitives", "p", "-o", "p/s.grm"}, kUsage,
+   "p/s.prims.obj: error: ", "this output is a file the run has read", kValidObj,
+   [](const fs::path& d) { primitives_folder(d, "s.prims.obj"); }},
   {"infer_primitives_out_not_obj", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out", "style.glb"}, kUsage,
    "infer: error: ", "--primitives-out must name an .obj file", kValidObj},
   {"infer_output_is_a_folder", "infer", {"two_parts.obj", "-o", "style.grm"}, kIo,
@@ -1039,6 +1070,27 @@ const std::vector<BadInput> kCases = {
    [](const fs::path& d) { write_text(d / "file", "a file, not a folder\n"); }},
   {"infer_unwritable_primitives_out", "infer", {"two_parts.obj", "-o", "style.grm", "--primitives-out", "meshes/style.obj"},
    kIo, "meshes/style.obj: error: ", "cannot write here: meshes is not an existing folder", kValidObj, nullptr, "style.grm"},
+
+  // evaluate's --keep writes a grammar per grammar evaluated, and
+  // --random-styles-write the styles: none may be a grammar evaluated, and
+  // no two may be one file.
+  {"evaluate_keep_is_the_grammars_folder", "evaluate", {"ok.grm", "-k", "2", "-n", "2", "--keep", "."}, kUsage,
+   "evaluate: error: ", "the output ./ok.grm is the grammar file itself", kValidGrammar},
+  {"evaluate_two_grammars_kept_in_one_file", "evaluate",
+   {"a/ok.grm", "b/ok.grm", "-k", "2", "-n", "2", "--keep", "kept"}, kUsage, "evaluate: error: ",
+   "the grammar inferred from a/ok.grm and the grammar inferred from b/ok.grm would both be written to kept/ok.grm", {},
+   [](const fs::path& d) {
+     for (const char* folder : {"a", "b", "kept"}) fs::create_directory(d / folder);
+     fs::copy_file(kCorpus / "grammar/ok.grm", d / "a/ok.grm");
+     fs::copy_file(kCorpus / "grammar/ok.grm", d / "b/ok.grm"); }},
+  {"evaluate_kept_over_another_grammar", "evaluate",
+   {"ok.grm", "ok.3.grm", "--precision-recall", "--counts", "3", "--samples", "2", "--keep", "."}, kUsage,
+   "evaluate: error: ", "the output ./ok.3.grm is the grammar file itself (ok.3.grm)", kValidGrammar,
+   [](const fs::path& d) { fs::copy_file(kCorpus / "grammar/ok.grm", d / "ok.3.grm"); }},
+  {"evaluate_random_style_written_over_a_grammar", "evaluate",
+   {"random_style_0.grm", "-k", "2", "-n", "2", "--random-styles", "1", "--seed", "3", "--random-styles-write", "."},
+   kUsage, "evaluate: error: ", "the output ./random_style_0.grm is the grammar file itself (random_style_0.grm)", {},
+   [](const fs::path& d) { fs::copy_file(kCorpus / "grammar/ok.grm", d / "random_style_0.grm"); }},
 
   {"check_unknown_option", "check", {"ok.grm", "two_parts.obj", "--breif"}, kUsage,
    "check: error: ", "unknown option '--breif'\n  hint: did you mean '--brief'?", kGrammarAndObj},

@@ -1,7 +1,10 @@
 // Runs that end early leave no temporary files: every signal that ends a
 // run removes them, one that cannot be caught (SIGKILL) leaves them to the
-// next run in that folder, and a signal the run was started ignoring
-// stays ignored. Outputs take the umask, or the mode of the file they replace.
+// next run that writes the same outputs in that folder (never those of a
+// run still holding its lock file, wherever it runs), and a signal the run
+// was started ignoring stays ignored. Outputs take the umask, or the mode
+// of the file they replace.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -30,9 +33,10 @@ using test::TempFolder;
 const std::string kCity = VERN_SOURCE_DIR "/data/grammars/skyscraper_city.grm";
 const std::string kGarage = VERN_SOURCE_DIR "/data/grammars/garage.grm";
 
-// The temporary files in a folder (atomic_file.hpp names them ".NAME.vern-PID-XXXXXX").
+// The temporary files in a folder: ".NAME.vern-PID-RUN-XXXXXX" (atomic_file.hpp),
+// and the runs' lock files ".vern-PID-RUN-XXXXXX.lock" (folder_claim.hpp).
 std::vector<std::string> temporaries(const fs::path& folder) {
-  static const std::regex temporary(R"(\..*\.vern-[0-9]+-.*)");
+  static const std::regex temporary(R"(\.(.*\.)?vern-[0-9]+-.*)");
   std::vector<std::string> found;
   for (const auto& e : fs::directory_iterator(folder)) {
     const std::string name = e.path().filename().string();
@@ -94,24 +98,64 @@ TEST_P(IgnoredSignal, StaysIgnored) {
 INSTANTIATE_TEST_SUITE_P(Interrupt, IgnoredSignal, ::testing::Values(SIGHUP, SIGINT),
                          [](const ::testing::TestParamInfo<int>& p) { return std::string(sigabbrev_np(p.param)); });
 
-// SIGKILL cannot be caught: the next run in the folder removes what the
-// killed one left, and nothing of a process still running.
+// An open file description lock on `path`, as a running run holds its
+// lock file: held until destroyed, wherever the run is (here, the test).
+class HeldLock {
+ public:
+  explicit HeldLock(const fs::path& path) : fd_(open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600)) {
+    struct flock lock {};
+    lock.l_type = F_WRLCK;
+    lock.l_whence = SEEK_SET;
+    EXPECT_EQ(fcntl(fd_, F_OFD_SETLK, &lock), 0) << path;
+  }
+  ~HeldLock() { close(fd_); }
+  HeldLock(const HeldLock&) = delete;
+  HeldLock& operator=(const HeldLock&) = delete;
+
+ private:
+  int fd_;
+};
+
+// SIGKILL cannot be caught: the next run that writes the same outputs in
+// the folder removes what the killed one left. It keeps the files of a
+// run that still holds its lock file, though its process id is of no
+// process here (a run in another PID namespace, a container sharing the
+// folder), the files of names it does not write, and files it cannot tell
+// are over (the older names, without a lock file).
 TEST(Interrupt, TheNextRunSweepsAKilledRunsTemporaries) {
   TempFolder dir;
   std::optional<ChildProcess> child;
   start_writing_cities(child, dir.path());
+  const std::string dead = std::to_string(child->pid());
   ASSERT_EQ(kill(child->pid(), SIGKILL), 0);
   EXPECT_EQ(child->wait().signal, SIGKILL);
   ASSERT_FALSE(temporaries(dir / "out").empty());
-  // A running process's temporary (this test's), and a look-alike without a process id.
-  const std::string alive = ".variant_000.obj.vern-" + std::to_string(getpid()) + "-a1b2c3";
-  test::write_text(dir / "out" / alive, "still being written\n");
+  // Another run's, under the process id of no process here, that holds its lock file.
+  const std::string elsewhere = ".vern-" + dead + "-Elsewh-a1b2c3.lock";
+  std::optional<HeldLock> held(std::in_place, dir / "out" / elsewhere);
+  const std::vector<std::string> live = {elsewhere, ".variant_000.obj.vern-" + dead + "-Elsewh-d4e5f6",
+                                         ".variant_001.obj.vern-" + dead + "-Elsewh-g7h8i9.old"};
+  for (const std::string& name : {live[1], live[2]}) test::write_text(dir / "out" / name, "still being written\n");
+  // A dead run's file of a name the next run does not write, one of the
+  // older names, and a look-alike without a process id.
+  const std::vector<std::string> kept = {".notes.txt.vern-" + dead + "-Killed-a1b2c3",
+                                         ".variant_002.obj.vern-" + dead + "-a1b2c3"};
+  for (const std::string& name : kept) test::write_text(dir / "out" / name, "not the next run's\n");
   test::write_text(dir / "out/.notes.vern-draft", "a user's file\n");
 
-  const test::CommandResult r = test::run_program("generate", {kGarage, "-q", "-o", "out/"}, dir.path());
+  const test::CommandResult r = test::run_program("generate", {kGarage, "-n", "200", "-q", "-o", "out/"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(temporaries(dir / "out"), (std::vector<std::string>{alive}));
+  std::vector<std::string> expected = live;
+  expected.insert(expected.end(), kept.begin(), kept.end());
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(temporaries(dir / "out"), expected);
   EXPECT_TRUE(fs::exists(dir / "out/.notes.vern-draft"));
+
+  // Its lock given up, the other run is over: its files go, its lock file with them.
+  held.reset();
+  const test::CommandResult again = test::run_program("generate", {kGarage, "-n", "2", "-q", "-o", "out/"}, dir.path());
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(temporaries(dir / "out"), kept);
 }
 
 mode_t mode_of(const fs::path& path) {

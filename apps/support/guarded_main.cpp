@@ -5,6 +5,7 @@
 #include <new>
 
 #include "graph/error.hpp"
+#include "graph/files_read.hpp"
 #include "graph/freed_memory.hpp"
 #include "graph/huge_pages.hpp"
 #include "graph/interrupt_cleanup.hpp"
@@ -17,6 +18,8 @@ int guarded_main(const char* program, int (*run)(int, char**), int argc, char** 
   install_interrupt_cleanup();
   keep_freed_memory();
   use_huge_pages();
+  // Every file read is an input no output may replace (files_read.hpp).
+  const FilesReadRecorded recording;
   try {
     return run_on_command_stack([&] {
       huge_pages_for_this_thread();

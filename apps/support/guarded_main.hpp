@@ -1,6 +1,7 @@
 // The shared outer shell of every command: interrupt clean-up, freed memory
 // kept for reuse (freed_memory.hpp), a stack that holds the limits
-// (command_stack.hpp), and every failure printed once with its exit code
+// (command_stack.hpp), the files read kept from being written over
+// (files_read.hpp), and every failure printed once with its exit code
 // (README, "Errors and exit codes").
 #pragma once
 

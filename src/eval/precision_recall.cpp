@@ -71,7 +71,9 @@ class ScratchFolder {
 // primitives' meshes (so turned parts show their turn) and read back.
 Example through_obj(const Derivation& d, std::uint32_t index, const fs::path& folder) {
   const fs::path file = folder / (variant_name(index) + ".obj");
-  write_obj(single(d, index), PrimitiveLibrary::builtin(), file);
+  OutputFiles scratch(OutputFiles::Durability::Scratch);  // removed with the folder
+  write_obj(single(d, index), PrimitiveLibrary::builtin(), file, scratch);
+  scratch.commit();
   return load_example(file);
 }
 

@@ -1,16 +1,15 @@
 #include "graph/atomic_file.hpp"
 
 #include <fcntl.h>
-#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 
 #include "graph/error.hpp"
+#include "graph/files_read.hpp"
 #include "graph/interrupt_cleanup.hpp"
 #include "graph/write_all.hpp"
 
@@ -36,26 +35,17 @@ mode_t output_mode(const fs::path& destination) {
   return 0666 & ~g_umask;
 }
 
+// A run of a few files (infer's three, one scene and its materials) puts
+// each on disk alone as it is closed (fsync): it waits for its own bytes
+// only. Past these, the commit puts the whole file system on disk at once
+// (syncfs), as costly as one fsync where each costs a journal commit:
+// generate's 2000 variants (4000 files) took a median 4.26 s so, 19.8 s
+// with an fsync each, 3.91 s before anything was synced.
+constexpr std::size_t kSyncedOneByOne = 16;
+
 [[noreturn]] void io_error(const fs::path& path, const std::string& what, int err) {
   fail(ErrorKind::Io, path.string(), {}, what + ": " + std::strerror(err), "check that the folder exists and is writable");
 }
-
-// Signals that end a run wait while the renames run: a run is then either
-// all renamed or (the handler removing the temporaries) not at all.
-class SignalsHeld {
- public:
-  SignalsHeld() {
-    sigset_t all;
-    sigfillset(&all);
-    pthread_sigmask(SIG_BLOCK, &all, &saved_);
-  }
-  ~SignalsHeld() { pthread_sigmask(SIG_SETMASK, &saved_, nullptr); }
-  SignalsHeld(const SignalsHeld&) = delete;
-  SignalsHeld& operator=(const SignalsHeld&) = delete;
-
- private:
-  sigset_t saved_;
-};
 
 // A destination's earlier file, kept under another name while the run's
 // files are renamed, so that a failed rename can put it back.
@@ -101,16 +91,30 @@ void OutputFiles::stage(const fs::path& path, std::span<const std::string_view> 
   file.close();
 }
 
+FolderClaim& OutputFiles::claim(const fs::path& folder, const fs::path& output) {
+  // A folder of a million variants asks a million times: the last one first.
+  for (auto it = claims_.rbegin(); it != claims_.rend(); ++it)
+    if ((*it)->folder() == folder) return **it;
+  claims_.push_back(std::make_unique<FolderClaim>(folder, output));
+  return *claims_.back();
+}
+
 OutputFile OutputFiles::open(const fs::path& path) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) fail(ErrorKind::Io, path.string(), {}, "is a folder, not a file", "name a file to write");
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) fail(ErrorKind::Io, path.string(), {}, "is a folder, not a file", "name a file to write");
+    refuse_file_read(path, st);
+  }
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  watch_folder(folder);
+  claim(folder, path).sweep(path.filename().string());
   std::string temp = temporary_template(path);
-  const int fd = ::mkstemp(temp.data());
+  const int fd = [&] {
+    const SignalsWait made_whole;
+    return ::mkstemp(temp.data());
+  }();
   if (fd < 0) io_error(path, "cannot create a temporary file in " + folder.string(), errno);
   staged_.push_back({path, temp});  // removed by the destructor unless committed
-  return OutputFile(path, fd);
+  return OutputFile(path, fd, durability_ == Durability::Synced && staged_.size() <= kSyncedOneByOne);
 }
 
 OutputFile::~OutputFile() {
@@ -124,13 +128,22 @@ void OutputFile::write(std::string_view content) {
 void OutputFile::close() {
   if (fd_ < 0) return;
   ::fchmod(fd_, output_mode(destination_));
-  const int fd = fd_;
-  fd_ = -1;
+  const int fd = std::exchange(fd_, -1);
+  // On disk before it is renamed over anything: after a power cut the
+  // destination holds this file whole, or the earlier one.
+  const int unsynced = !sync_ || ::fsync(fd) == 0 ? 0 : errno;
   if (::close(fd) != 0) io_error(destination_, "cannot write", errno);
+  if (unsynced) io_error(destination_, "cannot write", unsynced);
 }
 
 void OutputFiles::commit() {
-  const SignalsHeld held;
+  // Checked again: a file read since it was staged is an input too.
+  for (const Staged& s : staged_) refuse_file_read(s.destination);
+  const bool synced = durability_ == Durability::Synced;
+  if (synced && staged_.size() > kSyncedOneByOne)
+    for (const std::unique_ptr<FolderClaim>& folder : claims_)
+      if (const int err = folder->sync_file_system()) io_error(folder->folder(), "cannot write", err);
+  const SignalsWait renamed_whole;
   std::vector<Replaced> replaced;
   replaced.reserve(staged_.size());
   for (const Staged& s : staged_) {
@@ -148,9 +161,17 @@ void OutputFiles::commit() {
       io_error(s.destination, "cannot replace", err);
     }
   }
+  // The renames on disk: once per folder, not once per file.
+  for (const std::unique_ptr<FolderClaim>& folder : claims_) {
+    if (const int err = synced ? folder->sync_folder() : 0) {
+      put_back(replaced);
+      io_error(folder->folder(), "cannot write the folder", err);
+    }
+  }
   for (const Replaced& r : replaced)
     if (!r.backup.empty()) ::unlink(r.backup.c_str());
   staged_.clear();
+  claims_.clear();
 }
 
 void write_file_atomically(const fs::path& path, std::string_view content) {

@@ -8,6 +8,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "graph/files_read.hpp"
+
 namespace vern {
 
 namespace {
@@ -36,7 +38,11 @@ struct Descriptor {
 
 void require_regular_file(const std::filesystem::path& path) {
   struct stat st {};
-  if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return;
+  if (::stat(path.c_str(), &st) != 0) return;
+  if (S_ISREG(st.st_mode)) {
+    note_file_read(path, st);
+    return;
+  }
   fail(ErrorKind::Io, path.string(), {}, not_regular(st.st_mode),
        "name a regular file: pipes and devices are not read (save what they give to a file first)");
 }
@@ -52,6 +58,7 @@ std::optional<ReadRefusal> read_regular_file(const std::filesystem::path& path, 
   if (file.fd < 0) return ReadRefusal{ErrorKind::Io, std::string("cannot be opened: ") + std::strerror(errno)};
   if (::fstat(file.fd, &st) != 0) return ReadRefusal{ErrorKind::Io, std::string("cannot be read: ") + std::strerror(errno)};
   if (!S_ISREG(st.st_mode)) return ReadRefusal{ErrorKind::Io, not_regular(st.st_mode)};
+  note_file_read(path, st);
   const auto size = static_cast<std::uint64_t>(st.st_size);
   if (size > max_bytes) return ReadRefusal{ErrorKind::Limit, "is larger than " + mebibytes(max_bytes)};
   out.resize(static_cast<std::size_t>(size));

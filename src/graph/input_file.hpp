@@ -20,7 +20,8 @@ namespace vern {
 
 // Throws vern::Error (Io) naming `path` when it exists and is not a
 // regular file once links are followed ("is a FIFO (named pipe), not a
-// regular file"). A missing path passes: opening it says so.
+// regular file"). A missing path passes: opening it says so. A regular
+// file is noted as read (files_read.hpp): the caller reads it next.
 void require_regular_file(const std::filesystem::path& path);
 
 // Why a file was not read: its error kind and what to say after the name.
@@ -33,7 +34,8 @@ struct ReadRefusal {
 // when it is missing, unreadable or not a regular file (checked on the
 // opened file too, which is opened without waiting on a FIFO); Limit when
 // it holds more than max_bytes, which is then not read. The problem never
-// says how large the file is.
+// says how large the file is. The file opened is noted as read
+// (files_read.hpp).
 std::optional<ReadRefusal> read_regular_file(const std::filesystem::path& path, std::uint64_t max_bytes,
                                              std::vector<unsigned char>& out);
 

@@ -2,14 +2,17 @@
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <pthread.h>
+#include <sys/random.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
-#include <cerrno>
+#include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <cstring>
 #include <mutex>
-#include <string_view>
 
 namespace vern {
 
@@ -18,8 +21,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // Only async-signal-safe calls run in the handler: open, getdents64,
-// unlinkat, close, signal, raise; the folders and the name to look for are
-// prepared before any signal can need them.
+// unlinkat, close, nanosleep, signal, raise; the folders and the name to
+// look for are prepared before any signal can need them.
 constexpr std::size_t kMaxFolders = 64;
 constexpr std::size_t kMaxPath = 4096;
 
@@ -31,20 +34,35 @@ WatchedFolder g_folders[kMaxFolders];
 std::atomic<std::size_t> g_folder_count{0};
 std::mutex g_watch_mutex;  // serialises watch_folder, never taken in the handler
 
-// ".vern-<pid>-": what this process's temporary names hold.
-char g_own_tag[32];
+// ".vern-<pid>-<run>-": what this process's file names hold, for the handler.
+char g_own_tag[48];
+
+// Six letters and digits, as mkstemp draws them (some 36 bits), so that
+// two processes with one process id (in two PID namespaces) differ.
+std::string run_letters() {
+  static constexpr char kLetters[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+  unsigned char bytes[6] = {};
+  if (::getrandom(bytes, sizeof bytes, 0) != static_cast<ssize_t>(sizeof bytes)) {
+    // No entropy to be had: the clock's nanoseconds differ as well.
+    std::uint64_t t = static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
+    for (unsigned char& b : bytes) b = static_cast<unsigned char>(t), t >>= 8;
+  }
+  std::string letters;
+  for (const unsigned char b : bytes) letters += kLetters[b % (sizeof kLetters - 1)];
+  return letters;
+}
 
 const char* own_tag() {
   static std::once_flag once;
   std::call_once(once, [] {
-    const std::string tag = ".vern-" + std::to_string(::getpid()) + "-";
+    const std::string tag = ".vern-" + std::to_string(::getpid()) + "-" + run_letters() + "-";
     std::memcpy(g_own_tag, tag.c_str(), tag.size() + 1);
   });
   return g_own_tag;
 }
 
-// Whether `name` is one of this process's temporary files: a hidden name
-// holding the tag. (No library call: strstr is not on the list of
+// Whether `name` is one of this process's files: a hidden name holding
+// the tag. (No library call: strstr is not on the list of
 // async-signal-safe functions.)
 bool is_own_temporary(const char* name, const char* tag) {
   if (name[0] != '.') return false;
@@ -73,7 +91,17 @@ void remove_own_temporaries(const char* folder, const char* tag) {
   ::close(dir);
 }
 
+// A signal is ending the run; changes to its files under way (SignalsWait).
+std::atomic<bool> g_ending{false};
+std::atomic<int> g_changing{0};
+
 void on_signal(int sig) {
+  // Changes begun from now on wait for the end; those under way end first.
+  g_ending.store(true);
+  while (g_changing.load() > 0) {
+    const timespec a_millisecond{0, 1'000'000};
+    ::nanosleep(&a_millisecond, nullptr);
+  }
   const std::size_t count = g_folder_count.load();
   for (std::size_t i = 0; i < count && i < kMaxFolders; ++i)
     if (g_folders[i].ready.load()) remove_own_temporaries(g_folders[i].path, g_own_tag);
@@ -86,39 +114,20 @@ void on_signal(int sig) {
 constexpr int kEndingSignals[] = {SIGHUP,    SIGINT,  SIGQUIT,   SIGTERM, SIGPIPE, SIGALRM, SIGUSR1,
                                   SIGUSR2,   SIGXCPU, SIGXFSZ,   SIGVTALRM, SIGPROF, SIGABRT};
 
-// The process id in a temporary's name ".NAME.vern-<pid>-XXXXXX" (and the
-// backup ".NAME.vern-<pid>-XXXXXX.old" a commit keeps), or 0.
-pid_t owner_of(const std::string& name) {
-  if (!name.starts_with('.')) return 0;
-  const std::size_t tag = name.rfind(".vern-");
-  if (tag == std::string::npos) return 0;
-  std::size_t at = tag + 6;
-  long long pid = 0;
-  const std::size_t digits = at;
-  while (at < name.size() && name[at] >= '0' && name[at] <= '9' && at - digits < 10) pid = pid * 10 + (name[at++] - '0');
-  if (at == digits || at >= name.size() || name[at] != '-') return 0;
-  const std::string_view rest = std::string_view(name).substr(at + 1);
-  if (rest.size() != 6 && !(rest.size() == 10 && rest.ends_with(".old"))) return 0;
-  return static_cast<pid_t>(pid);
-}
-
-// Removes the temporaries in `folder` whose process no longer runs.
-void sweep_dead(const std::string& folder) {
-  std::error_code ec;
-  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    const pid_t pid = owner_of(name);
-    if (pid <= 0 || pid == ::getpid()) continue;
-    // ESRCH: no such process. EPERM: running, under another user.
-    if (::kill(pid, 0) != 0 && errno == ESRCH) ::unlink(it->path().c_str());
-  }
-}
-
 }  // namespace
+
+const std::string& run_tag() {
+  static const std::string tag = own_tag();
+  return tag;
+}
 
 std::string temporary_template(const fs::path& destination) {
   const fs::path folder = destination.has_parent_path() ? destination.parent_path() : fs::path(".");
   return (folder / ("." + destination.filename().string() + own_tag() + "XXXXXX")).string();
+}
+
+std::string lock_file_template(const fs::path& folder) {
+  return ((folder.empty() ? fs::path(".") : folder) / (std::string(own_tag()) + "XXXXXX.lock")).string();
 }
 
 void watch_folder(const fs::path& folder) {
@@ -139,10 +148,27 @@ void watch_folder(const fs::path& folder) {
   for (std::size_t i = 0; i < count; ++i)
     if (path == g_folders[i].path) return;
   if (count == kMaxFolders) return;
-  sweep_dead(path);
   std::memcpy(g_folders[count].path, path.c_str(), path.size() + 1);
   g_folders[count].ready.store(true);
   g_folder_count.store(count + 1);
+}
+
+SignalsWait::SignalsWait() {
+  sigset_t all;
+  sigfillset(&all);
+  pthread_sigmask(SIG_BLOCK, &all, &saved_);
+  g_changing.fetch_add(1);
+  if (g_ending.load()) {
+    // Too late: the handler, on another thread, has removed (or is
+    // removing) this run's files and ends the process.
+    g_changing.fetch_sub(1);
+    for (;;) ::pause();
+  }
+}
+
+SignalsWait::~SignalsWait() {
+  g_changing.fetch_sub(1);
+  pthread_sigmask(SIG_SETMASK, &saved_, nullptr);
 }
 
 void install_interrupt_cleanup() {
