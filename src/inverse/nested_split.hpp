@@ -1,0 +1,42 @@
+// A split that is two splits (issue 23): the examples' cuts along one axis
+// show parts side by side, and nothing in the geometry tells which of them
+// were cut first. A style that writes
+//     site  --> split(x){ ~1.2 : lodge | ~1.1 : lodge | ~2.9 : front }
+//     front --> split(x){ 1 : column | ~1 : mass | 1 : column }
+// leaves five parts in a row whose lengths no single split gives: the
+// lodges keep their ratio to the front, column and mass together, not to
+// the mass. Written as one split, the mass becomes a share drawn anew in
+// every building, and the buildings derived no longer keep the
+// proportions the examples all keep.
+//
+// From the lengths each example's split gave each part (one row per
+// example), find_nested_run looks for a run of neighbouring parts that,
+// taken as one part, leaves an outer split whose every size is fixed (a
+// length in metres, or a share in a ratio every row keeps), and whose own
+// parts are such a split too. It is tried only where the row as one split
+// needs sizes that vary (plan_sizes leaves a part unfixed).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace vern {
+
+// The parts [first, last] (first < last, not all parts) that become one.
+struct NestedRun {
+  std::size_t first = 0, last = 0;
+};
+
+// The shortest such run, the leftmost of equal length; none when the row
+// is one split already, or too few rows (three) or too many parts (32) to
+// tell.
+std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>& lengths, double tolerance);
+
+// The rows with parts [run.first, run.last] summed into one.
+std::vector<std::vector<double>> outer_lengths(const std::vector<std::vector<double>>& lengths, NestedRun run);
+
+// The rows of parts [run.first, run.last] alone.
+std::vector<std::vector<double>> inner_lengths(const std::vector<std::vector<double>>& lengths, NestedRun run);
+
+}  // namespace vern

@@ -1,0 +1,67 @@
+// Rows of parts that are two splits, one inside the other.
+#include "inverse/nested_split.hpp"
+
+#include <gtest/gtest.h>
+
+namespace vern {
+namespace {
+
+// site --> split(x){ ~1.2 : lodge | ~1.1 : lodge | ~2.9 : front }
+// front --> split(x){ 1 : column | ~1 : mass | 1 : column }
+// as the five lengths a site of width w cuts.
+std::vector<double> lodges_and_front(double w) {
+  const double k = w / 5.2;
+  return {1.2 * k, 1.1 * k, 1, 2.9 * k - 2, 1};
+}
+
+TEST(NestedSplit, LodgesBesideAFrontOfColumnsAndAMass) {
+  const std::vector<std::vector<double>> lengths = {lodges_and_front(21.5), lodges_and_front(25),
+                                                    lodges_and_front(29.5)};
+  const auto run = find_nested_run(lengths, 1e-6);
+  ASSERT_TRUE(run.has_value());
+  EXPECT_EQ(run->first, 2u);
+  EXPECT_EQ(run->last, 4u);
+  const auto outer = outer_lengths(lengths, *run);
+  ASSERT_EQ(outer[0].size(), 3u);
+  EXPECT_NEAR(outer[0][2], 2.9 * 21.5 / 5.2, 1e-12);
+  const auto inner = inner_lengths(lengths, *run);
+  ASSERT_EQ(inner[1].size(), 3u);
+  EXPECT_EQ(inner[1][0], 1);
+  EXPECT_NEAR(inner[1][1], 2.9 * 25 / 5.2 - 2, 1e-12);
+}
+
+TEST(NestedSplit, ARowThatIsOneSplitIsLeftAsItIs) {
+  // 0.6 m walls and bays in 2 : 1: one split of fixed sizes.
+  const std::vector<std::vector<double>> lengths = {
+      {0.6, 5.867, 2.933, 0.6}, {0.6, 8.533, 4.267, 0.6}, {0.6, 12.533, 6.267, 0.6}};
+  EXPECT_FALSE(find_nested_run(lengths, 1e-3).has_value());
+}
+
+TEST(NestedSplit, SharesThatVaryFreelyAreNoNesting) {
+  // No run of these makes fixed sizes: the shares were drawn independently.
+  const std::vector<std::vector<double>> lengths = {{1, 3, 6, 2}, {1, 5, 5, 4}, {1, 2, 12, 1}, {1, 7, 3, 3}};
+  EXPECT_FALSE(find_nested_run(lengths, 1e-6).has_value());
+}
+
+TEST(NestedSplit, TwoRowsAreTooFewToTell) {
+  const std::vector<std::vector<double>> lengths = {lodges_and_front(21.5), lodges_and_front(29.5)};
+  EXPECT_FALSE(find_nested_run(lengths, 1e-6).has_value());
+}
+
+TEST(NestedSplit, TheShortestRunWins) {
+  // A wing of a fixed 1 : 2 inside a margin of 0.5 m: parts 1..2 share
+  // the rest of the plot in a ratio to part 0 that the whole row's plan
+  // cannot keep because of the margins inside the run.
+  std::vector<std::vector<double>> lengths;
+  for (const double w : {10.0, 13.0, 17.0, 22.0}) {
+    const double k = w / 3;  // ~1 : a | ~2 : split{ 0.5 : m | ~1 : b | 0.5 : m }
+    lengths.push_back({k, 0.5, 2 * k - 1, 0.5});
+  }
+  const auto run = find_nested_run(lengths, 1e-6);
+  ASSERT_TRUE(run.has_value());
+  EXPECT_EQ(run->first, 1u);
+  EXPECT_EQ(run->last, 3u);
+}
+
+}  // namespace
+}  // namespace vern
