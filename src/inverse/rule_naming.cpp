@@ -160,8 +160,12 @@ class RuleMaker {
   // deep an example's cuts go, and no body is too deep to read.
   NodeId copy(NodeId id, bool as_body, int depth = 0) {
     if (const auto* call = std::get_if<Call>(&from_.op(id))) {
-      if (!call->args.empty()) throw Error(ErrorKind::Internal, "rules_for: the graph calls a rule with arguments");
-      return out_.intern({Call{rule_for(from_.rules[call->rule].body, "", "Nest"), {}}, {}});
+      // A recursion that counts its levels (self_nesting.hpp) keeps its
+      // parameters: its body reads them.
+      const Rule& called = from_.rules[call->rule];
+      const RuleId made = rule_for(called.body, "", "Nest");
+      out_.rules[made].params = called.params;
+      return out_.intern({Call{made, call->args}, {}});
     }
     if (!as_body && (needs_rule(id) || (depth >= kMaxBodyDepth && !is_leaf(id))))
       return out_.intern({Call{rule_for(id), {}}, {}});

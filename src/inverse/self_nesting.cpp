@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "graph/structural.hpp"
+#include "inverse/levels_left.hpp"
 #include "inverse/merge.hpp"
 #include "inverse/substitute.hpp"
 
@@ -53,10 +54,13 @@ class Nester {
     std::vector<NodeId> replace(g_.node_count(), kNoReplacement);
     for (std::size_t key = 0; key < keys_.size(); ++key) {
       if (occurrences_[key].empty()) continue;
-      const std::optional<NodeId> call = recursive_rule(key);
-      if (!call) continue;
+      const std::optional<Nest> nest = recursive_rule(key);
+      if (!nest) continue;
       ++out.rules;
-      for (const auto& [top, k] : occurrences_[key]) replace[top] = *call;
+      std::vector<Expr> args;
+      if (nest->counted) args.push_back(count_drawn(key));
+      const NodeId call = g_.intern({Call{nest->rule, std::move(args)}, {}});
+      for (const auto& [top, k] : occurrences_[key]) replace[top] = call;
     }
     out.root = out.rules ? substitute(g_, root, replace, &out.rebuilt) : root;
     return out;
@@ -221,18 +225,49 @@ class Nester {
     place(key.base, nests, placed);
   }
 
-  // The rule nest --> B | F[nest] for one key, as a call to it; nullopt
+  // How many levels a counted recursion is called with, wherever it is
+  // called: the counts its chains showed, as randint(lo, hi) where they
+  // run without a gap (the counts between are as likely as those seen),
+  // else choice(...) of them, or the one count.
+  Expr count_drawn(std::size_t key) const {
+    std::vector<double> counts;
+    for (const auto& [top, k] : occurrences_[key]) counts.push_back(static_cast<double>(k));
+    std::sort(counts.begin(), counts.end());
+    counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
+    if (counts.size() == 1) return Expr::number(counts[0]);
+    if (counts.back() - counts.front() + 1 == static_cast<double>(counts.size()))
+      return Expr::call(Function::RandInt, {Expr::number(counts.front()), Expr::number(counts.back())});
+    std::vector<Expr> seen;
+    for (double c : counts) seen.push_back(Expr::number(c));
+    return Expr::call(Function::Choice, std::move(seen));
+  }
+
+  // A recursive rule made for a key: called nest(k) for a chain of k
+  // contexts where it counts them, else nest.
+  struct Nest {
+    RuleId rule = 0;
+    bool counted = false;
+  };
+
+  // The rule for one key: nest --> B | F[nest], or its counted form; nullopt
   // when some level's sizes are not ranges to widen.
-  std::optional<NodeId> recursive_rule(std::size_t key_index) {
+  std::optional<Nest> recursive_rule(std::size_t key_index) {
     const Key& key = keys_[key_index];
     const std::size_t p = key.context.size();
     // Each level of F: every node at that level in every chain.
     std::vector<std::vector<NodeId>> members(p);
     double went_on = 0, stopped = 0;
+    // Each level's count of contexts left, its own (below it, the chain
+    // is its subtree): one node seen at two counts has none.
+    std::unordered_map<NodeId, int> left;
+    bool counted = true;
     for (const auto& [top, k] : occurrences_[key_index]) {
       NodeId level = top;
       for (std::size_t j = 0; j < k * p; ++j) {
         members[j % p].push_back(level);
+        const int n = static_cast<int>(k - j / p);
+        const auto [at, added] = left.emplace(level, n);
+        counted = counted && (added || at->second == n);
         level = std::get<Split>(g_.op(level)).parts[hole_of(key.context[j % p])].child;
       }
       went_on += static_cast<double>(k);
@@ -276,6 +311,9 @@ class Nester {
       }
       levels.push_back(std::move(s));
     }
+    if (counted) {
+      if (const auto rule = counted_rule(key_index, members, left, levels, kept)) return Nest{*rule, true};
+    }
     // The rule first, so that F's innermost level can call it.
     const auto rule = static_cast<RuleId>(g_.rules.size());
     g_.rules.push_back({"nest", {}, 0, {}});
@@ -291,7 +329,56 @@ class Nester {
     nest.options.push_back({Expr{}, Expr::number(stopped), key.base});
     nest.options.push_back({Expr{}, Expr::number(went_on), inner});
     g_.rules[rule].body = g_.intern({std::move(nest), {}});
-    return call;
+    return Nest{rule, false};
+  }
+
+  // nest(n) --> B where n <= 0, F[nest(n - 1)] where n > 0, with F's
+  // sizes in n where they follow the count of levels left
+  // (levels_left.hpp), and each chain a call nest(k): none when no size
+  // follows the count.
+  std::optional<RuleId> counted_rule(std::size_t key_index, const std::vector<std::vector<NodeId>>& members,
+                                     const std::unordered_map<NodeId, int>& left, const std::vector<Split>& ranged,
+                                     const std::vector<std::vector<std::vector<Observation>>>& kept) {
+    const Key& key = keys_[key_index];
+    const std::size_t p = key.context.size();
+    std::vector<std::vector<LevelPart>> levels(p);
+    for (std::size_t i = 0; i < p; ++i) {
+      const std::size_t parts = std::get<Split>(g_.op(members[i][0])).parts.size();
+      levels[i].resize(parts);
+      for (NodeId m : members[i]) {
+        const Split& s = std::get<Split>(g_.op(m));
+        for (std::size_t q = 0; q < parts; ++q) {
+          LevelPart& part = levels[i][q];
+          part.relative = s.parts[q].size.relative;
+          const auto r = literal_range(s.parts[q].size.value);
+          if (r && r->hi - r->lo <= tol_) part.seen.emplace_back(left.at(m), (r->lo + r->hi) / 2);
+          else part.ranged = true;
+        }
+      }
+    }
+    const auto sizes = sizes_by_levels_left(levels, tol_);
+    if (!sizes) return std::nullopt;
+    const auto rule = static_cast<RuleId>(g_.rules.size());
+    g_.rules.push_back({"nest", {"n"}, 0, {}});
+    const Expr n = Expr::param(0);
+    NodeId inner = g_.intern({Call{rule, {Expr::binary(BinaryOp::Sub, n, Expr::number(1))}}, {}});
+    for (std::size_t i = p; i-- > 0;) {
+      Split s = ranged[i];
+      std::vector<std::vector<Observation>> values = kept[i];
+      for (std::size_t q = 0; q < s.parts.size(); ++q) {
+        if (!(*sizes)[i][q]) continue;
+        s.parts[q].size = *(*sizes)[i][q];
+        values[q].clear();  // a size in n, not a range of values
+      }
+      s.parts[hole_of(key.context[i])].child = inner;
+      inner = g_.intern({std::move(s), {}});
+      book_[inner] = std::move(values);
+    }
+    Choose nest;
+    nest.options.push_back({Expr::binary(BinaryOp::Le, n, Expr::number(0)), Expr::number(1), key.base});
+    nest.options.push_back({Expr::binary(BinaryOp::Gt, n, Expr::number(0)), Expr::number(1), inner});
+    g_.rules[rule].body = g_.intern({std::move(nest), {}});
+    return rule;
   }
 
   static std::size_t hole_of(const Operation& shaped) {
