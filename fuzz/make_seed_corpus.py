@@ -7,8 +7,9 @@ Seeds are small on purpose (a fuzzer mutates every byte of them): the
 bundled grammars, the primitives and the smallest example of each style,
 glTF/GLB files that `generate` writes for a few tiny grammars, hand-written
 glTF files that use what `generate` never writes (strips, fans, matrices,
-8-bit indices, no scene), and example layouts in the byte format of
-fuzz/entries/layout.hpp. The output is the same every run.
+8-bit indices, no scene), example layouts in the byte format of
+fuzz/entries/layout.hpp, and folder trees in the text format of
+fuzz/entries/folder_tree.hpp. The output is the same every run.
 """
 import base64
 import json
@@ -156,12 +157,89 @@ def layout_seeds():
         (out / name).write_bytes(bytes(data))
 
 
+def indirect_seeds():
+    out = fresh("indirect_inputs")
+    # Text as fuzz/entries/folder_tree.hpp reads it: a header line, then
+    # "@@ main", "@@ file NAME", "@@ repeat NAME COUNT", "@@ link NAME
+    # TARGET" and "@@ dir NAME" sections. One triangle, 36 bytes of floats.
+    triangle = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 1)
+
+    def gltf(uri, images=()):
+        model = {
+            "asset": {"version": "2.0"},
+            "buffers": [{"byteLength": len(triangle), "uri": uri}],
+            "bufferViews": [{"buffer": 0, "byteLength": len(triangle)}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [0, 0, 0], "max": [1, 1, 1]}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+            "nodes": [{"name": "wall", "mesh": 0}],
+        }
+        if images:
+            model["images"] = [{"uri": u} for u in images]
+        return json.dumps(model, separators=(",", ":")).encode()
+
+    def glb(uri):
+        js = gltf(uri)
+        js += b" " * (-len(js) % 4)
+        return struct.pack("<4sII", b"glTF", 2, 12 + 8 + len(js)) + struct.pack("<I4s", len(js), b"JSON") + js
+
+    def tree(header, main, *sections):
+        text = header.encode() + b"\n@@ main\n" + main
+        for head, data in sections:
+            text += b"\n@@ " + head.encode() + b"\n" + data
+        return text
+
+    door = b"o door\nv 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\nf 1 2 3 4\n"
+    window = b"o window.001\nv 0 0 0\nv 1 0 0\nv 0 1 1\nf 1 2 3\n"
+    seeds = {
+        # A buffer beside the glTF, one in a subfolder with a percent-encoded name.
+        "gltf_beside.txt": tree("", gltf("wall.bin"), ("file wall.bin", triangle)),
+        "gltf_subfolder_percent.txt": tree("", gltf("parts/wall%20one.bin"), ("file parts/wall%20one.bin", triangle)),
+        # A buffer above the glTF's folder: refused, then allowed.
+        "gltf_parent_step.txt": tree("", gltf("../wall.bin"), ("file ../wall.bin", triangle)),
+        "gltf_parent_step_allowed.txt": tree("outside", gltf("../wall.bin"), ("file ../wall.bin", triangle)),
+        "gltf_encoded_parent_step.txt": tree("", gltf("%2e%2e/wall.bin"), ("file ../wall.bin", triangle)),
+        # Links that lead out: a file's, a folder's.
+        "gltf_link_out.txt": tree("", gltf("wall.bin"), ("file ../outside/wall.bin", triangle),
+                                  ("link wall.bin ../outside/wall.bin", b"")),
+        "gltf_folder_link_out.txt": tree("", gltf("parts/wall.bin"), ("file ../outside/wall.bin", triangle),
+                                         ("link parts ../outside", b"")),
+        # Absolute paths, allowed.
+        "gltf_absolute_allowed.txt": tree("outside", gltf("$ROOT/outside/wall.bin"),
+                                          ("file ../outside/wall.bin", triangle)),
+        # Images: the glTF itself, a missing one; the buffer a data: URI.
+        "gltf_images.txt": tree("", gltf("data:application/octet-stream;base64," + base64.b64encode(triangle).decode(),
+                                         images=("main.gltf", "missing.png", "sub/../main.gltf"))),
+        # A buffer file longer than its byteLength.
+        "gltf_repeat_mismatch.txt": tree("", gltf("big.bin"), ("repeat big.bin 4096", triangle)),
+        # A GLB whose buffer is a file beside it.
+        "glb_external_buffer.txt": tree("", glb("wall.bin"), ("file wall.bin", triangle)),
+        # A grammar's @primitives: a file, a folder with a link out, a file
+        # outside (allowed), a folder link out, an absolute path, itself.
+        "grammar_file.txt": tree("grammar", b'@primitives "style.prims.obj"\np --> I(door)\n',
+                                 ("file style.prims.obj", door + window)),
+        "grammar_folder_links.txt": tree("grammar", b'@primitives "prims"\np --> I(window)\n',
+                                         ("dir prims", b""), ("file prims/window.obj", window),
+                                         ("file ../door.obj", door), ("link prims/door.obj ../../door.obj", b"")),
+        "grammar_outside_allowed.txt": tree("grammar outside", b'@primitives "../shared/prims.obj"\np --> I(door)\n',
+                                            ("file ../shared/prims.obj", door)),
+        "grammar_folder_link_out.txt": tree("grammar", b'@primitives "prims"\np --> I(door)\n',
+                                            ("file ../shared/door.obj", door), ("link prims ../shared", b"")),
+        "grammar_absolute.txt": tree("grammar", b'@primitives "$ROOT/shared/door.obj"\np --> I(door)\n',
+                                     ("file ../shared/door.obj", door)),
+        "grammar_self.txt": tree("grammar", b'@primitives "main.grm"\np --> I(door)\n'),
+    }
+    for name, data in seeds.items():
+        (out / name).write_bytes(data)
+
+
 def main():
     generate = sys.argv[1] if len(sys.argv) > 1 else str(ROOT / "build" / "bin" / "generate")
     grammar_seeds()
     obj_seeds()
     gltf_seeds(generate)
     layout_seeds()
+    indirect_seeds()
     for target in sorted(p.name for p in CORPUS.iterdir()):
         files = list((CORPUS / target).iterdir())
         print(f"{target}: {len(files)} seeds, {sum(f.stat().st_size for f in files)} bytes")

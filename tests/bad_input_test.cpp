@@ -860,6 +860,14 @@ const std::vector<BadInput> kCases = {
      fs::create_directory(d / "g/prims");
      fs::create_symlink("../../secret.obj", d / "g/prims/tower.obj");
    }},
+  // A NUL ends the path where the system reads it: "prims.obj\0.secret"
+  // would read prims.obj, even where outside files are allowed.
+  {"derive_primitives_name_holds_a_nul", "generate", {"nul.grm", "--allow-outside-files", "-o", "out.obj"}, kInput,
+   "nul.grm:1:13: error: ", "@primitives names 'prims.obj\\x00.secret', which holds a NUL byte", {},
+   [](const fs::path& d) {
+     write_text(d / "nul.grm", std::string("@primitives \"prims.obj") + '\0' + ".secret\"\np --> I(tower)\n");
+     fs::copy_file(kCorpus / "obj/two_parts.obj", d / "prims.obj");
+   }},
   {"derive_primitives_not_obj_is_not_quoted", "generate", {"primitives_not_obj.grm", "-o", "out.obj"}, kInput,
    "notes.txt:1:1: error: ", "this line is not an OBJ statement", {"grammar/primitives_not_obj.grm"},
    [](const fs::path& d) { write_text(d / "notes.txt", "hunter2 is the password\n"); }, nullptr, 0, {}, "hunter2"},

@@ -15,7 +15,10 @@
 #include <vector>
 
 #include "entries/entries.hpp"
+#include "entries/folder_opens.hpp"
+#include "entries/folder_tree.hpp"
 #include "entries/layout.hpp"
+#include "entries/scratch_file.hpp"
 #include "entries/verdict.hpp"
 #include "graph/error.hpp"
 
@@ -126,6 +129,57 @@ TEST(FuzzLayout, APeeledLayoutIsACutTreeDeeperThanTheReaderNests) {
   EXPECT_EQ(boxes[1].min, glm::dvec3(1, 0, 0));
   EXPECT_EQ(boxes[1].max, glm::dvec3(258, 1, 258));
   EXPECT_EQ(fuzz::infer_layout(bytes), "");
+}
+
+TEST(FuzzFolderTree, TextDescribesAMainFileAndWhatItNames) {
+  const std::string text =
+      "grammar outside\n@@ main\n@primitives \"p%20q\"\n@@ file sub/a%20b.obj\no a\n\n@@ repeat ../r.bin 5\nxy"
+      "\n@@ link l $ROOT/r.bin\n@@ dir d\n@@ bogus x\n@@ main\nignored";
+  const fuzz::FolderTree tree = fuzz::decode_folder_tree(bytes_of(text));
+  EXPECT_TRUE(tree.grammar);
+  EXPECT_TRUE(tree.outside_files);
+  EXPECT_EQ(tree.main, "@primitives \"p%20q\"");  // only names are decoded
+  ASSERT_EQ(tree.entries.size(), 4u);
+  EXPECT_EQ(tree.entries[0].name, "sub/a b.obj");
+  EXPECT_EQ(tree.entries[0].bytes, "o a\n");
+  EXPECT_EQ(tree.entries[1].bytes, "xyxyx");
+  EXPECT_EQ(tree.entries[2].kind, fuzz::FolderTree::Entry::Kind::Link);
+  EXPECT_EQ(tree.entries[2].bytes, "$ROOT/r.bin");
+  EXPECT_EQ(tree.entries[3].kind, fuzz::FolderTree::Entry::Kind::Folder);
+
+  // Placed: the main file in in/, "../" in the root, the link as written;
+  // nothing leads out of the root, nor through a link.
+  const fs::path root = fuzz::scratch_folder("folder-tree-test");
+  const std::string more = text + "\n@@ file ../../escape.bin\n@@ file l/through.bin\n@@ link m ../../x";
+  const fuzz::PlacedTree placed = fuzz::place_folder_tree(fuzz::decode_folder_tree(bytes_of(more)), root);
+  EXPECT_EQ(placed.main, root / "in" / "main.grm");
+  EXPECT_TRUE(fs::is_regular_file(root / "in" / "sub" / "a b.obj"));
+  EXPECT_EQ(fs::file_size(root / "r.bin"), 5u);
+  EXPECT_EQ(fs::read_symlink(root / "in" / "l"), root / "r.bin");
+  EXPECT_TRUE(fs::is_directory(root / "in" / "d"));
+  EXPECT_FALSE(fs::exists(root.parent_path() / "escape.bin"));
+  EXPECT_FALSE(fs::exists(root / "in" / "l" / "through.bin"));
+  EXPECT_FALSE(fs::exists(fs::symlink_status(root / "in" / "m")));
+  EXPECT_EQ(placed.outside_folders, std::vector<fs::path>{root});
+}
+
+TEST(FuzzFolderTree, OpensOutsideTheMainFilesFolderAreSeen) {
+  const fs::path root = fuzz::scratch_folder("folder-opens-test");
+  std::ofstream(root / "secret.bin") << "x";
+  fuzz::FolderOpens opens;
+  opens.watch({root});
+  EXPECT_TRUE(opens.opened().empty());
+  std::ifstream(root / "secret.bin").get();
+  EXPECT_EQ(opens.opened(), std::vector<std::string>{(root / "secret.bin").string()});
+  EXPECT_TRUE(opens.opened().empty());
+}
+
+TEST(FuzzFolderTree, AFileALinkLeadsOutToIsRefusedWithoutAFinding) {
+  // The URI names a link in the glTF's folder that leads to a file above it.
+  const std::string gltf =
+      "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4,\"uri\":\"b.bin\"}]}";
+  EXPECT_EQ(fuzz::indirect_inputs(bytes_of("\n@@ main\n" + gltf + "\n@@ file ../s.bin\nabcd\n@@ link b.bin ../s.bin")), "");
+  EXPECT_EQ(fuzz::indirect_inputs(bytes_of("outside\n@@ main\n" + gltf + "\n@@ file ../s.bin\nabcd\n@@ link b.bin ../s.bin")), "");
 }
 
 }  // namespace

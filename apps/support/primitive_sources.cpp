@@ -1,5 +1,7 @@
 #include "support/primitive_sources.hpp"
 
+#include <string>
+
 #include "graph/error.hpp"
 #include "graph/folder_confinement.hpp"
 #include "graph/label.hpp"
@@ -11,6 +13,13 @@ PrimitiveLibrary primitives_for(const Grammar& grammar, const std::filesystem::p
   PrimitiveLibrary library = PrimitiveLibrary::builtin();
   if (!grammar.primitives.empty()) {
     const std::filesystem::path folder = grammar_file.parent_path();
+    // A NUL would cut the path short where the system reads it: another
+    // file would be read, with --allow-outside-files too.
+    if (grammar.primitives.find('\0') != std::string::npos) {
+      fail(ErrorKind::Input, grammar_file.string(), grammar.primitives_loc,
+           "@primitives names '" + shown_name(grammar.primitives) + "', which holds a NUL byte",
+           "no file name holds one: write the path of the primitives file without it");
+    }
     if (outside_files) {
       library.load(folder / grammar.primitives);
     } else {

@@ -42,6 +42,13 @@ std::string gltf_loader(Bytes input);
 // it and check that the grammar derives every example.
 std::string infer_layout(Bytes input);
 
+// A small folder tree (see folder_tree.hpp): a glTF example whose URIs, or
+// a grammar whose @primitives, name files in it, beside it, above it or
+// through links, with --allow-outside-files off or on. Load it as infer
+// and generate do; nothing outside the main file's folder may be opened
+// unless allowed, and nothing written.
+std::string indirect_inputs(Bytes input);
+
 struct Target {
   std::string_view name;  // also the folder name under fuzz/corpus and fuzz/regressions
   Entry run;

@@ -68,4 +68,18 @@ std::string example_invariants(const Example& example) {
   return "";
 }
 
+std::string library_invariants(const PrimitiveLibrary& library) {
+  for (const std::string& name : library.names()) {
+    const std::string who = "primitive '" + shown_name(name) + "': ";
+    if (const auto fault = label_fault(name)) return who + "a name that " + *fault + " was accepted";
+    const Mesh& mesh = *library.find(name);
+    if (mesh.face_sizes.empty()) return who + "no faces";
+    if (std::string broken = mesh_invariants(mesh); !broken.empty()) return who + broken;
+    const glm::dvec3 lo = mesh.min_corner(), hi = mesh.max_corner();
+    for (glm::length_t i = 0; i < 3; ++i)
+      if (lo[i] != 0.0 || (hi[i] != 0.0 && hi[i] != 1.0)) return who + "does not fill the unit box";
+  }
+  return "";
+}
+
 }  // namespace vern::fuzz

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 namespace vern::fuzz {
@@ -13,9 +14,9 @@ namespace {
 
 class ScratchFolder {
  public:
-  ScratchFolder() {
-    // The process id keeps parallel fuzzers (-jobs) and test runs apart.
-    path_ = fs::temp_directory_path() / ("vern-fuzz-" + std::to_string(::getpid()));
+  // The process id keeps parallel fuzzers (-jobs) and test runs apart.
+  explicit ScratchFolder(const std::string& suffix)
+      : path_(fs::temp_directory_path() / ("vern-fuzz-" + std::to_string(::getpid()) + suffix)) {
     fs::create_directories(path_);
   }
   ~ScratchFolder() {
@@ -32,8 +33,14 @@ class ScratchFolder {
 
 }  // namespace
 
+fs::path scratch_folder(const std::string& purpose) {
+  // Destroyed (and removed) at exit, as the function-local statics are.
+  static std::map<std::string, ScratchFolder> folders;
+  return folders.try_emplace(purpose, "-" + purpose).first->second.path();
+}
+
 fs::path scratch_file(const std::string& name, Bytes input) {
-  static const ScratchFolder folder;
+  static const ScratchFolder folder("");
   const fs::path path = folder.path() / name;
   std::FILE* f = std::fopen(path.c_str(), "wb");
   // The harness's own failure, not the toolkit's: std::runtime_error makes

@@ -5,11 +5,12 @@
 namespace vern::fuzz {
 
 std::span<const Target> targets() {
-  static constexpr std::array<Target, 4> kTargets{{
+  static constexpr std::array<Target, 5> kTargets{{
       {"grammar_reader", grammar_reader},
       {"obj_loader", obj_loader},
       {"gltf_loader", gltf_loader},
       {"infer_layout", infer_layout},
+      {"indirect_inputs", indirect_inputs},
   }};
   return kTargets;
 }
