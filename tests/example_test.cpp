@@ -473,6 +473,27 @@ std::string two_meshes_gltf(const std::string& meshes, const std::string& nodes,
   "scenes": [{"nodes": [)" + roots + R"(]}], "scene": 0})";
 }
 
+// three.js's exporter names the second node of a name "quad_1" where
+// Blender writes "quad.001": the part is a quad all the same. Only in files
+// three.js says it wrote: elsewhere "quad_1" is a label of its own.
+TEST(Example, NodesThreeJsNumberedCarryTheLabelTheyCopy) {
+  TempFolder dir;
+  const std::string nodes = R"({"name": "quad", "mesh": 0}, {"name": "quad_1", "mesh": 0, "translation": [5, 0, 0]},
+                              {"name": "quad_2_b", "mesh": 0, "translation": [10, 0, 0]})";
+  std::string three = two_meshes_gltf("1", nodes, "0, 1, 2");
+  three.replace(three.find(R"("version": "2.0")"), 16, R"("version": "2.0", "generator": "THREE.GLTFExporter r150")");
+  write_text(dir / "three.gltf", three);
+  write_text(dir / "other.gltf", two_meshes_gltf("1", nodes, "0, 1, 2"));
+  const Example from_three = load_example(dir / "three.gltf");
+  ASSERT_EQ(from_three.boxes.size(), 3u);
+  EXPECT_EQ(from_three.boxes[0].label, "quad");
+  EXPECT_EQ(from_three.boxes[1].label, "quad");
+  EXPECT_EQ(from_three.boxes[2].label, "quad_2_b");  // no copy number: a name of its own
+  const Example other = load_example(dir / "other.gltf");
+  ASSERT_EQ(other.boxes.size(), 3u);
+  EXPECT_EQ(other.boxes[1].label, "quad_1");
+}
+
 // A mesh that several nodes use is read once and placed for each
 // (example.cpp, MeshReader): the parts are those copies of it would make,
 // loose pieces apart split into parts, a mirrored node's faces turned.

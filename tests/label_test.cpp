@@ -141,5 +141,14 @@ TEST(Label, ReadingANameThatIsNoLabelNamesThePlaceAndWhatItDecodesTo) {
   }
 }
 
+TEST(Label, ThreeJsCopyNumbersAreAnUnderscoreAndDigitsAtTheEnd) {
+  EXPECT_EQ(without_three_js_copy_number("rect_1"), "rect");
+  EXPECT_EQ(without_three_js_copy_number("big_window_12"), "big_window");
+  EXPECT_EQ(without_three_js_copy_number("rect"), "rect");
+  EXPECT_EQ(without_three_js_copy_number("rect_"), "rect_");
+  EXPECT_EQ(without_three_js_copy_number("_1"), "_1");
+  EXPECT_EQ(without_three_js_copy_number("rect_1b"), "rect_1b");
+}
+
 }  // namespace
 }  // namespace vern

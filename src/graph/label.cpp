@@ -192,6 +192,14 @@ std::string label_of_name(std::string_view name) {
   return out;
 }
 
+std::string_view without_three_js_copy_number(std::string_view name) {
+  const std::size_t underscore = name.rfind('_');
+  if (underscore == std::string_view::npos || underscore == 0 || underscore + 1 == name.size()) return name;
+  for (std::size_t i = underscore + 1; i < name.size(); ++i)
+    if (name[i] < '0' || name[i] > '9') return name;
+  return name.substr(0, underscore);
+}
+
 std::string label_of_part_name(std::string_view name) {
   return label_of_name(name.substr(0, copy_number_start(name)));
 }

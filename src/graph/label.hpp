@@ -80,6 +80,13 @@ std::string label_of_name(std::string_view name);
 // then decoded.
 std::string label_of_part_name(std::string_view name);
 
+// A node name as three.js's glTF exporter wrote it, without the copy
+// number three.js adds to a name already taken ("rect", "rect_1",
+// "rect_2": the second and third parts labelled rect). Only for files
+// whose asset.generator says three.js made them: elsewhere "rect_1" is a
+// label of its own.
+std::string_view without_three_js_copy_number(std::string_view name);
+
 // What a name read from a file stands for: a primitive's (a primitives
 // file's object: label_of_name) or an example's part (label_of_part_name).
 enum class NameOf { Primitive, Part };

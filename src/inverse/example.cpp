@@ -838,6 +838,9 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
   // Each node is visited once, so a malformed file with cycles still ends.
   std::vector<bool> visited(model.nodes.size(), false);
   MeshReader meshes(model, ex.source, limits);
+  // three.js's exporter makes each node name unique with a copy number of
+  // its own ("rect_1"), as Blender does with ".001".
+  const bool made_by_three_js = model.asset.generator.rfind("THREE.GLTFExporter", 0) == 0;
   std::vector<std::pair<int, glm::dmat4>> stack;
   // glTF is y-up: the roots are turned z-up, exactly (a permutation with
   // one sign), so a file `generate` wrote gives back its grammar's numbers.
@@ -871,8 +874,9 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     // first word (written with its spaces as %20).
     const auto instances = instance_matrices(model, node, ex.source, who, limits, ex.boxes.size());
     const std::size_t parts = instances ? instances->size() : 1;
-    const std::string label = read_label(instances ? node.name.substr(0, node.name.find(' ')) : node.name,
-                                         NameOf::Part, ex.source, {}, "the name of node " + std::to_string(index));
+    std::string_view name = instances ? std::string_view(node.name).substr(0, node.name.find(' ')) : node.name;
+    if (made_by_three_js) name = without_three_js_copy_number(name);
+    const std::string label = read_label(name, NameOf::Part, ex.source, {}, "the name of node " + std::to_string(index));
     for (std::size_t i = 0; i < parts; ++i) {
       const PartName part{index, node.name, instances ? std::optional<std::size_t>(i) : std::nullopt};
       if (ex.boxes.size() >= limits.max_parts) {
