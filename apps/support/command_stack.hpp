@@ -15,19 +15,15 @@
 #include <cstddef>
 #include <functional>
 
+#include "graph/sanitizers.hpp"
+
 namespace vern {
 
 // How many times larger a frame is in this build than in a plain one: the
 // address sanitizer's redzones and instrumentation make frames about three
 // times larger, and the limits above are promises in depth, not in bytes.
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(VERN_ADDRESS_SANITIZER)
 inline constexpr std::size_t kFrameScale = 4;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-inline constexpr std::size_t kFrameScale = 4;
-#else
-inline constexpr std::size_t kFrameScale = 1;
-#endif
 #else
 inline constexpr std::size_t kFrameScale = 1;
 #endif

@@ -5,15 +5,7 @@
 #include <cstdlib>  // defines __GLIBC__ where the C library is glibc
 
 #include "graph/freed_memory.hpp"
-
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || __has_feature(thread_sanitizer)
-#define VERN_SANITIZER_ALLOCATOR 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define VERN_SANITIZER_ALLOCATOR 1
-#endif
+#include "graph/sanitizers.hpp"
 
 #if defined(__GLIBC__) && defined(__linux__) && !defined(VERN_SANITIZER_ALLOCATOR)
 #define VERN_HUGE_PAGES 1
