@@ -17,7 +17,7 @@ std::vector<double> lodges_and_front(double w) {
 TEST(NestedSplit, LodgesBesideAFrontOfColumnsAndAMass) {
   const std::vector<std::vector<double>> lengths = {lodges_and_front(21.5), lodges_and_front(25),
                                                     lodges_and_front(29.5)};
-  const auto run = find_nested_run(lengths, 1e-6);
+  const auto run = find_nested_run(lengths, plan_sizes(lengths, 1e-6), 1e-6);
   ASSERT_TRUE(run.has_value());
   EXPECT_EQ(run->first, 2u);
   EXPECT_EQ(run->last, 4u);
@@ -34,18 +34,18 @@ TEST(NestedSplit, ARowThatIsOneSplitIsLeftAsItIs) {
   // 0.6 m walls and bays in 2 : 1: one split of fixed sizes.
   const std::vector<std::vector<double>> lengths = {
       {0.6, 5.867, 2.933, 0.6}, {0.6, 8.533, 4.267, 0.6}, {0.6, 12.533, 6.267, 0.6}};
-  EXPECT_FALSE(find_nested_run(lengths, 1e-3).has_value());
+  EXPECT_FALSE(find_nested_run(lengths, plan_sizes(lengths, 1e-3), 1e-3).has_value());
 }
 
 TEST(NestedSplit, SharesThatVaryFreelyAreNoNesting) {
   // No run of these makes fixed sizes: the shares were drawn independently.
   const std::vector<std::vector<double>> lengths = {{1, 3, 6, 2}, {1, 5, 5, 4}, {1, 2, 12, 1}, {1, 7, 3, 3}};
-  EXPECT_FALSE(find_nested_run(lengths, 1e-6).has_value());
+  EXPECT_FALSE(find_nested_run(lengths, plan_sizes(lengths, 1e-6), 1e-6).has_value());
 }
 
 TEST(NestedSplit, TwoRowsAreTooFewToTell) {
   const std::vector<std::vector<double>> lengths = {lodges_and_front(21.5), lodges_and_front(29.5)};
-  EXPECT_FALSE(find_nested_run(lengths, 1e-6).has_value());
+  EXPECT_FALSE(find_nested_run(lengths, plan_sizes(lengths, 1e-6), 1e-6).has_value());
 }
 
 TEST(NestedSplit, TheShortestRunWins) {
@@ -57,7 +57,7 @@ TEST(NestedSplit, TheShortestRunWins) {
     const double k = w / 3;  // ~1 : a | ~2 : split{ 0.5 : m | ~1 : b | 0.5 : m }
     lengths.push_back({k, 0.5, 2 * k - 1, 0.5});
   }
-  const auto run = find_nested_run(lengths, 1e-6);
+  const auto run = find_nested_run(lengths, plan_sizes(lengths, 1e-6), 1e-6);
   ASSERT_TRUE(run.has_value());
   EXPECT_EQ(run->first, 1u);
   EXPECT_EQ(run->last, 3u);

@@ -16,24 +16,21 @@ namespace {
 // The split as a split of fixed sizes holding a split of fixed sizes
 // (nested_split.hpp), when its rows are two splits and not one.
 std::optional<Split> nested_split(Grammar& g, const Split& split, const std::vector<std::vector<double>>& lengths,
-                                  double tolerance) {
-  const auto run = find_nested_run(lengths, tolerance);
+                                  const std::optional<std::vector<PartPlan>>& whole, double tolerance) {
+  const auto run = find_nested_run(lengths, whole, tolerance);
   if (!run) return std::nullopt;
-  const auto outer = plan_sizes(outer_lengths(lengths, *run), tolerance);
-  const auto inner = plan_sizes(inner_lengths(lengths, *run), tolerance);
-  if (!outer || !inner) return std::nullopt;  // a run whose parts keep their lengths is no nesting
   auto size = [](const PartPlan& p) { return Size{Expr::number(p.value), !p.absolute}; };
   Split nested{split.axis, {}};
   for (std::size_t i = run->first; i <= run->last; ++i)
-    nested.parts.push_back({size((*inner)[i - run->first]), split.parts[i].child});
+    nested.parts.push_back({size(run->inner[i - run->first]), split.parts[i].child});
   const NodeId child = g.intern({std::move(nested), {}});
   Split out{split.axis, {}};
   for (std::size_t i = 0, k = 0; i < split.parts.size(); ++k) {
     if (i == run->first) {
-      out.parts.push_back({size((*outer)[k]), child});
+      out.parts.push_back({size(run->outer[k]), child});
       i = run->last + 1;
     } else {
-      out.parts.push_back({size((*outer)[k]), split.parts[i].child});
+      out.parts.push_back({size(run->outer[k]), split.parts[i].child});
       ++i;
     }
   }
@@ -59,14 +56,16 @@ NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book
     std::vector<std::vector<double>> lengths;
     for (const LengthRow& r : known->second) lengths.push_back(r.lengths);
     if (lengths[0].size() != split->parts.size()) continue;
-    if (const auto nested = nested_split(g, *split, lengths, tolerance)) {
+    // One plan of the row as one split, for both questions below.
+    const auto whole = plan_sizes(lengths, tolerance);
+    if (const auto nested = nested_split(g, *split, lengths, whole, tolerance)) {
       const NodeId out = g.intern({std::move(*nested), g.node(id).loc});
       if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
       replace[id] = out;
       any = true;
       continue;
     }
-    const auto plan = plan_drawn_sizes(lengths, tolerance);
+    const auto plan = plan_drawn_sizes(lengths, whole, tolerance);
     if (!plan) continue;
     Split drawn = *split;
     std::vector<std::vector<Observation>> values(drawn.parts.size());

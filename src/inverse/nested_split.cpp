@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "inverse/size_plan.hpp"
 
 namespace vern {
 
@@ -13,18 +12,13 @@ namespace {
 // search, cubic in the parts, is not tried.
 constexpr std::size_t kFewestRows = 3, kMostParts = 32;
 
-// Does one split give every row's lengths with fixed sizes? plan_sizes
-// says nothing (nullopt) when the rows' totals agree: then every part
-// keeps its length in metres only if each part does.
-bool fixed_split(const std::vector<std::vector<double>>& lengths, double tolerance) {
-  if (const auto plan = plan_sizes(lengths, tolerance))
-    return std::all_of(plan->begin(), plan->end(), [](const PartPlan& p) { return p.fixed; });
-  for (std::size_t i = 0; i < lengths[0].size(); ++i) {
-    const auto [lo, hi] = std::minmax_element(lengths.begin(), lengths.end(),
-                                              [i](const auto& a, const auto& b) { return a[i] < b[i]; });
-    if ((*hi)[i] - (*lo)[i] > tolerance) return false;
-  }
-  return true;
+// One split's plan for the rows, if it fixes every size. plan_sizes has
+// none when the rows' totals agree: such a run keeps its parts' lengths
+// and is no nesting.
+std::optional<std::vector<PartPlan>> fixed_plan(const std::vector<std::vector<double>>& lengths, double tolerance) {
+  auto plan = plan_sizes(lengths, tolerance);
+  if (!plan || !std::all_of(plan->begin(), plan->end(), [](const PartPlan& p) { return p.fixed; })) return std::nullopt;
+  return plan;
 }
 
 }  // namespace
@@ -52,7 +46,8 @@ std::vector<std::vector<double>> inner_lengths(const std::vector<std::vector<dou
   return out;
 }
 
-std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>& lengths, double tolerance) {
+std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>& lengths,
+                                         const std::optional<std::vector<PartPlan>>& whole, double tolerance) {
   if (lengths.size() < kFewestRows) return std::nullopt;
   const std::size_t parts = lengths[0].size();
   if (parts < 3 || parts > kMostParts) return std::nullopt;
@@ -60,14 +55,18 @@ std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>&
     if (row.size() != parts) return std::nullopt;
   // Only a row that one split cannot give with fixed sizes: a row that
   // varies in its totals (plan_sizes has a plan) and keeps a part unfixed.
-  const auto whole = plan_sizes(lengths, tolerance);
   if (!whole || std::all_of(whole->begin(), whole->end(), [](const PartPlan& p) { return p.fixed; }))
     return std::nullopt;
   for (std::size_t length = 2; length < parts; ++length) {
     for (std::size_t first = 0; first + length <= parts; ++first) {
-      const NestedRun run{first, first + length - 1};
-      if (fixed_split(outer_lengths(lengths, run), tolerance) && fixed_split(inner_lengths(lengths, run), tolerance))
-        return run;
+      NestedRun run{first, first + length - 1, {}, {}};
+      auto outer = fixed_plan(outer_lengths(lengths, run), tolerance);
+      if (!outer) continue;
+      auto inner = fixed_plan(inner_lengths(lengths, run), tolerance);
+      if (!inner) continue;
+      run.outer = std::move(*outer);
+      run.inner = std::move(*inner);
+      return run;
     }
   }
   return std::nullopt;

@@ -21,17 +21,23 @@
 #include <optional>
 #include <vector>
 
+#include "inverse/size_plan.hpp"
+
 namespace vern {
 
-// The parts [first, last] (first < last, not all parts) that become one.
+// The parts [first, last] (first < last, not all parts) that become one,
+// with the fixed sizes of the split round them (the run one part) and of
+// the split they make.
 struct NestedRun {
   std::size_t first = 0, last = 0;
+  std::vector<PartPlan> outer, inner;
 };
 
-// The shortest such run, the leftmost of equal length; none when the row
-// is one split already, or too few rows (three) or too many parts (32) to
-// tell.
-std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>& lengths, double tolerance);
+// The shortest such run, the leftmost of equal length; none when `whole`
+// (plan_sizes of the rows) fixes every part or is none, or there are too
+// few rows (three) or too many parts (32) to tell.
+std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>& lengths,
+                                         const std::optional<std::vector<PartPlan>>& whole, double tolerance);
 
 // The rows with parts [run.first, run.last] summed into one.
 std::vector<std::vector<double>> outer_lengths(const std::vector<std::vector<double>>& lengths, NestedRun run);

@@ -118,12 +118,17 @@ bool cuts_hold(const std::vector<std::vector<double>>& lengths, const std::vecto
 
 std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::vector<double>>& lengths,
                                                        double tolerance) {
+  return plan_drawn_sizes(lengths, plan_sizes(lengths, tolerance), tolerance);
+}
+
+std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::vector<double>>& lengths,
+                                                       const std::optional<std::vector<PartPlan>>& base,
+                                                       double tolerance) {
   if (lengths.size() < 2) return std::nullopt;
   const std::size_t parts = lengths[0].size(), rows = lengths.size();
   for (const auto& row : lengths)
     if (row.size() != parts) return std::nullopt;
   std::vector<PartSizes> plan(parts);
-  const auto base = plan_sizes(lengths, tolerance);
   std::vector<double> totals(rows, 0.0);
   for (std::size_t m = 0; m < rows; ++m)
     for (double l : lengths[m]) totals[m] += l;

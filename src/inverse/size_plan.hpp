@@ -62,5 +62,9 @@ struct PartSizes {
 // only if every row's cuts come out within the tolerance.
 std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::vector<double>>& lengths,
                                                        double tolerance);
+// The same from plan_sizes(lengths, tolerance), where the caller has it.
+std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::vector<double>>& lengths,
+                                                       const std::optional<std::vector<PartPlan>>& base,
+                                                       double tolerance);
 
 }  // namespace vern
