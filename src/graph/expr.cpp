@@ -212,6 +212,11 @@ std::optional<double> Expr::literal() const {
   return std::nullopt;
 }
 
+std::optional<std::uint8_t> Expr::literal_axis() const {
+  if (nodes().size() != 1 || node(0).kind != ExprKind::Axis) return std::nullopt;
+  return node(0).op;
+}
+
 bool Expr::draws_random() const {
   return std::ranges::any_of(nodes(), [](const ExprNode& n) {
     return n.kind == ExprKind::Call && function_info(static_cast<Function>(n.op)).random;

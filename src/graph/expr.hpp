@@ -111,6 +111,9 @@ class Expr {
 
   // The literal number, if the whole expression is one.
   std::optional<double> literal() const;
+  // The axis, if the whole expression is a literal x, y or z (not a
+  // parameter or anything computed).
+  std::optional<std::uint8_t> literal_axis() const;
   bool draws_random() const;
   bool uses_params() const;
 

@@ -20,15 +20,6 @@ struct Seen {
   double total = 0;
 };
 
-// The axis an operation's axis expression names, when it is a literal x,
-// y or z (not a parameter).
-std::optional<std::uint8_t> literal_axis(const Expr& axis) {
-  if (axis.nodes().size() != 1) return std::nullopt;
-  const ExprNode& n = axis.node(axis.root());
-  if (n.kind != ExprKind::Axis) return std::nullopt;
-  return n.op;
-}
-
 std::optional<Seen> seen_at_one_length(const Split& s, std::size_t option) {
   Seen out{option, {}, 0};
   for (const SplitPart& p : s.parts) {
@@ -60,7 +51,7 @@ struct Stretch {
 
 std::optional<Stretch> stretch_of(const Grammar& g, NodeId id, std::uint8_t axis) {
   const auto* r = std::get_if<Repeat>(&g.op(id));
-  if (!r || literal_axis(r->axis) != axis) return std::nullopt;
+  if (!r || r->axis.literal_axis() != axis) return std::nullopt;
   const auto tile = r->size.literal();
   if (!tile || *tile <= 0) return std::nullopt;
   Stretch out{id, *tile, {}};
@@ -86,7 +77,7 @@ std::vector<SplitPart> tiles_of(const Grammar& g, const Split& s, std::size_t fi
     const auto* r = std::get_if<RepeatN>(&g.op(p.child));
     const auto n = r ? r->count.literal() : std::nullopt;
     const auto length = p.size.value.literal();
-    const bool along = r && literal_axis(r->axis) == axis;
+    const bool along = r && r->axis.literal_axis() == axis;
     if (!along || !n || *n < 1 || *n != std::round(*n) || !length || !p.size.relative) {
       out.push_back(p);
       continue;
@@ -185,7 +176,7 @@ NodeId absolute_across_alternatives(Grammar& g, NodeId root, double tolerance) {
     std::map<std::uint8_t, std::vector<Seen>> by_axis;
     for (std::size_t k = 0; k < choose.options.size(); ++k) {
       const auto* s = std::get_if<Split>(&g.op(choose.options[k].child));
-      const auto axis = s ? literal_axis(s->axis) : std::nullopt;
+      const auto axis = s ? s->axis.literal_axis() : std::nullopt;
       if (!axis) continue;
       if (auto seen = seen_at_one_length(*s, k)) by_axis[*axis].push_back(std::move(*seen));
     }

@@ -22,11 +22,6 @@ const Choose* plain_choose(const Operation& op) {
   return c;
 }
 
-std::optional<std::uint8_t> literal_axis(const Expr& axis) {
-  if (axis.nodes().size() != 1 || axis.node(0).kind != ExprKind::Axis) return std::nullopt;
-  return axis.node(0).op;
-}
-
 // How far apart two kinds of tile may lie in length and still be one
 // kind: the longer's shortest at most this times the shorter's longest.
 constexpr double kLengthGap = 1.25;
@@ -154,11 +149,11 @@ class Uniter {
     seen_[id] = true;
     for_each_child(g_.op(id), [&](NodeId c) { collect(c); });
     const auto* r = std::get_if<Repeat>(&g_.op(id));
-    const auto axis = r ? literal_axis(r->axis) : std::nullopt;
+    const auto axis = r ? r->axis.literal_axis() : std::nullopt;
     const auto tile = r ? literal_range(r->size) : std::nullopt;
     if (!axis || !tile || is_nil(r->child)) return;
     const auto* split = std::get_if<Split>(&g_.op(r->child));
-    const auto split_axis = split ? literal_axis(split->axis) : std::nullopt;
+    const auto split_axis = split ? split->axis.literal_axis() : std::nullopt;
     if (!split_axis) {
       add_slot(id, kWholeTile, r->child, {*axis, kWholeTile, 0, 0}, *tile);
       return;
