@@ -5,6 +5,7 @@
 
 #include "graph/nodes_below.hpp"
 #include "inverse/substitute.hpp"
+#include "inverse/weighted_choice.hpp"
 
 namespace vern {
 
@@ -94,17 +95,17 @@ NodeId share_frames(Grammar& g, NodeId root) {
     std::vector<std::optional<ChooseOption>> at(c.options.size());
     std::vector<bool> gone(c.options.size(), false);
     for (Group& group : groups) {
-      Choose place;
+      std::vector<std::pair<NodeId, double>> place;
       double total = 0;
       for (std::size_t k : group.options) {
         const ChooseOption& o = c.options[k];
-        place.options.push_back({Expr{}, Expr::number(weight(o)), std::get<Split>(g.op(o.child)).parts[group.place].child});
+        place.emplace_back(std::get<Split>(g.op(o.child)).parts[group.place].child, weight(o));
         total += weight(o);
         gone[k] = true;
       }
       const NodeId representative = c.options[group.options.front()].child;
       Split frame = std::get<Split>(g.op(representative));
-      frame.parts[group.place].child = g.intern({std::move(place), {}});
+      frame.parts[group.place].child = weighted_choice(g, place);
       const SourceLoc loc = g.node(representative).loc;
       at[group.options.front()] = ChooseOption{Expr{}, Expr::number(total), g.intern({std::move(frame), loc})};
     }
