@@ -8,6 +8,7 @@
 #include "graph/import.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
+#include "inverse/rule_naming.hpp"
 #include "support/example_graphs.hpp"
 
 namespace vern {
@@ -105,13 +106,17 @@ TEST(SizeClusters, ClearlyBimodalHeightsBecomeSeparateAlternatives) {
     texts.push_back("split(x){ ~6 : I(house) | ~3 : split(z){ ~" + std::to_string(h) + " : I(rect) | ~" +
                     std::to_string(9 - h) + " : nil } }");
   const NodeId merged = merge_examples(g, test::example_graphs(g, texts), {1e-9, true});
-  const auto* alternatives = std::get_if<Choose>(&g.op(merged));
+  // The houses differ at the garage only: one house, its garage a choice
+  // of the two kinds (the same buildings as two alternatives of houses).
+  const auto* house = std::get_if<Split>(&g.op(merged));
+  ASSERT_NE(house, nullptr) << write_grammar(rules_for(g, merged, {}));
+  const auto* alternatives = std::get_if<Choose>(&g.op(house->parts[1].child));
   ASSERT_NE(alternatives, nullptr);
   ASSERT_EQ(alternatives->options.size(), 2u);
   std::vector<Range> heights;
   for (const auto& o : alternatives->options) {
     EXPECT_EQ(o.priority.literal(), 4.0);
-    const auto& garage = std::get<Split>(g.op(std::get<Split>(g.op(o.child)).parts[1].child));
+    const auto& garage = std::get<Split>(g.op(o.child));
     heights.push_back(*literal_range(garage.parts[0].size.value));
   }
   std::sort(heights.begin(), heights.end(), [](const Range& a, const Range& b) { return a.lo < b.lo; });

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <unordered_map>
 
+#include "inverse/choice_costs.hpp"
 #include "inverse/substitute.hpp"
+#include "inverse/weighted_choice.hpp"
 
 namespace vern {
 
@@ -20,20 +23,26 @@ std::optional<double> middle(const Expr& e) {
 
 struct Frame {
   std::vector<NodeId> members;  // distinct split nodes, in discovery order
+  bool alternatives = false;    // the members are alternatives of one choice
+  std::vector<bool> relative;   // each part's flag in the joined split
+  std::map<NodeId, double> weights;  // alternatives: each member's weight in its choice
 };
 
 class Generaliser {
  public:
-  Generaliser(Grammar& g, const MergeOptions& o)
-      : g_(g), opt_(o), references_(g.node_count(), 0) {}
+  Generaliser(Grammar& g, const MergeOptions& o, FrameKinds kinds, const RowBook& rows)
+      : g_(g), opt_(o), kinds_(kinds), rows_(rows), references_(g.node_count(), 0) {}
 
   NodeId run(NodeId root, bool& changed, std::vector<std::pair<NodeId, NodeId>>* rebuilt,
              std::vector<std::pair<NodeId, NodeId>>* joined) {
     changed = false;
     collect(root);
     std::vector<NodeId> replace(g_.node_count(), kNoReplacement);  // by node id
-    for (auto& [key, frame] : frames_) {
-      if (frame.members.size() < 2) continue;
+    auto join = [&](Frame& frame) {
+      // A member a frame before already replaced stays where it went.
+      std::erase_if(frame.members, [&](NodeId m) { return replace[m] != kNoReplacement; });
+      settle_flags(frame);
+      if (frame.members.size() < 2) return;
       if (auto merged = generalise(frame)) {
         changed = true;
         for (NodeId m : frame.members) {
@@ -41,7 +50,10 @@ class Generaliser {
           if (joined) joined->emplace_back(m, *merged);
         }
       }
-    }
+    };
+    for (auto& [key, frame] : frames_) join(frame);
+    if (kinds_ == FrameKinds::AlikeAndAlternatives)
+      for (auto& [key, frame] : choice_frames_) join(frame);
     return changed ? substitute(g_, root, replace, rebuilt) : root;
   }
 
@@ -52,22 +64,158 @@ class Generaliser {
     if (references_[id]++ > 0) return;
     const Operation& op = g_.op(id);
     for (NodeId c : node_children(op)) collect(c);
+    if (const auto* c = std::get_if<Choose>(&op)) {
+      // Alternatives of one choice that are splits of one shape are one
+      // frame whatever their proportions: they stand for the same place.
+      for (const auto& o : c->options) {
+        const auto* s = std::get_if<Split>(&g_.op(o.child));
+        if (!s) continue;
+        if (auto shape = split_shape(*s, false)) {
+          Frame& frame = choice_frames_["c" + std::to_string(id) + "/" + *shape];
+          frame.alternatives = true;
+          auto& members = frame.members;
+          if (std::find(members.begin(), members.end(), o.child) == members.end()) members.push_back(o.child);
+          frame.weights[o.child] += middle(o.priority).value_or(1.0);
+        }
+      }
+      return;
+    }
     const auto* s = std::get_if<Split>(&op);
-    if (!s || s->parts.size() < 2) return;
-    if (s->axis.node(s->axis.root()).kind != ExprKind::Axis) return;
+    if (!s) return;
+    if (auto shape = split_shape(*s, true)) frames_[*shape].members.push_back(id);
+  }
+
+  // Does a place whose child varies also vary in metres? A 1.2 m door or
+  // a 3 m shop window: joined, the length would be drawn apart from what
+  // fills it (a 3 m door). Relative parts vary with their scope anyway.
+  bool lengths_follow_children(const Frame& frame,
+                               const std::vector<std::vector<std::pair<NodeId, double>>>& seen) const {
+    for (std::size_t i = 0; i < seen.size(); ++i) {
+      if (seen[i].size() < 2 || frame.relative[i]) continue;
+      double highest_lo = -std::numeric_limits<double>::infinity();
+      double lowest_hi = std::numeric_limits<double>::infinity();
+      for (NodeId m : frame.members) {
+        const auto r = literal_range(std::get<Split>(g_.op(m)).parts[i].size.value);
+        if (!r) return true;
+        highest_lo = std::max(highest_lo, r->lo);
+        lowest_hi = std::min(lowest_hi, r->hi);
+      }
+      if (highest_lo - lowest_hi > opt_.tolerance) return true;
+    }
+    return false;
+  }
+
+  // Does a place hold a repeat along the split's axis in one alternative
+  // and tiles it makes in another (one storey, or repeatN of them)? Then
+  // the alternatives differ in a count, not a choice: a house seen with
+  // one storey stacks as many as its height holds, as one seen with five
+  // (absolute_across_alternatives.hpp makes the run that repeat, which a
+  // choice of the two at that place would hide).
+  bool runs_of_tiles(const Split& first, const std::vector<std::vector<std::pair<NodeId, double>>>& seen) const {
+    const auto axis = first.axis.literal_axis();
+    if (!axis) return false;
+    for (const auto& at : seen) {
+      for (const auto& [child, w] : at) {
+        const auto* r = std::get_if<Repeat>(&g_.op(child));
+        if (!r || r->axis.literal_axis() != axis) continue;
+        std::vector<NodeId> holds{r->child};
+        if (const auto* c = std::get_if<Choose>(&g_.op(r->child)))
+          for (const auto& o : c->options) holds.push_back(o.child);
+        auto tile = [&](NodeId n) { return std::find(holds.begin(), holds.end(), n) != holds.end(); };
+        for (const auto& [other, v] : at) {
+          if (other == child) continue;
+          const auto* run = std::get_if<RepeatN>(&g_.op(other));
+          if (tile(other) || (run && run->axis.literal_axis() == axis && tile(run->child))) return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  // How often a member was seen: its weight in the choice, for
+  // alternatives; else how many places use it.
+  double weight_of(const Frame& frame, NodeId m) const {
+    const auto it = frame.weights.find(m);
+    return it != frame.weights.end() ? it->second : references_[m];
+  }
+
+  // One example's split, never unified: its sizes are that example's
+  // lengths, and which of them are relative says nothing yet.
+  bool lone(NodeId id) const {
+    if (rows_.count(id)) return false;
+    for (const auto& p : std::get<Split>(g_.op(id)).parts) {
+      const auto r = literal_range(p.size.value);
+      if (!r || r->lo != r->hi) return false;
+    }
+    return true;
+  }
+
+  static std::vector<bool> flags_of(const Split& s) {
+    std::vector<bool> relative;
+    for (const auto& p : s.parts) relative.push_back(p.size.relative);
+    return relative;
+  }
+
+  // The joined split's relative flags: those of the first member whose
+  // flags were settled by unifying examples (else the first member's);
+  // members settled otherwise stay out of the frame, and lone ones take
+  // these flags.
+  void settle_flags(Frame& frame) const {
+    if (frame.members.empty()) return;
+    const auto settled = std::find_if(frame.members.begin(), frame.members.end(), [&](NodeId m) { return !lone(m); });
+    frame.relative = flags_of(std::get<Split>(g_.op(settled != frame.members.end() ? *settled : frame.members[0])));
+    std::erase_if(frame.members, [&](NodeId m) {
+      return !lone(m) && flags_of(std::get<Split>(g_.op(m))) != frame.relative;
+    });
+  }
+
+  // A split's axis and part count, with its relative flags and
+  // proportions when asked; none if it cannot be a frame member.
+  std::optional<std::string> split_shape(const Split& s, bool with_proportions) const {
+    if (s.parts.size() < 2) return std::nullopt;
+    if (s.axis.node(s.axis.root()).kind != ExprKind::Axis) return std::nullopt;
     double total = 0;
     std::vector<double> mids;
-    for (const auto& p : s->parts) {
+    for (const auto& p : s.parts) {
       const auto m = middle(p.size.value);
-      if (!m) return;
+      if (!m) return std::nullopt;
       mids.push_back(*m);
       total += *m;
     }
-    if (!(total > 0)) return;
-    std::string key = std::to_string(s->axis.node(s->axis.root()).op) + "/" + std::to_string(s->parts.size());
-    for (std::size_t i = 0; i < s->parts.size(); ++i)
-      key += (s->parts[i].size.relative ? "~" : "=") + std::to_string(std::lround(1000 * mids[i] / total));
-    frames_[key].members.push_back(id);
+    if (!(total > 0)) return std::nullopt;
+    std::string key = std::to_string(s.axis.node(s.axis.root()).op) + "/" + std::to_string(s.parts.size());
+    // Alternatives are keyed without their flags: settle_flags sorts them.
+    if (with_proportions)
+      for (std::size_t i = 0; i < s.parts.size(); ++i)
+        key += (s.parts[i].size.relative ? "~" : "=") + std::to_string(std::lround(1000 * mids[i] / total));
+    return key;
+  }
+
+  // Alternatives of one choice: their places vary independently when that
+  // costs no more bits than the combinations seen, counting only the
+  // places that vary. Alternatives that differ at one place only cost the
+  // same either way, and become that place's choice: the same buildings,
+  // one choice lower.
+  bool independent_cheaper(const Frame& frame, const std::vector<std::vector<std::pair<NodeId, double>>>& seen) const {
+    std::vector<std::size_t> varying;
+    std::vector<std::vector<double>> places;
+    for (std::size_t i = 0; i < seen.size(); ++i)
+      if (seen[i].size() > 1) {
+        varying.push_back(i);
+        places.emplace_back();
+        for (const auto& [child, w] : seen[i]) places.back().push_back(w);
+      }
+    std::map<std::vector<NodeId>, double> fillings;
+    for (NodeId m : frame.members) {
+      const auto& s = std::get<Split>(g_.op(m));
+      std::vector<NodeId> filling;
+      for (std::size_t i : varying) filling.push_back(s.parts[i].child);
+      fillings[filling] += weight_of(frame, m);
+    }
+    std::vector<double> joint;
+    for (const auto& [filling, w] : fillings) joint.push_back(w);
+    const ChoiceCosts costs = choice_costs(joint, places);
+    return costs.independent <= costs.coupled + 1e-9;
   }
 
   std::optional<NodeId> generalise(const Frame& frame) {
@@ -82,7 +230,7 @@ class Generaliser {
     std::size_t busiest = 0;
     for (NodeId m : frame.members) {
       const auto& s = std::get<Split>(g_.op(m));
-      const double weight = references_[m];
+      const double weight = weight_of(frame, m);
       for (std::size_t i = 0; i < n; ++i) {
         auto [it, fresh] = where[i].try_emplace(s.parts[i].child, seen[i].size());
         if (fresh) seen[i].emplace_back(s.parts[i].child, weight);
@@ -90,8 +238,11 @@ class Generaliser {
       }
     }
     for (const auto& at : seen) busiest = std::max(busiest, at.size());
-    // Few fillings for the variety at each place: the places are coupled.
-    if (busiest < 2 || frame.members.size() < 2 * busiest) return std::nullopt;
+    if (busiest < 2) return std::nullopt;
+    if (frame.alternatives ? runs_of_tiles(first, seen) || lengths_follow_children(frame, seen) ||
+                                 !independent_cheaper(frame, seen)
+                           : frame.members.size() < 2 * busiest)
+      return std::nullopt;
 
     // The members share their proportions (the frame's key), not their
     // lengths: relative sizes range over each member's own scaled to the
@@ -99,8 +250,8 @@ class Generaliser {
     // depth would become two independent draws.
     auto relative_total = [&](const Split& s) {
       double t = 0;
-      for (const auto& p : s.parts)
-        if (p.size.relative) t += middle(p.size.value).value_or(0.0);
+      for (std::size_t i = 0; i < n; ++i)
+        if (frame.relative[i]) t += middle(s.parts[i].size.value).value_or(0.0);
       return t;
     };
     const double reference = relative_total(first);
@@ -113,7 +264,7 @@ class Generaliser {
         const Split& s = std::get<Split>(g_.op(m));
         if (auto r = literal_range(s.parts[i].size.value)) {
           const double total = relative_total(s);
-          if (s.parts[i].size.relative && total > 0 && reference > 0) {
+          if (frame.relative[i] && total > 0 && reference > 0) {
             r->lo *= reference / total;
             r->hi *= reference / total;
           }
@@ -122,14 +273,8 @@ class Generaliser {
         }
       }
       SplitPart part;
-      part.size = {range_expr(range, opt_.tolerance), first.parts[i].size.relative};
-      if (seen[i].size() == 1) {
-        part.child = seen[i][0].first;
-      } else {
-        Choose choose;
-        for (const auto& [child, weight] : seen[i]) choose.options.push_back({Expr{}, Expr::number(weight), child});
-        part.child = g_.intern({std::move(choose), {}});
-      }
+      part.size = {range_expr(range, opt_.tolerance), frame.relative[i]};
+      part.child = weighted_choice(g_, seen[i]);
       merged.parts.push_back(std::move(part));
     }
     return g_.intern({std::move(merged), {}});
@@ -137,16 +282,19 @@ class Generaliser {
 
   Grammar& g_;
   const MergeOptions& opt_;
+  FrameKinds kinds_;
+  const RowBook& rows_;  // splits whose rows are known: built from examples unified
   std::vector<int> references_;  // by node id, below the root
   std::map<std::string, Frame> frames_;
+  std::map<std::string, Frame> choice_frames_;  // alternatives of one choice, by shape
 };
 
 }  // namespace
 
-NodeId generalise_free_parts(Grammar& g, NodeId root, const MergeOptions& options, bool& changed,
-                             std::vector<std::pair<NodeId, NodeId>>* rebuilt,
+NodeId generalise_free_parts(Grammar& g, NodeId root, const MergeOptions& options, FrameKinds kinds,
+                             const RowBook& rows, bool& changed, std::vector<std::pair<NodeId, NodeId>>* rebuilt,
                              std::vector<std::pair<NodeId, NodeId>>* joined) {
-  return Generaliser(g, options).run(root, changed, rebuilt, joined);
+  return Generaliser(g, options, kinds, rows).run(root, changed, rebuilt, joined);
 }
 
 }  // namespace vern

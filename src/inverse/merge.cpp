@@ -330,6 +330,12 @@ class Unifier {
       m.total = 0;
       const Sized sized(g_.op(id));
       for (std::size_t i = 0; i < sized.size(); ++i) m.sizes.push_back(literal_range(sized[i]));
+      m.weight = counts_.of(id);
+      // A split built from examples unified has their lengths in its rows:
+      // its own sizes, fixed by a plan, may be shares (~3 : ~14 : ~4 of a
+      // shop window 0.6 : 2.8 : 0.8 m), which are no lengths to compare.
+      if (const auto known = rows_.find(id); known != rows_.end() && std::holds_alternative<Split>(g_.op(id)))
+        from_rows(m, known->second);
       // Empty space is what the other parts leave: 0.2 m or 1 m of air
       // above a house are not two kinds of house.
       if (const auto* s = std::get_if<Split>(&g_.op(id))) {
@@ -348,9 +354,24 @@ class Unifier {
         }
         if (m.total < 0) m.total = 0;
       }
-      m.weight = counts_.of(id);
     }
     return sized_;
+  }
+
+  // A member's sizes as the ranges of its rows' lengths, and its weight
+  // as theirs, where every row has a length for every part.
+  static void from_rows(SizedMember& m, const std::vector<LengthRow>& rows) {
+    for (const LengthRow& r : rows)
+      if (r.lengths.size() != m.sizes.size()) return;
+    double weight = 0;
+    for (std::size_t i = 0; i < m.sizes.size(); ++i) {
+      if (!m.sizes[i]) continue;
+      Range range{rows[0].lengths[i], rows[0].lengths[i]};
+      for (const LengthRow& r : rows) range = {std::min(range.lo, r.lengths[i]), std::max(range.hi, r.lengths[i])};
+      m.sizes[i] = range;
+    }
+    for (const LengthRow& r : rows) weight += r.weight;
+    if (weight > 0) m.weight = weight;
   }
 
   // Widens the group's ranges by a member's sizes and notes their values.
@@ -381,16 +402,18 @@ class Unifier {
       }
       if (r->lo == r->hi) row.push_back(r->lo);
     }
-    if (row.size() == sizes.size()) {
-      group.lengths.push_back(row);
-      group.row_weights.push_back(counts_.of(id));
-      group.row_examples.push_back(counts_.example_of(id));
-    } else if (const auto rows = rows_.find(id); rows != rows_.end()) {
+    // A member built from a group keeps its members' rows: its own sizes,
+    // fixed by a plan (a share ~18.7 of every width seen), are no lengths.
+    if (const auto rows = rows_.find(id); rows != rows_.end()) {
       for (const LengthRow& r : rows->second) {
         group.lengths.push_back(r.lengths);
         group.row_weights.push_back(r.weight);
         group.row_examples.push_back(r.example);
       }
+    } else if (row.size() == sizes.size()) {
+      group.lengths.push_back(row);
+      group.row_weights.push_back(counts_.of(id));
+      group.row_examples.push_back(counts_.example_of(id));
     } else {
       group.rows_complete = false;
     }
@@ -789,21 +812,39 @@ void carry_notes(const std::vector<std::pair<NodeId, NodeId>>& rebuilt, SampleBo
 
 namespace {
 
+// A member's rows: those booked for it, or, for a split whose sizes are
+// all single values (one kind of split, never unified with another), that
+// one row itself.
+std::optional<std::vector<LengthRow>> rows_of(const Grammar& g, NodeId member, const RowBook& rows,
+                                              const ExampleCounts& counts) {
+  if (const auto known = rows.find(member); known != rows.end()) return known->second;
+  const auto* s = std::get_if<Split>(&g.op(member));
+  if (!s) return std::nullopt;
+  LengthRow row{{}, counts.of(member), counts.example_of(member)};
+  for (const auto& p : s->parts) {
+    const auto r = literal_range(p.size.value);
+    if (!r || r->lo != r->hi) return std::nullopt;
+    row.lengths.push_back(r->lo);
+  }
+  return std::vector<LengthRow>{std::move(row)};
+}
+
 // A frame's members joined into one split: its rows are all of theirs, if
 // every member's are known.
-void join_rows(const std::vector<std::pair<NodeId, NodeId>>& joined, RowBook& rows) {
+void join_rows(const Grammar& g, const std::vector<std::pair<NodeId, NodeId>>& joined, RowBook& rows,
+               const ExampleCounts& counts) {
   std::unordered_map<NodeId, bool> complete;
   for (const auto& [member, split] : joined) {
     auto [it, fresh] = complete.try_emplace(split, true);
     if (fresh) rows.erase(split);
-    const auto known = rows.find(member);
-    if (!it->second || known == rows.end()) {
+    if (!it->second) continue;
+    auto known = rows_of(g, member, rows, counts);
+    if (!known) {
       it->second = false;
       continue;
     }
-    std::vector<LengthRow> copy = known->second;  // a copy: inserting below may move it
     std::vector<LengthRow>& into = rows[split];
-    into.insert(into.end(), copy.begin(), copy.end());
+    into.insert(into.end(), known->begin(), known->end());
   }
   for (const auto& [split, whole] : complete)
     if (!whole) rows.erase(split);
@@ -843,20 +884,23 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   // free combinations above: repeat until nothing changes (a few rounds:
   // each round generalises at least one frame, and frames only merge).
   // Rows of one kind sharing their tiles' choices works the same way.
-  for (int round = 0; round < 16; ++round) {
-    bool changed = false;
-    std::vector<std::pair<NodeId, NodeId>> rebuilt, joined;
-    merged = generalise_free_parts(g, merged, options, changed, &rebuilt, &joined);
-    join_rows(joined, rows);
-    carry_notes(rebuilt, book, tile_counts);
-    const TileChoiceUnion united = unite_tile_choices(g, merged);
-    carry_notes(united.replaced, book, tile_counts);
-    merged = united.root;
-    if (!changed && united.replaced.empty()) break;
-    carry_rows(rebuilt, rows);
-    carry_rows(united.replaced, rows);
-    merged = Unifier(g, options, book, rows, tile_counts, counts).run(merged);
-  }
+  auto generalise = [&](FrameKinds kinds) {
+    for (int round = 0; round < 16; ++round) {
+      bool changed = false;
+      std::vector<std::pair<NodeId, NodeId>> rebuilt, joined;
+      merged = generalise_free_parts(g, merged, options, kinds, rows, changed, &rebuilt, &joined);
+      join_rows(g, joined, rows, counts);
+      carry_notes(rebuilt, book, tile_counts);
+      const TileChoiceUnion united = unite_tile_choices(g, merged);
+      carry_notes(united.replaced, book, tile_counts);
+      merged = united.root;
+      if (!changed && united.replaced.empty()) break;
+      carry_rows(rebuilt, rows);
+      carry_rows(united.replaced, rows);
+      merged = Unifier(g, options, book, rows, tile_counts, counts).run(merged);
+    }
+  };
+  generalise(FrameKinds::Alike);
   // Towers of every tier count become one recursive rule, so their
   // frames unify again.
   const SelfNesting nesting = fold_self_nesting(g, merged, book, options.tolerance);
@@ -864,6 +908,10 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
     carry_notes(nesting.rebuilt, book, tile_counts);
     merged = Unifier(g, options, book, rows, tile_counts, counts).run(nesting.root);
   }
+  // Alternatives that differ only below some of their parts become one
+  // split with choices at those parts; last, so that nested tiers are
+  // folded as recursion before their levels are joined.
+  generalise(FrameKinds::AlikeAndAlternatives);
   // The recursive rules' bodies are reached through calls, not children:
   // each step below runs on them as on the root.
   auto everywhere = [&](auto&& step) {
