@@ -5,9 +5,13 @@
 #include <gtest/gtest.h>
 
 #include "forward/derive.hpp"
+#include "graph/nodes_below.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
+#include "inverse/check.hpp"
+#include "inverse/infer.hpp"
 #include "support/derive_helpers.hpp"
+#include "support/example_helpers.hpp"
 
 namespace vern {
 namespace {
@@ -131,6 +135,68 @@ TEST(RepeatFolding, UnlikeBuildingsOfOneWidthBecomeARepeatOfTheirChoice) {
   EXPECT_EQ(choice->options[0].priority.literal(), 2.0);  // the low building, twice
   EXPECT_EQ(choice->options[1].priority.literal(), 1.0);
   EXPECT_EQ(flat(write_operation(f.g, choice->options[1].child, {})), "split(z){ ~3 : I(rect) | ~1 : nil }");
+}
+
+TEST(RepeatFolding, BaysWhoseWindowsDifferInWidthAreOneRunOfTheirChoice) {
+  // An entrance bay, then five bays of one width (3.7 m), each window
+  // drawn for its bay (1.05 to 1.15 m, piers taking the rest): no two bays
+  // alike, yet one run of bays, a repeat of a choice of the five.
+  std::string row = "a --> split(x){ ~1.3 : I(rect) | ~1.1 : I(door) | ~1.3 : I(rect)";
+  for (const double w : {1.1, 1.06, 1.14, 1.08, 1.12}) {
+    const std::string pier = std::to_string((3.7 - w) / 2);
+    row += " | ~" + pier + " : I(rect) | ~" + std::to_string(w) + " : I(window) | ~" + pier + " : I(rect)";
+  }
+  row += " }\n";
+  const Folded f = fold_text(row);
+  const auto* s = std::get_if<Split>(&f.g.op(f.body));
+  ASSERT_NE(s, nullptr) << flat(write_operation(f.g, f.body, {}));
+  ASSERT_EQ(s->parts.size(), 2u) << flat(write_operation(f.g, f.body, {}));
+  const auto* bays = std::get_if<Repeat>(&f.g.op(s->parts[1].child));
+  ASSERT_NE(bays, nullptr) << flat(write_operation(f.g, f.body, {}));
+  EXPECT_GT(*bays->size.literal(), 3.7);  // just above the bay: five bays on 18.5
+  EXPECT_LT(*bays->size.literal(), 3.74);
+  const auto* choice = std::get_if<Choose>(&f.g.op(bays->child));
+  ASSERT_NE(choice, nullptr);
+  EXPECT_EQ(choice->options.size(), 5u);
+  // Read from the phase of the bays (pier, window, pier), not a part later
+  // (window, pier, pier), whose occurrences differ in length.
+  EXPECT_EQ(flat(write_operation(f.g, choice->options[0].child, {})).find("split(x){ ~"), 0u);
+  EXPECT_NE(flat(write_operation(f.g, choice->options[0].child, {})).find("I(window) | ~"), std::string::npos);
+  // One example alone comes back as it is.
+  const Folded kept = fold_text(row, UnlikeTiles::Keep);
+  EXPECT_EQ(flat(write_operation(kept.g, kept.body, {})).find("repeat"), std::string::npos);
+}
+
+TEST(RepeatFolding, StoreysOfBaysWithAWindowDrawnForEachBayInferAsARepeatOfBays) {
+  // Every bay draws its own window width: no two bays of an example are
+  // alike, and the ground floor's entrance keeps its bays from being a
+  // row of unlike tiles. Without the run of alike bays the ground floor
+  // came back as one long split per example.
+  const Grammar source = parse_grammar(R"(
+@start front
+@scope rand(12, 30), 0.5, rand(7, 14)
+front --> split(z){ 3.4 : ground | ~1 : repeat(z, 3.4){ repeat(x, 3.7){ bay } } }
+ground --> split(x){ 3.7 : split(x){ ~1 : I(rect) | 1.6 : I(door) | ~1 : I(rect) } | ~1 : repeat(x, 3.7){ bay } }
+bay --> split(x){ ~1 : I(rect) | tnormal(1.1, 0.03, 1.02, 1.18) : split(z){ 0.9 : I(rect) | ~1 : I(window) | 0.3 : I(rect) } | ~1 : I(rect) }
+)",
+                                       "bays.grm");
+  const std::vector<Example> examples = test::derived_examples(source, 10);
+  const Inference inferred = infer(examples, {});
+  const std::string text = write_grammar(inferred.grammar);
+  // Bays repeated, never a storey written out bay by bay: no split has
+  // more parts than the door bay and a run of bays beside it.
+  EXPECT_NE(text.find("repeat(x, "), std::string::npos) << text;
+  const Grammar& g = inferred.grammar;
+  for (const Rule& rule : g.rules)
+    for (const NodeId n : nodes_below(g, rule.body)) {
+      if (const auto* s = std::get_if<Split>(&g.op(n))) {
+        EXPECT_LE(s->parts.size(), 4u) << text;
+      }
+    }
+  for (const Example& e : examples) {
+    const CheckResult r = check_example(inferred.grammar, e.boxes, example_size(e));
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << text;
+  }
 }
 
 TEST(RepeatFolding, OneExampleKeepsItsRowOfUnlikeBuildings) {

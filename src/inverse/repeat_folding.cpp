@@ -122,26 +122,28 @@ class Folder {
   // parts as they were, when there is no such row or a repeat would move
   // a cut by more than the tolerance. r is best_run(parts), which the
   // caller has already found.
-  bool segment_row(const Expr& axis, std::vector<SplitPart>& parts, const std::optional<Run>& r) {
+  bool segment_row(const Expr& axis, std::vector<SplitPart>& parts, std::optional<Run> r) {
+    // Tiles whose sizes inside differ from tile to tile (a window width
+    // drawn for each bay) repeat no run exactly: where unlike tiles may
+    // fold, the pattern is found among occurrences alike but for sizes.
+    const bool alike_tiles = unlike_ == UnlikeTiles::Fold;
+    const bool exact = r && r->period >= 2;
+    if (!exact && alike_tiles) r = alike_run(parts);
     if (!r || r->period < 2) return false;
     // An occurrence has the pattern's children and kinds of size; its
     // sizes may differ (a bay 4 m wide before the entrance, 3.4 m after).
     // A run is a sequence of occurrences equal to each other.
-    auto occurs_at = [&](std::size_t i) {
-      if (i + r->period > parts.size()) return false;
-      for (std::size_t j = 0; j < r->period; ++j) {
-        const SplitPart& a = parts[r->start + j];
-        const SplitPart& b = parts[i + j];
-        if (a.size.relative != b.size.relative || !b.size.value.literal() ||
-            !same_node(a.child, b.child))
-          return false;
-      }
-      return true;
-    };
+    auto occurs_at = [&](std::size_t i) { return alike(parts, r->start, i, r->period); };
     auto equal_copies = [&](std::size_t i, std::size_t k) {
       for (std::size_t j = 0; j < r->period; ++j)
         if (!same(parts[i + j], parts[k + j])) return false;
       return true;
+    };
+    // Occurrences of one length are one run where unlike tiles may fold:
+    // a repeat of a choice of the occurrences, which merging unites.
+    auto one_run = [&](std::size_t i, std::size_t k) {
+      return equal_copies(i, k) ||
+             (alike_tiles && std::abs(length_of(parts, i, r->period) - length_of(parts, k, r->period)) <= tol_);
     };
     struct Segment {
       std::size_t from, to, copies;  // copies: 0 for a stretch of other parts
@@ -151,7 +153,7 @@ class Folder {
     for (std::size_t i = 0; i < parts.size();) {
       if (occurs_at(i)) {
         if (!segments.empty() && segments.back().copies > 0 && segments.back().to == i &&
-            equal_copies(segments.back().from, i)) {
+            one_run(segments.back().from, i)) {
           segments.back().to += r->period;
           ++segments.back().copies;
         } else {
@@ -166,10 +168,14 @@ class Folder {
       }
     }
     if (2 * covered < parts.size() || segments.size() < 2) return false;
+    // Found among alike occurrences: only where some run repeats.
+    if (!exact && std::none_of(segments.begin(), segments.end(), [](const Segment& seg) { return seg.copies > 1; }))
+      return false;
     std::vector<SplitPart> out;
     for (const Segment& seg : segments) {
       if (seg.copies > 0) {
-        const auto folded = fold(axis, parts, Run{seg.from, r->period, seg.copies});
+        auto folded = fold(axis, parts, Run{seg.from, r->period, seg.copies});
+        if (!folded && alike_tiles) folded = fold_alike(axis, parts, Run{seg.from, r->period, seg.copies});
         if (!folded) return false;
         out.push_back(*folded);
       } else if (seg.to - seg.from == 1) {
@@ -190,6 +196,69 @@ class Folder {
     }
     parts = std::move(out);
     return true;
+  }
+
+  // The length of parts[i, i + period), all literal.
+  static double length_of(const std::vector<SplitPart>& parts, std::size_t i, std::size_t period) {
+    double length = 0;
+    for (std::size_t j = 0; j < period; ++j) length += *parts[i + j].size.value.literal();
+    return length;
+  }
+
+  // Do parts[a, a + period) and parts[b, b + period) hold the same
+  // children with the same kinds of size, whatever the sizes?
+  bool alike(const std::vector<SplitPart>& parts, std::size_t a, std::size_t b, std::size_t period) const {
+    if (b + period > parts.size()) return false;
+    for (std::size_t j = 0; j < period; ++j) {
+      const SplitPart& x = parts[a + j];
+      const SplitPart& y = parts[b + j];
+      if (x.size.relative != y.size.relative || !x.size.value.literal() || !y.size.value.literal() ||
+          !same_node(x.child, y.child))
+        return false;
+    }
+    return true;
+  }
+
+  // The run of consecutive alike occurrences of a pattern of two parts or
+  // more whose occurrences most often come in a row of one length: the
+  // tiles' own phase (wall, window, wall), not the same run read a part
+  // later (window, wall, wall), whose occurrences' lengths differ where
+  // the windows do. Then the longest, the shortest pattern, the leftmost.
+  std::optional<Run> alike_run(const std::vector<SplitPart>& parts) const {
+    std::optional<Run> best;
+    std::size_t best_tiled = 0;
+    for (std::size_t start = 0; start < parts.size(); ++start) {
+      for (std::size_t period = 2; period <= kMaxPeriod && start + 2 * period <= parts.size(); ++period) {
+        std::size_t k = 1;
+        while (alike(parts, start, start + k * period, period)) ++k;
+        if (k < 2) continue;
+        // Occurrences with a neighbour of the same length.
+        std::size_t tiled = 0;
+        for (std::size_t c = 0; c < k; ++c) {
+          const double here = length_of(parts, start + c * period, period);
+          const bool before = c > 0 && std::abs(length_of(parts, start + (c - 1) * period, period) - here) <= tol_;
+          const bool after = c + 1 < k && std::abs(length_of(parts, start + (c + 1) * period, period) - here) <= tol_;
+          if (before || after) ++tiled;
+        }
+        const Run r{start, period, k};
+        if (!best || tiled > best_tiled ||
+            (tiled == best_tiled && (r.parts() > best->parts() || (r.parts() == best->parts() && r.period < best->period)))) {
+          best = r;
+          best_tiled = tiled;
+        }
+      }
+    }
+    return best;
+  }
+
+  // A run of occurrences of one length whose sizes inside differ: a
+  // repeat of a choice of them (fold_tiles), every cut where it was.
+  std::optional<SplitPart> fold_alike(const Expr& axis, const std::vector<SplitPart>& parts, const Run& r) {
+    std::vector<double> at{0};
+    for (std::size_t i = r.start; i < r.start + r.parts(); ++i) at.push_back(at.back() + *parts[i].size.value.literal());
+    std::vector<std::size_t> starts;
+    for (std::size_t c = 0; c <= r.copies; ++c) starts.push_back(c * r.period);
+    return fold_tiles(axis, parts, r.start, at, starts, at.back() / static_cast<double>(r.copies));
   }
 
   // The parts [from, to) as one split of relative sizes (their lengths).

@@ -21,6 +21,15 @@
 // empty space are joined into one empty part instead. A split left with a
 // single relative part is that part's operation.
 //
+// Tiles alike but for their sizes (UnlikeTiles::Fold): where no run of
+// equal parts is found, a row whose pattern recurs with the same children
+// and kinds of size but other sizes (bays whose windows were each drawn
+// their own width) is read in the phase where most occurrences have a
+// neighbour of the same length, and each run of occurrences of one length
+// becomes repeat(axis, tile){ choose{ the occurrences } }, beside the
+// stretches between runs as above. Merging then unites the occurrences
+// into one bay whose sizes range over theirs.
+//
 // Rows of unlike things (UnlikeTiles::Fold): where no such run covers a
 // split, equal tiles holding different buildings become
 //   repeat(axis, tile){ choose{ what the tiles held, weighted by count } }
