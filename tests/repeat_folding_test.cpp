@@ -10,21 +10,15 @@
 #include "graph/writer.hpp"
 #include "inverse/check.hpp"
 #include "inverse/infer.hpp"
+#include "support/one_line.hpp"
 #include "support/derive_helpers.hpp"
 #include "support/example_helpers.hpp"
 
 namespace vern {
 namespace {
 
-// A grammar's text on one line: runs of white space as one space.
-std::string flat(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    const bool space = c == ' ' || c == '\n';
-    if (!(space && !out.empty() && out.back() == ' ')) out += space ? ' ' : c;
-  }
-  return out;
-}
+// A grammar's text on one line (support/one_line.hpp).
+constexpr auto flat = test::one_line;
 
 // Folds the start rule's body of a grammar text; returns the result written.
 std::string folded(const std::string& text, double tolerance = 1e-6) {

@@ -5,6 +5,7 @@
 #include "inverse/equal_options.hpp"
 #include "inverse/fit_distribution.hpp"
 #include "inverse/generalise.hpp"
+#include "inverse/inset_runs.hpp"
 #include "inverse/repeat_folding.hpp"
 #include "inverse/sample_book.hpp"
 #include "inverse/size_clusters.hpp"
@@ -865,7 +866,10 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   std::vector<NodeId> folded;
   const UnlikeTiles unlike = roots.size() > 1 ? UnlikeTiles::Fold : UnlikeTiles::Keep;
   TileCounts tile_counts;
-  for (NodeId r : roots) folded.push_back(fold_repeats(g, r, options.tolerance, unlike, &tile_counts));
+  // Tiers set in step by step are nested first (inset_runs.hpp), so that
+  // recursion is found below and no run of them is read as tiles.
+  for (NodeId r : roots)
+    folded.push_back(fold_repeats(g, nest_inset_runs(g, r, options.tolerance), options.tolerance, unlike, &tile_counts));
   Choose all;
   for (NodeId r : folded) all.options.push_back({Expr{}, Expr::number(1.0), r});
   const NodeId examples = g.intern({std::move(all), {}});
