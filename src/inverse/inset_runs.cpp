@@ -1,6 +1,7 @@
 #include "inverse/inset_runs.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -44,10 +45,15 @@ class Nester {
 
   static std::optional<double> length(const SplitPart& p) { return p.size.value.literal(); }
 
-  // nil | X | nil along an axis other than `not_axis`: the axis, the two
-  // margins and X.
-  std::optional<std::tuple<std::uint8_t, double, double, NodeId, double>> margins_of(NodeId id,
-                                                                                     std::uint8_t not_axis) const {
+  // Empty space at both ends of one axis around what it holds.
+  struct Margins {
+    std::uint8_t axis = 0;
+    double lo = 0, hi = 0;
+    NodeId held = 0;
+  };
+
+  // nil | X | nil along an axis other than `not_axis`.
+  std::optional<Margins> margins_of(NodeId id, std::uint8_t not_axis) const {
     const auto* s = std::get_if<Split>(&g_.op(id));
     if (!s || s->parts.size() != 3) return std::nullopt;
     const auto axis = s->axis.literal_axis();
@@ -55,21 +61,20 @@ class Nester {
     const auto lo = length(s->parts[0]), mid = length(s->parts[1]), hi = length(s->parts[2]);
     if (!lo || !mid || !hi || !is_nil(s->parts[0].child) || !is_nil(s->parts[2].child) || is_nil(s->parts[1].child))
       return std::nullopt;
-    return std::tuple{*axis, *lo, *hi, s->parts[1].child, *mid};
+    return Margins{*axis, *lo, *hi, s->parts[1].child};
   }
 
-  // The part's child as an inset across the split's axis a.
+  // The part's child as an inset across the split's axis a: margins on one
+  // axis, and on a second where what they hold has margins of its own.
   std::optional<Inset> inset_of(NodeId id, std::uint8_t a) const {
     const auto outer = margins_of(id, a);
     if (!outer) return std::nullopt;
-    const auto [b, lo, hi, middle, mid] = *outer;
-    (void)mid;
-    Inset in{b, std::nullopt, {lo, hi}, middle};
-    if (const auto inner = margins_of(middle, a); inner && std::get<0>(*inner) != b) {
-      in.c = std::get<0>(*inner);
-      in.margins.push_back(std::get<1>(*inner));
-      in.margins.push_back(std::get<2>(*inner));
-      in.held = std::get<3>(*inner);
+    Inset in{outer->axis, std::nullopt, {outer->lo, outer->hi}, outer->held};
+    if (const auto inner = margins_of(outer->held, a); inner && inner->axis != outer->axis) {
+      in.c = inner->axis;
+      in.margins.push_back(inner->lo);
+      in.margins.push_back(inner->hi);
+      in.held = inner->held;
     }
     return in;
   }
