@@ -236,6 +236,98 @@ std::pair<std::vector<double>, std::vector<double>> paired(const std::vector<dou
   return out;
 }
 
+// One split of a region as the examples ran it.
+struct SplitLengths {
+  std::vector<std::vector<double>> length, value;  // per part, per example (kAbsent where not run)
+  std::vector<bool> random, relative;              // per part: its size draws; it is a share
+  std::size_t present = 0;                         // examples that ran it
+};
+
+// Shares that are metres (issue 23, items 1 and 2). Merging writes a part
+// whose length varies as a share of its container; but a part that is,
+// to the tolerance, a straight line in metres of another size drawn in
+// the derivation (a tower 1.5 times its podium's height plus 6 m, the
+// nave 3.5 m above the aisles' walls, in another split) is metres: its
+// share of a container that varies on its own says nothing. Both are then
+// read in metres, leader and follower, where the shares do not say the
+// same already (two parts of one split in one proportion, or containers
+// that do not vary, are shares), and as long as every split keeps a share
+// to take the rest. The lines
+// themselves are then found, as any other, by the region's fit below.
+std::vector<std::pair<std::size_t, std::size_t>> read_in_metres(const std::vector<SplitLengths>& at,
+                                                                std::size_t min_examples, double tolerance) {
+  std::vector<std::pair<std::size_t, std::size_t>> order;  // varying parts, in derivation order
+  for (std::size_t o = 0; o < at.size(); ++o)
+    if (at[o].present > 0)
+      for (std::size_t i = 0; i < at[o].random.size(); ++i)
+        if (at[o].random[i]) order.push_back({o, i});
+  std::vector<std::vector<bool>> metres(at.size());
+  std::vector<std::size_t> shares(at.size(), 0);
+  for (std::size_t o = 0; o < at.size(); ++o) {
+    metres[o].assign(at[o].random.size(), false);
+    shares[o] = static_cast<std::size_t>(std::ranges::count(at[o].relative, true));
+  }
+  // A share of its split: its length over the split's shares' lengths.
+  auto share_of = [&](std::size_t o, std::size_t i) {
+    std::vector<double> out(at[o].length[i].size(), kAbsent);
+    for (std::size_t e = 0; e < out.size(); ++e) {
+      double sum = 0;
+      for (std::size_t k = 0; k < at[o].relative.size(); ++k)
+        if (at[o].relative[k]) sum += at[o].length[k][e];
+      if (sum > 0) out[e] = at[o].length[i][e] / sum;
+    }
+    return out;
+  };
+  // The longest a split ran, over the examples.
+  auto longest = [&](std::size_t o) {
+    const std::size_t examples = at[o].length.empty() ? 0 : at[o].length[0].size();
+    double out = 1;
+    for (std::size_t e = 0; e < examples; ++e) {
+      double sum = 0;
+      for (const auto& part : at[o].length) sum += std::isnan(part[e]) ? 0 : part[e];
+      out = std::max(out, sum);
+    }
+    return out;
+  };
+  auto exact_line = [&](const std::vector<double>& xs, const std::vector<double>& ys, double tol) {
+    const auto [x, y] = paired(xs, ys);
+    if (x.size() < min_examples || !shows_a_line(x, tol)) return false;
+    const Fit f = line_fit(x, y);
+    return worst_miss(x, y, f.a, f.b) <= tol / 4;
+  };
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  for (std::size_t q = 0; q < order.size(); ++q) {
+    const auto [qo, qi] = order[q];
+    if (!at[qo].relative[qi] || metres[qo][qi]) continue;
+    for (std::size_t p = 0; p < order.size(); ++p) {
+      if (p == q) continue;
+      const auto [po, pi] = order[p];
+      const bool p_share = at[po].relative[pi] && !metres[po][pi];
+      // Each split keeps a share to take its rest.
+      const std::size_t leaving_q = 1 + (p_share && po == qo ? 1 : 0);
+      if (shares[qo] <= leaving_q || (p_share && po != qo && shares[po] <= 1)) continue;
+      if (!exact_line(at[po].length[pi], at[qo].length[qi], tolerance)) continue;
+      // Where the shares say the same (containers that do not vary, or
+      // two parts of one split in one proportion), they stay shares.
+      // A share misses by its miss in metres over its container's length;
+      // staying a share needs the tolerance only, not a quarter of it: the
+      // shares' lengths carry the rounding of every part they sum.
+      const double share_tolerance = 4 * tolerance / std::max(longest(po), longest(qo));
+      if (exact_line(p_share ? share_of(po, pi) : at[po].length[pi], share_of(qo, qi), share_tolerance)) continue;
+      metres[qo][qi] = true;
+      --shares[qo];
+      out.push_back({qo, qi});
+      if (p_share) {
+        metres[po][pi] = true;
+        --shares[po];
+        out.push_back({po, pi});
+      }
+      break;
+    }
+  }
+  return out;
+}
+
 // The support a parameter's distribution gives it.
 std::pair<double, double> support(const Distribution& d) {
   switch (d.kind) {
@@ -290,6 +382,36 @@ class Joiner {
     const std::size_t n = rows.size();
 
     // Per occurrence: per part, its length in each example.
+    std::vector<SplitLengths> at(r.splits.size());
+    for (std::size_t o = 0; o < r.splits.size(); ++o) {
+      const Split split = std::get<Split>(g_.op(r.splits[o].split));
+      const std::size_t parts = split.parts.size();
+      SplitLengths& s = at[o];
+      s.length.assign(parts, std::vector<double>(n, kAbsent));
+      s.value = s.length;
+      s.random.assign(parts, false);
+      s.relative.assign(parts, false);
+      for (std::size_t i = 0; i < parts; ++i) {
+        s.random[i] = split.parts[i].size.value.draws_random();
+        s.relative[i] = split.parts[i].size.relative;
+      }
+      for (std::size_t e = 0; e < n; ++e) {
+        if (!rows[e][o]) continue;
+        ++s.present;
+        std::vector<int> count(parts, 0);
+        for (const MatchedPart& m : *rows[e][o]) {
+          if (m.part >= parts) return std::nullopt;
+          ++count[m.part];
+          s.length[m.part][e] = m.length;
+          s.value[m.part][e] = m.value;
+        }
+        for (std::size_t i = 0; i < parts; ++i)
+          if (count[i] != (s.random[i] ? 1 : 0)) return std::nullopt;  // run twice, or not lined up
+      }
+    }
+    // Shares that are metres: they leave the shares (see read_in_metres).
+    for (const auto& [o, i] : read_in_metres(at, opt_.min_examples, opt_.tolerance)) at[o].relative[i] = false;
+
     std::vector<Quantity> quantities;
     std::vector<std::vector<std::optional<Linear>>> formula(r.splits.size());
     struct Rest {
@@ -298,30 +420,17 @@ class Joiner {
     };
     std::vector<Rest> rests;
     for (std::size_t o = 0; o < r.splits.size(); ++o) {
-      const Split split = std::get<Split>(g_.op(r.splits[o].split));
-      const std::size_t parts = split.parts.size();
+      SplitLengths& s = at[o];
+      const std::size_t parts = s.random.size();
       formula[o].resize(parts);
-      std::vector<std::vector<double>> length(parts, std::vector<double>(n, kAbsent)), value = length;
-      std::vector<bool> random(parts, false);
-      for (std::size_t i = 0; i < parts; ++i) random[i] = split.parts[i].size.value.draws_random();
-      std::size_t present = 0;
-      for (std::size_t e = 0; e < n; ++e) {
-        if (!rows[e][o]) continue;
-        ++present;
-        std::vector<int> count(parts, 0);
-        for (const MatchedPart& m : *rows[e][o]) {
-          if (m.part >= parts) return std::nullopt;
-          ++count[m.part];
-          length[m.part][e] = m.length;
-          value[m.part][e] = m.value;
-        }
-        for (std::size_t i = 0; i < parts; ++i)
-          if (count[i] != (random[i] ? 1 : 0)) return std::nullopt;  // run twice, or not lined up
-      }
-      if (present == 0) continue;  // an alternative no example took: left as it is
+      if (s.present == 0) continue;  // an alternative no example took: left as it is
+      const auto& length = s.length;
+      auto& value = s.value;
+      const auto& random = s.random;
+      const std::size_t present = s.present;
       std::vector<std::size_t> relative, relative_random;
       for (std::size_t i = 0; i < parts; ++i) {
-        if (!split.parts[i].size.relative) continue;
+        if (!s.relative[i]) continue;
         relative.push_back(i);
         if (random[i]) relative_random.push_back(i);
       }
@@ -345,8 +454,8 @@ class Joiner {
       for (std::size_t i = 0; i < parts; ++i) {
         if (!random[i] || (shares_only && i == relative.back())) continue;
         // A lone relative part takes the rest whatever its size says.
-        if (split.parts[i].size.relative && relative.size() == 1) continue;
-        quantities.push_back({o, i, split.parts[i].size.relative, split.parts[i].size.relative ? value[i] : length[i]});
+        if (s.relative[i] && relative.size() == 1) continue;
+        quantities.push_back({o, i, s.relative[i], s.relative[i] ? value[i] : length[i]});
       }
     }
 
@@ -448,8 +557,7 @@ class Joiner {
       for (std::size_t i = 0; i < formula[rest.occurrence].size(); ++i) {
         const auto& other = formula[rest.occurrence][i];
         if (i == rest.part || !other) continue;
-        const Size& size = std::get<Split>(g_.op(r.splits[rest.occurrence].split)).parts[i].size;
-        if (!size.relative) continue;
+        if (!at[rest.occurrence].relative[i]) continue;
         f.c0 -= other->c0;
         for (std::size_t k = 0; k < other->c.size(); ++k) f.add(k, -other->c[k]);
       }
@@ -509,7 +617,7 @@ class Joiner {
           // drawn in place.
           else renamed.draws.push_back(distribution_expr(short_decimals(drawn[k], opt_.tolerance / 4)));
         }
-        sizes[o][i] = Size{linear_expr(renamed), split.parts[i].size.relative};
+        sizes[o][i] = Size{linear_expr(renamed), at[o].relative[i]};
       }
     }
     const NodeId body = regions.rebuild(r.root, sizes, names);
