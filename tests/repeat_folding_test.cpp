@@ -73,6 +73,24 @@ TEST(RepeatFolding, ARowOfCompoundTilesAroundAnEntranceIsRunsAndTheEntrance) {
   EXPECT_EQ(folded(mixed).find("repeat"), std::string::npos) << folded(mixed);
 }
 
+TEST(RepeatFolding, BaysOfFiveOrMorePartsAroundAnEntranceAreRunsAndTheEntrance) {
+  // Bays of a pier, two panes with a mullion between, and a pier: five
+  // parts a bay, two bays before the entrance and three after, as a
+  // random style's storeys drew them. Patterns were looked for up to four
+  // parts, so the row stayed one long split in every example.
+  const std::string bay = "~1.5 : I(rect) | ~0.5 : I(pane) | ~0.25 : I(mullion) | ~0.5 : I(pane) | ~1.5 : I(rect)";
+  const std::string out =
+      folded("a --> split(x){ " + bay + " | " + bay + " | ~1.5 : I(rect) | ~1 : I(loggia) | ~1.5 : I(rect) | " +
+             bay + " | " + bay + " | " + bay + " }\n");
+  const std::string tile =
+      "split(x){ ~1.5 : I(rect) | ~0.5 : I(pane) | ~0.25 : I(mullion) | ~0.5 : I(pane) | ~1.5 : I(rect) }";
+  EXPECT_NE(out.find("a --> split(x){ ~8.5 : repeat(x, 4.27){ " + tile +
+                     " } | ~4 : split(x){ ~1.5 : I(rect) | ~1 : I(loggia) | ~1.5 : I(rect) } | ~12.75 : "
+                     "repeat(x, 4.27){ " + tile + " } }"),
+            std::string::npos)
+      << out;
+}
+
 TEST(RepeatFolding, NoiseWithinTheToleranceFoldsAndTheResultDerivesTheSameCuts) {
   const std::string text =
       "a --> split(x){ ~2.0000001 : I(w) | ~1.9999999 : I(w) | ~2.0000002 : I(w) | ~1.9999998 : I(w) }\n";

@@ -130,43 +130,68 @@ class Folder {
     const bool exact = r && r->period >= 2;
     if (!exact && alike_tiles) r = alike_run(parts);
     if (!r || r->period < 2) return false;
-    // An occurrence has the pattern's children and kinds of size; its
-    // sizes may differ (a bay 4 m wide before the entrance, 3.4 m after).
-    // A run is a sequence of occurrences equal to each other.
-    auto occurs_at = [&](std::size_t i) { return alike(parts, r->start, i, r->period); };
-    auto equal_copies = [&](std::size_t i, std::size_t k) {
-      for (std::size_t j = 0; j < r->period; ++j)
-        if (!same(parts[i + j], parts[k + j])) return false;
-      return true;
-    };
-    // Occurrences of one length are one run where unlike tiles may fold:
-    // a repeat of a choice of the occurrences, which merging unites.
-    auto one_run = [&](std::size_t i, std::size_t k) {
-      return equal_copies(i, k) ||
-             (alike_tiles && std::abs(length_of(parts, i, r->period) - length_of(parts, k, r->period)) <= tol_);
-    };
+    // The row cut into runs of occurrences and stretches between them,
+    // for the pattern as run r reads it.
     struct Segment {
       std::size_t from, to, copies;  // copies: 0 for a stretch of other parts
     };
-    std::vector<Segment> segments;
-    std::size_t covered = 0;
-    for (std::size_t i = 0; i < parts.size();) {
-      if (occurs_at(i)) {
-        if (!segments.empty() && segments.back().copies > 0 && segments.back().to == i &&
-            one_run(segments.back().from, i)) {
-          segments.back().to += r->period;
-          ++segments.back().copies;
+    struct Row {
+      std::vector<Segment> segments;
+      std::size_t covered = 0;  // parts in occurrences
+    };
+    auto segment = [&](const Run& run) {
+      // An occurrence has the pattern's children and kinds of size; its
+      // sizes may differ (a bay 4 m wide before the entrance, 3.4 m
+      // after). A run is a sequence of occurrences equal to each other.
+      auto occurs_at = [&](std::size_t i) { return alike(parts, run.start, i, run.period); };
+      auto equal_copies = [&](std::size_t i, std::size_t k) {
+        for (std::size_t j = 0; j < run.period; ++j)
+          if (!same(parts[i + j], parts[k + j])) return false;
+        return true;
+      };
+      // Occurrences of one length are one run where unlike tiles may
+      // fold: a repeat of a choice of the occurrences, which merging
+      // unites.
+      auto one_run = [&](std::size_t i, std::size_t k) {
+        return equal_copies(i, k) ||
+               (alike_tiles && std::abs(length_of(parts, i, run.period) - length_of(parts, k, run.period)) <= tol_);
+      };
+      Row row;
+      auto& segments = row.segments;
+      for (std::size_t i = 0; i < parts.size();) {
+        if (occurs_at(i)) {
+          if (!segments.empty() && segments.back().copies > 0 && segments.back().to == i &&
+              one_run(segments.back().from, i)) {
+            segments.back().to += run.period;
+            ++segments.back().copies;
+          } else {
+            segments.push_back({i, i + run.period, 1});
+          }
+          row.covered += run.period;
+          i += run.period;
         } else {
-          segments.push_back({i, i + r->period, 1});
+          if (!segments.empty() && segments.back().copies == 0) ++segments.back().to;
+          else segments.push_back({i, i + 1, 0});
+          ++i;
         }
-        covered += r->period;
-        i += r->period;
-      } else {
-        if (!segments.empty() && segments.back().copies == 0) ++segments.back().to;
-        else segments.push_back({i, i + 1, 0});
-        ++i;
       }
+      return row;
+    };
+    // The pattern in the tiles' own phase: a bay whose piers share a
+    // label with the entrance's walls (pier, panes, pier) is also read a
+    // part later (pier, pier, panes), and that phase may repeat as often.
+    // Of the pattern's phases, the one whose occurrences cover the most
+    // of the row, in the fewest segments.
+    Row row = segment(*r);
+    for (std::size_t shift = 1; shift < r->period; ++shift) {
+      const Run turned{r->start + shift, r->period, 0};
+      if (!alike(parts, turned.start, turned.start + turned.period, turned.period)) continue;
+      Row other = segment(turned);
+      if (other.covered > row.covered || (other.covered == row.covered && other.segments.size() < row.segments.size()))
+        row = std::move(other);
     }
+    const std::vector<Segment>& segments = row.segments;
+    const std::size_t covered = row.covered;
     if (2 * covered < parts.size() || segments.size() < 2) return false;
     // Found among alike occurrences: only where some run repeats.
     if (!exact && std::none_of(segments.begin(), segments.end(), [](const Segment& seg) { return seg.copies > 1; }))
@@ -473,7 +498,7 @@ class Folder {
     return g_.intern({Split{s.axis, std::move(parts)}, {}});
   }
 
-  static constexpr std::size_t kMaxPeriod = 4;
+  static constexpr std::size_t kMaxPeriod = 8;
   static constexpr std::size_t kMaxPartsPerTile = 16;
   static constexpr NodeId kNotYet = static_cast<NodeId>(-1);
   Grammar& g_;
