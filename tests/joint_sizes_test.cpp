@@ -299,5 +299,48 @@ TEST(JointSizes, SharesWhoseMetresFollowAnotherPartAreReadInMetres) {
   }
 }
 
+// A shop front with its door after zero to three bays, and storeys of
+// windows whose loggia stands above the door: the storeys repeat, so the
+// loggia's place is a size inside a repeat that follows one outside it.
+constexpr const char* kLoggiaOverTheDoor = R"(
+@scope rand(20, 40), 1, rand(10, 16)
+f --> b(randint(0, 3))
+b(k) --> split(z){ 4 : floor0(k) | ~1 : repeat(z, 3){ floor1(k) } }
+floor0(k) --> split(x){ 4.3 * k : repeatN(x, k){ shop } | 4.3 : door | ~1 : repeat(x, 4.3){ shop } }
+floor1(k) --> split(x){ 4.3 * k : repeatN(x, k){ win } | 4.3 : accent | ~1 : repeat(x, 4.3){ win } }
+shop --> split(x){ ~1 : I(pier) | 3 : I(shopfront) | ~1 : I(pier) }
+door --> split(x){ ~1 : I(wall) | 1.5 : I(door) | ~1 : I(wall) }
+win --> split(x){ ~1 : I(wall) | 1.5 : I(window) | ~1 : I(wall) }
+accent --> split(x){ ~1 : I(wall) | 1.5 : I(loggia) | ~1 : I(wall) }
+)";
+
+// Variants of g, out of 100, with a loggia not above the door.
+std::size_t loggias_astray(const Grammar& g) {
+  std::size_t astray = 0, measured = 0;
+  for (std::uint64_t seed = 1001; seed <= 1100; ++seed) {
+    const std::vector<LabelledBox> parts = test::derived_parts(derive_seed(g, seed));
+    std::optional<double> door;
+    for (const LabelledBox& b : parts)
+      if (b.label == "door") door = b.min.x;
+    if (!door) continue;
+    ++measured;
+    for (const LabelledBox& b : parts)
+      if (b.label == "loggia" && std::abs(b.min.x - *door) > 1e-6) {
+        ++astray;
+        break;
+      }
+  }
+  EXPECT_GE(measured, 90u) << write_grammar(g);
+  return astray;
+}
+
+TEST(JointSizes, ASizeEveryTileKeepsFollowsASizeOutsideTheRepeat) {
+  const Inference joint = inferred_from(kLoggiaOverTheDoor, true);
+  expect_every_example_derivable(kLoggiaOverTheDoor, joint.grammar);
+  EXPECT_EQ(loggias_astray(joint.grammar), 0u) << write_grammar(joint.grammar);
+  const Inference apart = inferred_from(kLoggiaOverTheDoor, false);
+  EXPECT_GT(loggias_astray(apart.grammar), 10u) << write_grammar(apart.grammar);
+}
+
 }  // namespace
 }  // namespace vern

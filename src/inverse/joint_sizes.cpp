@@ -37,6 +37,7 @@ bool varies(const std::vector<double>& x, double tolerance) {
 struct Occurrence {
   std::uint64_t path = 0;
   NodeId split = 0;
+  bool tiled = false;  // inside a repeat: it runs once per tile
 };
 
 struct Region {
@@ -92,7 +93,7 @@ class Regions {
     const NodeId body = g.rules[g.start_rule].body;
     regions_.push_back({body, g.start_rule, {}});
     std::vector<std::size_t> open{0};
-    collect(body, 0, 0, open, g.start_rule);
+    collect(body, 0, 0, open, g.start_rule, false);
     if (steps_ > kMaxSteps) regions_.clear();
   }
 
@@ -120,8 +121,10 @@ class Regions {
 
   // `open`: the regions the node lies in, outermost first. An alternative
   // of a choice is a region of its own and stays in the ones around it:
-  // its sizes may follow sizes outside the choice.
-  void collect(NodeId id, std::uint64_t parent, std::uint32_t slot, std::vector<std::size_t>& open, RuleId rule) {
+  // its sizes may follow sizes outside the choice. `tiled`: the node lies
+  // inside a repeat (each tile runs it; all tiles have one path).
+  void collect(NodeId id, std::uint64_t parent, std::uint32_t slot, std::vector<std::size_t>& open, RuleId rule,
+               bool tiled) {
     // Every place a node runs is visited: calls and alternatives of
     // shared rules multiply, so the walk stops at a bound.
     if (++steps_ > kMaxSteps) return;
@@ -130,25 +133,29 @@ class Regions {
     const Operation& op = g_.op(id);
     if (const auto* s = std::get_if<Split>(&op)) {
       if (draws(*s))
-        for (std::size_t r : open) regions_[r].splits.push_back({path, id});
+        for (std::size_t r : open) regions_[r].splits.push_back({path, id, tiled});
       for (std::size_t i = 0; i < s->parts.size(); ++i)
-        collect(s->parts[i].child, path, static_cast<std::uint32_t>(i + 1), open, rule);
+        collect(s->parts[i].child, path, static_cast<std::uint32_t>(i + 1), open, rule, tiled);
     } else if (const auto* c = std::get_if<Call>(&op)) {
-      if (enters(*c)) collect(g_.rules[c->rule].body, path, 0, open, c->rule);
+      if (enters(*c)) collect(g_.rules[c->rule].body, path, 0, open, c->rule, tiled);
     } else if (const auto* ch = std::get_if<Choose>(&op)) {
       for (std::size_t j = 0; j < ch->options.size(); ++j) {
         const std::size_t inner = regions_.size();
         regions_.push_back({ch->options[j].child, rule, {}, open.back()});
         open.push_back(inner);
-        collect(ch->options[j].child, path, static_cast<std::uint32_t>(j + 1), open, rule);
+        collect(ch->options[j].child, path, static_cast<std::uint32_t>(j + 1), open, rule, tiled);
         open.pop_back();
       }
     } else if (std::holds_alternative<Translate>(op) || std::holds_alternative<Scale>(op) ||
                std::holds_alternative<Rotate>(op)) {
-      collect(node_children(op)[0], path, 0, open, rule);
+      collect(node_children(op)[0], path, 0, open, rule, tiled);
+    } else if (std::holds_alternative<Repeat>(op) || std::holds_alternative<RepeatN>(op)) {
+      // Tiles draw anew, but a size every tile of a building shows the
+      // same (the storeys' door bay above the ground floor's) may follow
+      // a size outside: region() keeps such sizes and leaves the others.
+      collect(node_children(op)[0], path, 0, open, rule, true);
     }
-    // Repeats draw anew per tile and comps' faces are not lined up: a
-    // region stops there.
+    // Comps' faces are not lined up: a region stops there.
   }
 
   NodeId rebuild(NodeId id, const std::vector<std::vector<std::optional<Size>>>& sizes, std::size_t& next) {
@@ -180,7 +187,7 @@ class Regions {
       return g_.intern({Call{called, std::move(args)}, loc});
     }
     if (std::holds_alternative<Translate>(op) || std::holds_alternative<Scale>(op) ||
-        std::holds_alternative<Rotate>(op)) {
+        std::holds_alternative<Rotate>(op) || std::holds_alternative<Repeat>(op) || std::holds_alternative<RepeatN>(op)) {
       NodeId* child = child_slots(op)[0];
       *child = rebuild(*child, sizes, next);
       return kept(id, std::move(op), loc);
@@ -328,6 +335,21 @@ std::vector<std::pair<std::size_t, std::size_t>> read_in_metres(const std::vecto
   return out;
 }
 
+// The values of a size written choice(v1, v2, ...), or none.
+std::optional<std::vector<double>> choice_values(const Expr& e) {
+  const ExprNode& root = e.node(e.root());
+  if (root.kind != ExprKind::Call || static_cast<Function>(root.op) != Function::Choice ||
+      e.nodes().size() != std::size_t{root.argc} + 1)
+    return std::nullopt;
+  std::vector<double> out;
+  for (std::size_t i = 0; i + 1 < e.nodes().size(); ++i) {
+    if (e.node(i).kind != ExprKind::Number) return std::nullopt;
+    out.push_back(e.node(i).number);
+  }
+  std::ranges::sort(out);
+  return out;
+}
+
 // The support a parameter's distribution gives it.
 std::pair<double, double> support(const Distribution& d) {
   switch (d.kind) {
@@ -395,18 +417,35 @@ class Joiner {
         s.random[i] = split.parts[i].size.value.draws_random();
         s.relative[i] = split.parts[i].size.relative;
       }
+      // Inside a repeat, each tile runs the split: its sizes are one
+      // building's where every tile shows the same, and some building
+      // shows two tiles or more; else the tiles draw anew, and the split
+      // is left as it is.
+      bool kept = true, seen_twice = false;
       for (std::size_t e = 0; e < n; ++e) {
         if (!rows[e][o]) continue;
         ++s.present;
         std::vector<int> count(parts, 0);
         for (const MatchedPart& m : *rows[e][o]) {
           if (m.part >= parts) return std::nullopt;
-          ++count[m.part];
+          if (count[m.part]++ > 0) {
+            kept = kept && std::abs(m.length - s.length[m.part][e]) <= opt_.tolerance &&
+                   std::abs(m.value - s.value[m.part][e]) <= opt_.tolerance;
+            seen_twice = true;
+            continue;
+          }
           s.length[m.part][e] = m.length;
           s.value[m.part][e] = m.value;
         }
-        for (std::size_t i = 0; i < parts; ++i)
+        for (std::size_t i = 0; i < parts; ++i) {
+          if (r.splits[o].tiled && s.random[i] && count[i] >= 1) continue;
           if (count[i] != (s.random[i] ? 1 : 0)) return std::nullopt;  // run twice, or not lined up
+        }
+      }
+      if (r.splits[o].tiled && (!kept || !seen_twice)) {
+        s.present = 0;
+        for (auto& l : s.length) std::ranges::fill(l, kAbsent);
+        for (auto& v : s.value) std::ranges::fill(v, kAbsent);
       }
     }
     // Shares that are metres: they leave the shares (see read_in_metres).
@@ -493,6 +532,13 @@ class Joiner {
         Fit t;
         if (x.size() >= opt_.min_examples && shows_a_line(x, opt_.tolerance)) {
           t = line_fit(x, y);
+        } else if (x.size() >= opt_.min_examples && varies(x, opt_.tolerance) &&
+                   worst_miss(x, y, 0, 1) <= opt_.tolerance / 4) {
+          // Two values seen (a door bay after two or three bays), and the
+          // other size equal to it in every example: no line shows
+          // through two values, but equality needs none.
+          t.b = 1;
+          t.r = 1;
         } else if (n < opt_.min_examples && x.size() >= opt_.min_equal && varies(x, opt_.tolerance)) {
           // Only equality is evidence from so few, and only where there
           // are no more to see: in a region seen more often, a pair that
@@ -540,7 +586,16 @@ class Joiner {
       for (double v : seen_values) obs.push_back({v, 1});
       leaders.push_back(q);
       leader_param.push_back(drawn.size());
-      drawn.push_back(fit_distribution(obs, fit));
+      // A size merging wrote as a choice of values (pooled over every
+      // place the same piece stood: a door bay after one, two or three
+      // bays) keeps it, where the region's examples took only those; a
+      // region's few examples would fit a range.
+      const SplitPart& written = std::get<Split>(g_.op(r.splits[Q.occurrence].split)).parts[Q.part];
+      const auto choices = written.size.relative == Q.relative ? choice_values(written.size.value) : std::nullopt;
+      const bool among = choices && std::ranges::all_of(seen_values, [&](double v) {
+                           return std::ranges::any_of(*choices, [&](double c) { return std::abs(c - v) <= opt_.tolerance; });
+                         });
+      drawn.push_back(among ? Distribution{DistributionKind::Choice, *choices} : fit_distribution(obs, fit));
       drawn_values.push_back(seen_values);
       drawn_at.push_back(Q.occurrence);
       f.add(leader_param.back(), 1);
