@@ -41,6 +41,24 @@ TEST(FitDistribution, RepeatedValuesAreAChoice) {
   expect_support_holds(d, v);
 }
 
+TEST(FitDistribution, WholeBaysAreAChoiceOfEveryPointOfTheirRow) {
+  // A door bay after one, two, four or five bays of 4.3 m, over seven
+  // examples: the row's points, 12.9 m too (no example had three bays),
+  // not a range, nor the four values seen.
+  std::vector<Observation> v;
+  for (const double x : {4.3, 8.6, 17.2, 21.5, 4.3, 8.6, 17.2}) v.push_back({x, 1});
+  FitOptions o;
+  o.resolution = 1e-5;
+  const Distribution d = fit_distribution(v, o);
+  ASSERT_EQ(d.kind, DistributionKind::Choice);
+  ASSERT_EQ(d.values.size(), 5u);
+  for (std::size_t k = 0; k < 5; ++k) EXPECT_NEAR(d.values[k], 4.3 * static_cast<double>(k + 1), 1e-9);
+  // Values each seen once, though evenly spread, are a range.
+  std::vector<Observation> once;
+  for (const double x : {4.3, 8.6, 12.9, 17.2, 21.5}) once.push_back({x, 1});
+  EXPECT_NE(fit_distribution(once, o).kind, DistributionKind::Choice);
+}
+
 TEST(FitDistribution, AValueRepeatsOnlyAcrossExamples) {
   // Thirty examples, each showing its own value at two places (two wings
   // of one depth): thirty observations of a continuous size, not thirty

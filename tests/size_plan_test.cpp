@@ -105,5 +105,20 @@ TEST(SizePlan, PartsInOneRatioAmongPartsThatVaryKeepTheirRatio) {
     EXPECT_NEAR((*plan)[1].values[m] / (*plan)[0].value, lengths[m][1] / lengths[m][0], 1e-12) << m;
 }
 
+TEST(SizePlan, WholeBaysBeforeADoorAreDrawnInMetres) {
+  // Shop bays of 4.3 m before a door bay (1.4 | 1.5 | 1.4), one to four of
+  // them, then the rest of plots of any width: the run before the door is
+  // a whole number of bays, a point of an evenly spaced row in metres,
+  // while its share of each plot spreads.
+  const std::vector<std::vector<double>> lengths = {
+      {4.3, 1.4, 1.5, 1.4, 12.1}, {8.6, 1.4, 1.5, 1.4, 6.3},  {4.3, 1.4, 1.5, 1.4, 17},
+      {17.2, 1.4, 1.5, 1.4, 2.9}, {8.6, 1.4, 1.5, 1.4, 10.4}, {4.3, 1.4, 1.5, 1.4, 9}};
+  const auto plan = plan_drawn_sizes(lengths, 1e-6);
+  ASSERT_TRUE(plan.has_value());
+  EXPECT_TRUE((*plan)[0].absolute);
+  EXPECT_EQ((*plan)[0].values, (std::vector<double>{4.3, 8.6, 4.3, 17.2, 8.6, 4.3}));
+  EXPECT_FALSE((*plan)[4].absolute);  // the rest fills the plot
+}
+
 }  // namespace
 }  // namespace vern

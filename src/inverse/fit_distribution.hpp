@@ -25,6 +25,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "graph/expr.hpp"
@@ -60,6 +61,16 @@ struct FitOptions {
 
 // observations must not be empty.
 Distribution fit_distribution(const std::vector<Observation>& observations, const FitOptions& options);
+
+// Values on an evenly spaced row (a door bay after one, two or four bays
+// of 4.3 m: 4.3, 8.6, 17.2): every point of the row from the smallest
+// value seen to the largest, the step the largest that spaces them all
+// (a whole share of the smallest gap), as long as the distinct values
+// seen, three or more, fill half the row's points or more, and the
+// values, counted with their repeats, are two more than the points. None
+// otherwise: values drawn from a range lie on no such row, and values
+// each seen once, evenly spread or not, are a range.
+std::optional<std::vector<double>> even_row(const std::vector<double>& values, double resolution);
 
 // A size's distribution (a part's length, a plot's): sizes stay positive,
 // and one seen in every example never vanishes (a zero length would drop
