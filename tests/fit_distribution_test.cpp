@@ -59,6 +59,27 @@ TEST(FitDistribution, WholeBaysAreAChoiceOfEveryPointOfTheirRow) {
   EXPECT_NE(fit_distribution(once, o).kind, DistributionKind::Choice);
 }
 
+TEST(FitDistribution, WrittenDistributionsReadBack) {
+  // What distribution_expr writes reads back as the same distribution.
+  const std::vector<Distribution> written = {
+      Distribution{DistributionKind::Constant, {2.5}},
+      Distribution{DistributionKind::Choice, {4.3, 8.6, 12.9}},
+      Distribution{DistributionKind::Uniform, {}, 3, 7},
+      Distribution{DistributionKind::TruncatedNormal, {}, 2.9, 4.3, 3.6, 0.35}};
+  for (const Distribution& d : written) {
+    const auto back = written_distribution(distribution_expr(d));
+    ASSERT_TRUE(back.has_value());
+    EXPECT_EQ(back->kind, d.kind);
+    EXPECT_EQ(back->values, d.values);
+    EXPECT_EQ(back->lo, d.lo);
+    EXPECT_EQ(back->hi, d.hi);
+    EXPECT_EQ(back->mu, d.mu);
+    EXPECT_EQ(back->sigma, d.sigma);
+  }
+  // Anything else is no distribution: a range up to a parameter.
+  EXPECT_FALSE(written_distribution(Expr::call(Function::Rand, {Expr::number(0), Expr::param(0)})).has_value());
+}
+
 TEST(FitDistribution, AValueRepeatsOnlyAcrossExamples) {
   // Thirty examples, each showing its own value at two places (two wings
   // of one depth): thirty observations of a continuous size, not thirty

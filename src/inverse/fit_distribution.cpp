@@ -87,6 +87,35 @@ std::vector<Observation> once_per_example(const std::vector<Observation>& observ
   return out;
 }
 
+// even_row (fit_distribution.hpp) of distinct values (distinct()), seen n
+// times in all.
+std::optional<std::vector<double>> row_through(const std::vector<Observation>& values, double n, double resolution) {
+  if (values.size() < 3) return std::nullopt;
+  double gap = values[1].value - values[0].value;
+  for (std::size_t i = 2; i < values.size(); ++i) gap = std::min(gap, values[i].value - values[i - 1].value);
+  const double first = values.front().value, span = values.back().value - first;
+  for (int share = 1; share <= 4; ++share) {
+    const double step = gap / share;
+    const double points = std::round(span / step) + 1;
+    if (step <= 10 * resolution || points > 2 * static_cast<double>(values.size())) break;
+    const bool on_row = std::ranges::all_of(values, [&](const Observation& o) {
+      const double at = (o.value - first) / step;
+      return std::abs(at - std::round(at)) * step <= resolution;
+    });
+    if (!on_row) continue;
+    // Some values must repeat: ten values spread evenly by design, each
+    // seen once, are a range, and three pillars of 1.43, 2.145 and 2.86 m
+    // over four plots say little.
+    if (n < points + 2) return std::nullopt;
+    // Spaced by the row's own step over its whole span: no drift.
+    const double spaced = span / (points - 1);
+    std::vector<double> out;
+    for (double k = 0; k < points; ++k) out.push_back(first + k * spaced);
+    return out;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 Distribution fit_distribution(const std::vector<Observation>& all, const FitOptions& options) {
@@ -135,10 +164,7 @@ Distribution fit_distribution(const std::vector<Observation>& all, const FitOpti
   }
 
   // choice(...) of every point of an evenly spaced row the values lie on.
-  std::vector<double> seen;
-  for (const Observation& o : observations)
-    for (double c = 0; c < o.count; ++c) seen.push_back(o.value);
-  if (const auto row = even_row(seen, options.resolution)) {
+  if (const auto row = row_through(values, n, options.resolution)) {
     const double points = static_cast<double>(row->size());
     const double bic = 3 * std::log(n) - 2 * n * std::log(1 / points);
     if (bic < best.bic) {
@@ -192,31 +218,7 @@ Distribution fit_distribution(const std::vector<Observation>& all, const FitOpti
 std::optional<std::vector<double>> even_row(const std::vector<double>& seen, double resolution) {
   std::vector<Observation> observed;
   for (const double v : seen) observed.push_back({v, 1});
-  const std::vector<Observation> values = distinct(std::move(observed), resolution);
-  if (values.size() < 3) return std::nullopt;
-  double gap = values[1].value - values[0].value;
-  for (std::size_t i = 2; i < values.size(); ++i) gap = std::min(gap, values[i].value - values[i - 1].value);
-  const double first = values.front().value, span = values.back().value - first;
-  for (int share = 1; share <= 4; ++share) {
-    const double step = gap / share;
-    const double points = std::round(span / step) + 1;
-    if (step <= 10 * resolution || points > 2 * static_cast<double>(values.size())) break;
-    const bool on_row = std::ranges::all_of(values, [&](const Observation& o) {
-      const double at = (o.value - first) / step;
-      return std::abs(at - std::round(at)) * step <= resolution;
-    });
-    if (!on_row) continue;
-    // Some values must repeat: ten values spread evenly by design, each
-    // seen once, are a range, and three pillars of 1.43, 2.145 and 2.86 m
-    // over four plots say little.
-    if (static_cast<double>(seen.size()) < points + 2) return std::nullopt;
-    // Spaced by the row's own step over its whole span: no drift.
-    const double spaced = span / (points - 1);
-    std::vector<double> out;
-    for (double k = 0; k < points; ++k) out.push_back(first + k * spaced);
-    return out;
-  }
-  return std::nullopt;
+  return row_through(distinct(std::move(observed), resolution), static_cast<double>(seen.size()), resolution);
 }
 
 Distribution fit_size(const std::vector<Observation>& sizes, double resolution, bool uniform_only) {
@@ -243,6 +245,40 @@ Expr distribution_expr(const Distribution& d) {
                         {Expr::number(d.mu), Expr::number(d.sigma), Expr::number(d.lo), Expr::number(d.hi)});
   }
   return Expr::number(0);
+}
+
+std::optional<Distribution> written_distribution(const Expr& e) {
+  if (const auto v = e.literal()) return Distribution{DistributionKind::Constant, {*v}};
+  const ExprNode& root = e.node(e.root());
+  if (root.kind != ExprKind::Call || e.nodes().size() != std::size_t{root.argc} + 1) return std::nullopt;
+  std::vector<double> args;
+  for (std::size_t i = 0; i + 1 < e.nodes().size(); ++i) {
+    if (e.node(i).kind != ExprKind::Number) return std::nullopt;
+    args.push_back(e.node(i).number);
+  }
+  Distribution d;
+  switch (static_cast<Function>(root.op)) {
+    case Function::Choice:
+      d.kind = DistributionKind::Choice;
+      d.values = std::move(args);
+      std::ranges::sort(d.values);
+      return d;
+    case Function::Rand:
+      if (args.size() != 2) return std::nullopt;
+      d.kind = DistributionKind::Uniform;
+      d.lo = std::min(args[0], args[1]);
+      d.hi = std::max(args[0], args[1]);
+      return d;
+    case Function::TNormal:
+      if (args.size() != 4) return std::nullopt;
+      d.kind = DistributionKind::TruncatedNormal;
+      d.mu = args[0];
+      d.sigma = args[1];
+      d.lo = args[2];
+      d.hi = args[3];
+      return d;
+    default: return std::nullopt;
+  }
 }
 
 Distribution short_decimals(Distribution d, double tolerance) {

@@ -82,6 +82,11 @@ Distribution fit_size(const std::vector<Observation>& sizes, double resolution, 
 // rand(lo, hi) or tnormal(mu, sigma, lo, hi).
 Expr distribution_expr(const Distribution& d);
 
+// The distribution a size expression writes, where it is one that
+// distribution_expr writes, of literal numbers (choice's values sorted);
+// none for anything else (rand(0, s1), 2 * rand(1, 2)).
+std::optional<Distribution> written_distribution(const Expr& e);
+
 // The distribution's numbers as short decimals: support bounds rounded
 // outwards within `tolerance`, mu and sigma to about a hundredth of sigma.
 Distribution short_decimals(Distribution d, double tolerance);

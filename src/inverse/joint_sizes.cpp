@@ -274,28 +274,24 @@ std::vector<std::pair<std::size_t, std::size_t>> read_in_metres(const std::vecto
     metres[o].assign(at[o].random.size(), false);
     shares[o] = static_cast<std::size_t>(std::ranges::count(at[o].relative, true));
   }
-  // A share of its split: its length over the split's shares' lengths.
-  auto share_of = [&](std::size_t o, std::size_t i) {
-    std::vector<double> out(at[o].length[i].size(), kAbsent);
-    for (std::size_t e = 0; e < out.size(); ++e) {
-      double sum = 0;
-      for (std::size_t k = 0; k < at[o].relative.size(); ++k)
-        if (at[o].relative[k]) sum += at[o].length[k][e];
-      if (sum > 0) out[e] = at[o].length[i][e] / sum;
-    }
-    return out;
-  };
-  // The longest a split ran, over the examples.
-  auto longest = [&](std::size_t o) {
-    const std::size_t examples = at[o].length.empty() ? 0 : at[o].length[0].size();
-    double out = 1;
+  // Per split, once: each part's share of the split's shares' lengths,
+  // and the longest the split ran over the examples (at least 1 m).
+  std::vector<std::vector<std::vector<double>>> share(at.size());
+  std::vector<double> longest(at.size(), 1.0);
+  for (std::size_t o = 0; o < at.size(); ++o) {
+    const std::size_t parts = at[o].length.size(), examples = parts == 0 ? 0 : at[o].length[0].size();
+    share[o].assign(parts, std::vector<double>(examples, kAbsent));
     for (std::size_t e = 0; e < examples; ++e) {
-      double sum = 0;
-      for (const auto& part : at[o].length) sum += std::isnan(part[e]) ? 0 : part[e];
-      out = std::max(out, sum);
+      double shares_sum = 0, sum = 0;
+      for (std::size_t k = 0; k < parts; ++k) {
+        if (at[o].relative[k]) shares_sum += at[o].length[k][e];
+        sum += std::isnan(at[o].length[k][e]) ? 0 : at[o].length[k][e];
+      }
+      longest[o] = std::max(longest[o], sum);
+      if (shares_sum > 0)
+        for (std::size_t k = 0; k < parts; ++k) share[o][k][e] = at[o].length[k][e] / shares_sum;
     }
-    return out;
-  };
+  }
   auto exact_line = [&](const std::vector<double>& xs, const std::vector<double>& ys, double tol) {
     const auto [x, y] = paired(xs, ys);
     if (x.size() < min_examples || !shows_a_line(x, tol)) return false;
@@ -319,8 +315,8 @@ std::vector<std::pair<std::size_t, std::size_t>> read_in_metres(const std::vecto
       // A share misses by its miss in metres over its container's length;
       // staying a share needs the tolerance only, not a quarter of it: the
       // shares' lengths carry the rounding of every part they sum.
-      const double share_tolerance = 4 * tolerance / std::max(longest(po), longest(qo));
-      if (exact_line(p_share ? share_of(po, pi) : at[po].length[pi], share_of(qo, qi), share_tolerance)) continue;
+      const double share_tolerance = 4 * tolerance / std::max(longest[po], longest[qo]);
+      if (exact_line(p_share ? share[po][pi] : at[po].length[pi], share[qo][qi], share_tolerance)) continue;
       metres[qo][qi] = true;
       --shares[qo];
       out.push_back({qo, qi});
@@ -332,21 +328,6 @@ std::vector<std::pair<std::size_t, std::size_t>> read_in_metres(const std::vecto
       break;
     }
   }
-  return out;
-}
-
-// The values of a size written choice(v1, v2, ...), or none.
-std::optional<std::vector<double>> choice_values(const Expr& e) {
-  const ExprNode& root = e.node(e.root());
-  if (root.kind != ExprKind::Call || static_cast<Function>(root.op) != Function::Choice ||
-      e.nodes().size() != std::size_t{root.argc} + 1)
-    return std::nullopt;
-  std::vector<double> out;
-  for (std::size_t i = 0; i + 1 < e.nodes().size(); ++i) {
-    if (e.node(i).kind != ExprKind::Number) return std::nullopt;
-    out.push_back(e.node(i).number);
-  }
-  std::ranges::sort(out);
   return out;
 }
 
@@ -532,17 +513,14 @@ class Joiner {
         Fit t;
         if (x.size() >= opt_.min_examples && shows_a_line(x, opt_.tolerance)) {
           t = line_fit(x, y);
-        } else if (x.size() >= opt_.min_examples && varies(x, opt_.tolerance) &&
-                   worst_miss(x, y, 0, 1) <= opt_.tolerance / 4) {
-          // Two values seen (a door bay after two or three bays), and the
-          // other size equal to it in every example: no line shows
-          // through two values, but equality needs none.
-          t.b = 1;
-          t.r = 1;
-        } else if (n < opt_.min_examples && x.size() >= opt_.min_equal && varies(x, opt_.tolerance)) {
-          // Only equality is evidence from so few, and only where there
-          // are no more to see: in a region seen more often, a pair that
-          // so few show stays apart, as a line through them would.
+        } else if (((x.size() >= opt_.min_examples && worst_miss(x, y, 0, 1) <= opt_.tolerance / 4) ||
+                    (n < opt_.min_examples && x.size() >= opt_.min_equal)) &&
+                   varies(x, opt_.tolerance)) {
+          // Equality needs no line: two values seen (a door bay after two
+          // or three bays) with the other size equal in every example;
+          // and from so few examples only equality is evidence, where
+          // there are no more to see (in a region seen more often, a pair
+          // that so few show stays apart, as a line through them would).
           t.b = 1;
           t.r = 1;
         } else {
@@ -591,11 +569,12 @@ class Joiner {
       // bays) keeps it, where the region's examples took only those; a
       // region's few examples would fit a range.
       const SplitPart& written = std::get<Split>(g_.op(r.splits[Q.occurrence].split)).parts[Q.part];
-      const auto choices = written.size.relative == Q.relative ? choice_values(written.size.value) : std::nullopt;
-      const bool among = choices && std::ranges::all_of(seen_values, [&](double v) {
-                           return std::ranges::any_of(*choices, [&](double c) { return std::abs(c - v) <= opt_.tolerance; });
+      const auto as_written = written.size.relative == Q.relative ? written_distribution(written.size.value) : std::nullopt;
+      const bool among = as_written && as_written->kind == DistributionKind::Choice &&
+                         std::ranges::all_of(seen_values, [&](double v) {
+                           return std::ranges::any_of(as_written->values, [&](double c) { return std::abs(c - v) <= opt_.tolerance; });
                          });
-      drawn.push_back(among ? Distribution{DistributionKind::Choice, *choices} : fit_distribution(obs, fit));
+      drawn.push_back(among ? *as_written : fit_distribution(obs, fit));
       drawn_values.push_back(seen_values);
       drawn_at.push_back(Q.occurrence);
       f.add(leader_param.back(), 1);

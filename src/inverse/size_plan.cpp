@@ -165,10 +165,9 @@ std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::ve
       // Lengths on an evenly spaced row that some repeat (whole tiles: a
       // door bay after one to four bays of 4.3 m) say one of its points.
       const auto row = even_row(metres, tolerance);
-      const bool on_row = row.has_value();
       double in_metres = 0, as_shares = 0;
       for (std::size_t m = 0; m < rows; ++m) {
-        in_metres += on_row ? std::log(static_cast<double>(row->size())) : drawn_value_cost(*mhi - *mlo, tolerance);
+        in_metres += row ? std::log(static_cast<double>(row->size())) : drawn_value_cost(*mhi - *mlo, tolerance);
         as_shares += drawn_value_cost((*shi - *slo) * totals[m], tolerance);
       }
       if (in_metres < as_shares) {
