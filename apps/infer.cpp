@@ -1,6 +1,7 @@
 // infer: labelled example buildings in, a grammar of their style out.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include "graph/reserved_words.hpp"
 #include "graph/writer.hpp"
 #include "inverse/infer.hpp"
+#include "inverse/test_buildings.hpp"
 #include "support/command_line.hpp"
 #include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
@@ -176,16 +178,23 @@ int run(int argc, char** argv) {
 
   // Derive a few buildings from the result while its text is made: a
   // grammar that cannot derive is a bug, better found here than by the user
-  // (its error comes first, as if derived before writing). Their terminals
-  // are counted, not kept; one building alone when the examples are large
-  // (a million parts: a third of a second).
-  std::size_t parts = 0;
-  for (const Example& e : examples) parts += e.boxes.size();
+  // (its error comes first, as if derived before writing); one that reaches
+  // a limit is written with a warning (inverse/test_buildings.hpp). One
+  // building alone when the examples are large (a million parts: a third
+  // of a second).
+  std::size_t parts = 0, largest = 0;
+  for (const Example& e : examples) {
+    parts += e.boxes.size();
+    largest = std::max(largest, e.boxes.size());
+  }
   const std::size_t example_count = examples.size();
   // Done with the examples (their boxes, positions and meshes: 115 MB at
   // a million parts), freed before the derivation and the text take theirs.
   examples = {};
-  const std::uint32_t test_buildings = parts > 100'000 ? 1 : 8;
+  TestBuildingsOptions tests;
+  tests.first_seed = seed;
+  tests.count = parts > 100'000 ? 1 : 8;
+  tests.example_parts = largest;
   result.grammar.primitives = path_from(output, prims);
   // generate follows @primitives only into the grammar's own folder.
   if (!quiet && !path_in_folder(output.parent_path(), result.grammar.primitives))
@@ -194,19 +203,12 @@ int run(int argc, char** argv) {
                  "only with --allow-outside-files\n  hint: write the meshes beside the grammar (--primitives-out)\n",
                  result.grammar.primitives.c_str());
   std::string grammar_text;
+  std::vector<std::string> test_warnings;
   run_alongside(
-      options.threads,
-      [&] {
-        for (std::uint32_t i = 0; i < test_buildings; ++i) {
-          DeriveOptions check;
-          check.seed = seed + i;
-          check.keep_terminals = false;
-          derive(result.grammar, check);
-        }
-      },
-      [&] {
-        grammar_text = write_grammar(result.grammar);
-      });
+      options.threads, [&] { test_warnings = derive_test_buildings(result.grammar, tests); },
+      [&] { grammar_text = write_grammar(result.grammar); });
+  if (!quiet)
+    for (const std::string& w : test_warnings) std::fprintf(stderr, "%s\n", w.c_str());
 
   // The parts' meshes: one object per label, each filling the unit box.
   Scene meshes;

@@ -339,6 +339,29 @@ TEST(InferCli, MeshesOutsideTheGrammarsFolderNeedAllowOutsideFiles) {
   EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
 }
 
+// A block of 0.1 m bricks beside a 40 m house: @scope draws up to 80 m
+// on each axis, so a test building of the brick alternative runs past a
+// million parts. The grammar derives both examples: infer writes it and
+// says so, where it used to stop with derive's error and no grammar.
+TEST(InferCli, TestBuildingsPastALimitAreAWarningAndTheGrammarIsWritten) {
+  TempFolder dir;
+  write_text(dir / "block.grm", "b --> repeat(x, 0.1){ repeat(y, 0.1){ repeat(z, 0.1){ I(brick) } } }\n");
+  write_text(dir / "house.grm", "h --> split(x){ ~1 : I(wall) | ~1 : I(roof) }\n");
+  auto r = run_program("generate", {"block.grm", "--scope", "0.4", "0.4", "0.4", "-q", "-o", "block.obj"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_program("generate", {"house.grm", "--scope", "40", "40", "40", "-q", "-o", "house.obj"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_program("infer", {"block.obj", "house.obj", "-o", "style.grm"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("stops at a limit: more than 1000000 terminals in one derivation; the largest example has "
+                       "64 parts"),
+            std::string::npos)
+      << r.err;
+  r = run_program("check", {"style.grm", "block.obj", "house.obj"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("2 of 2 examples derivable"), std::string::npos) << r.out;
+}
+
 TEST(InferCli, UsageErrors) {
   auto r = run_program("infer", {kExamples + "garage"});
   EXPECT_EQ(r.exit_code, 2);
