@@ -87,9 +87,10 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   };
   // The examples' graphs merged within `tolerance`, numbers tidied (each
   // moved by at most a quarter of `exact`) and frames shared: the merged root.
-  auto merged = [&](Grammar& g, double tolerance, double exact) {
+  auto merged = [&](Grammar& g, double tolerance, double exact, bool draw_sizes) {
     MergeOptions merge;
     merge.tolerance = tolerance;
+    merge.draw_sizes = draw_sizes;
     merge.uniform_distributions = options.uniform_distributions;
     NodeId root = merge_examples(g, roots, merge);
     root = tidy_numbers(g, root, exact / 4);
@@ -118,7 +119,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
         options.threads, [&] { quarters = common_orientation(examples, trees, out.tolerance, 1); },
         [&] {
           build_graphs(examples, as_they_are, false);
-          first_merge = merged(graph, out.tolerance, smallest);
+          first_merge = merged(graph, out.tolerance, smallest, true);
         });
     built = true;
   } else if (parts <= kJoinedPartsLimit) {
@@ -193,15 +194,19 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   // it passed needs no second check (the city's ten examples: a fifth of
   // infer's time). The steps after it (progressions, twins) keep what
   // derives.
+  // Last, the sizes that vary kept as the shares merging found, not drawn
+  // in metres (MergeOptions::draw_sizes says when those miss an example).
   struct Attempt {
     double merge, exact;
+    bool draw_sizes = true;
   };
   std::vector<Attempt> attempts{{out.tolerance, smallest}};
   if (smallest < out.tolerance) attempts.push_back({smallest, smallest});
   for (const double finer : {10.0, 100.0}) attempts.push_back({smallest / finer, smallest / finer});
+  attempts.push_back({attempts[0].merge, attempts[0].exact, false});
   std::optional<NotDerived> failed;
   for (std::size_t k = 0; k < attempts.size(); ++k) {
-    const auto [tolerance, exact] = attempts[k];
+    const auto [tolerance, exact, draw_sizes] = attempts[k];
     failed.reset();
     if (k > 0) {
       out.tolerance = tolerance;
@@ -209,7 +214,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
       out.twins = {};
       graph.rollback(*unmerged);
     }
-    generalise_from(graph, k == 0 && first_merge ? *first_merge : merged(graph, tolerance, exact), tolerance, exact);
+    generalise_from(graph, k == 0 && first_merge ? *first_merge : merged(graph, tolerance, exact, draw_sizes), tolerance, exact);
     // Past the parts checked quickly, the grammar is the examples' cuts,
     // merged and tidied only (docs/inference.md, "Large examples").
     if (out.joint.derives_examples || parts > kJoinedPartsLimit) break;
@@ -220,7 +225,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
     const Example& e = examples[failed->example];
     throw Error(ErrorKind::Internal,
                 "infer: error: no grammar inferred derives " + e.source + ", even with sizes held ten and a "
-                    "hundred times closer than its tolerance: " +
+                    "hundred times closer than its tolerance, or kept as shares: " +
                     failed->why +
                     "\n  hint: please report this with the examples; a smaller --tolerance may get past it");
   }

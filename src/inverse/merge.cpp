@@ -926,7 +926,7 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   // their share, and relative parts in fixed ratios where they keep them:
   // decided once the structure is settled, so that no unification above
   // is kept apart by it.
-  everywhere([&](NodeId n) {
+  if (options.draw_sizes) everywhere([&](NodeId n) {
     std::vector<std::pair<NodeId, NodeId>> rebuilt;
     const NodeId drawn = draw_sizes(g, n, rows, book, options.tolerance, &rebuilt);
     carry_tile_counts(rebuilt, tile_counts);  // a repeat above a drawn split keeps its counts

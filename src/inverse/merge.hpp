@@ -48,6 +48,14 @@ struct MergeOptions {
   // Varying sizes as the thesis wrote them, rand(min, max), instead of the
   // distribution the values fit best (fit_distribution.hpp).
   bool uniform_distributions = false;
+  // Sizes the examples vary drawn in metres where their lengths say so
+  // (drawn_sizes.hpp). Their plan reads the lengths noted for each split;
+  // a split that free combinations (generalise.hpp) also let an example
+  // reach through another choice's alternative never noted that
+  // example's lengths, and its sizes in metres may then not fit it
+  // where shares did. infer merges once more without them when its
+  // check finds an example underived.
+  bool draw_sizes = true;
 };
 
 // Returns the merged root; adds nodes to g (interned). roots must not be
