@@ -282,6 +282,30 @@ TEST(Infer, PinwheelsNestedInPinwheelsAreDerivedExactly) {
   }
 }
 
+// A flat panel at the foot of a cell that a thin box also holds: no cut
+// separates them, so they are a placed group (placements.hpp), which
+// check follows only by deriving it. Merged with a house whose box of
+// the same label tops a taller column, the group's column was unified
+// with that one and given a drawn height: no longer one outcome, the
+// group could not be checked and infer stopped ("no grammar inferred
+// derives"). A fuzzed layout (fuzz/regressions/infer_layout/), in round
+// numbers.
+TEST(Infer, APlacedGroupIsCopiedAsItIsWhateverItsNeighboursVary) {
+  using test::part;
+  const Example blocks = test::example_of(
+      {part("a", {0, 0, 0}, {0.6, 0.13, 0.8}), part("a", {0, 0.13, 0}, {0.6, 0.2, 0.8}),
+       part("a", {0, 0.2, 0}, {0.6, 0.33, 0.8})},
+      "blocks.obj");
+  const Example group = test::example_of({part("c", {0.8, 0.3, 0.7}, {0.9, 1, 1}), part("d", {0.7, 0.9, 0}, {0.9, 1, 0}),
+                                          part("c", {0, 0, 2.8}, {0.4, 0.1, 3.2})},
+                                         "group.obj");
+  const Inference inferred = infer({blocks, group}, {});
+  for (const Example& e : {blocks, group}) {
+    const CheckResult r = check_example(inferred.grammar, e.boxes, example_size(e));
+    EXPECT_TRUE(r.derivable) << e.source << ": " << r.mismatch << "\n" << write_grammar(inferred.grammar);
+  }
+}
+
 TEST(Infer, ASizeSharedByTwoSubtreesIsNoChoiceOfTheValuesSeen) {
   // Both side wings of each building take one drawn height h: every
   // example shows its height at two places. Thirty continuous heights are

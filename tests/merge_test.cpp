@@ -16,7 +16,7 @@ namespace {
 constexpr auto examples = test::example_graphs;
 
 // The thesis's min-max ranges, which these tests of unification read off.
-const MergeOptions kUniform{1e-9, true};
+const MergeOptions kUniform = test::uniform_merge();
 
 const std::string kHouse = "split(z){ ~6 : I(rect) | ~3 : I(triangle) }";
 

@@ -25,7 +25,7 @@ TEST(SettleRepeats, TheSameCountWhereNoTileGivesItIsThatManyTiles) {
   // ([2.5, 3) and [3.05, 3.66)), so the row is six tiles whatever the
   // width: repeatN(x, 6).
   Grammar g;
-  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(6, 2.5), windows(6, 3.05)}), {1e-9, true});
+  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(6, 2.5), windows(6, 3.05)}), test::uniform_merge());
   const auto* row = std::get_if<RepeatN>(&g.op(merged));
   ASSERT_NE(row, nullptr);
   EXPECT_EQ(row->count.literal(), 6.0);
@@ -41,13 +41,13 @@ TEST(SettleRepeats, CountsThatOneTileGivesAreThatTile) {
   for (const auto& [second, tile] :
        {std::pair{windows(3, 2.5), 3.0}, std::pair{windows(4, 2.5), 3.0}}) {
     Grammar g;
-    const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3), second}), {1e-9, true});
+    const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3), second}), test::uniform_merge());
     const auto* row = std::get_if<Repeat>(&g.op(merged));
     ASSERT_NE(row, nullptr) << second;
     EXPECT_EQ(row->size.literal(), tile) << second;
   }
   Grammar g;
-  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3.1), windows(3, 2.5)}), {1e-9, true});
+  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3.1), windows(3, 2.5)}), test::uniform_merge());
   const auto* row = std::get_if<Repeat>(&g.op(merged));
   ASSERT_NE(row, nullptr);
   EXPECT_EQ(row->size.literal(), 3.4);
@@ -60,7 +60,7 @@ TEST(SettleRepeats, VaryingCountsNoTileGivesTakeTileSizesFromTheMiddleOfEachCoun
   // decimals a quarter of the way to their ranges' nearer ends (2.2 and
   // 2.7), instead of the lower ends 2 and 2.45.
   Grammar g;
-  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(6, 2), windows(5, 2.45)}), {1e-9, true});
+  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(6, 2), windows(5, 2.45)}), test::uniform_merge());
   const auto* row = std::get_if<Repeat>(&g.op(merged));
   ASSERT_NE(row, nullptr);
   const auto tile = literal_range(row->size);
@@ -88,7 +88,7 @@ TEST(SettleRepeats, CommonTileKeepsEveryCountAndClearsTheToleranceAtBothEnds) {
 TEST(SettleRepeats, AConstantTileStaysAsItIs) {
   // Windows 3 m wide on 9 and 12 m: the tile is 3 (just above) in both.
   Grammar g;
-  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3), windows(4, 3)}), {1e-9, true});
+  const NodeId merged = merge_examples(g, test::example_graphs(g, {windows(3, 3), windows(4, 3)}), test::uniform_merge());
   const auto* row = std::get_if<Repeat>(&g.op(merged));
   ASSERT_NE(row, nullptr);
   ASSERT_TRUE(row->size.literal().has_value());

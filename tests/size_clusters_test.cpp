@@ -87,7 +87,7 @@ TEST(SizeClusters, MergingKeepsABalconysRailingApartFromTheSlab) {
     texts.push_back("split(x){ ~1 : split(z){ ~" + std::to_string(rail) + " : I(rect) | ~3 : nil } | ~1 : split(z){ ~" +
                     std::to_string(slab) + " : I(rect) | ~3 : nil } }");
   }
-  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), {1e-9, true});
+  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), test::uniform_merge());
   const auto& row = std::get<Split>(g.op(merged));
   ASSERT_NE(row.parts[0].child, row.parts[1].child);
   const auto rail = literal_range(std::get<Split>(g.op(row.parts[0].child)).parts[0].size.value);
@@ -105,7 +105,7 @@ TEST(SizeClusters, ClearlyBimodalHeightsBecomeSeparateAlternatives) {
   for (const double h : {3.0, 6.0, 3.1, 6.2, 3.05, 6.1, 3.15, 6.3})
     texts.push_back("split(x){ ~6 : I(house) | ~3 : split(z){ ~" + std::to_string(h) + " : I(rect) | ~" +
                     std::to_string(9 - h) + " : nil } }");
-  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), {1e-9, true});
+  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), test::uniform_merge());
   // The houses differ at the garage only: one house, its garage a choice
   // of the two kinds (the same buildings as two alternatives of houses).
   const auto* house = std::get_if<Split>(&g.op(merged));
@@ -155,7 +155,7 @@ TEST(SizeClusters, AirLeftAboveAPartMakesNoKind) {
   for (int i = 0; i <= 20; ++i) heights.push_back(4 + 0.25 * i);
   for (double h : heights)
     texts.push_back("split(z){ ~" + std::to_string(h) + " : I(rect) | ~" + std::to_string(10 - h) + " : nil }");
-  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), {1e-9, true});
+  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), test::uniform_merge());
   ASSERT_TRUE(std::holds_alternative<Split>(g.op(merged)));
   const auto house = literal_range(std::get<Split>(g.op(merged)).parts[0].size.value);
   ASSERT_TRUE(house);

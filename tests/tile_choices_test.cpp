@@ -52,7 +52,7 @@ TEST(TileChoices, RowsSharingABuildingKindShareEveryKindTheyHeld) {
   // in its place: repeat_folding_test.)
   Grammar g;
   const auto roots = examples(g, {row(2, kRoofed, plain(5), kRoofed), row(2, plain(4), kTwin, plain(2))});
-  const NodeId merged = merge_examples(g, roots, {1e-9, true});
+  const NodeId merged = merge_examples(g, roots, test::uniform_merge());
   const Repeat& r = repeat_at(g, merged);
   const auto held = alternatives(g, r);
   ASSERT_EQ(held.size(), 3u) << ::testing::PrintToString(held);
@@ -68,7 +68,7 @@ TEST(TileChoices, RowsSharingNothingStayApart) {
   // common, so each keeps its own choice.
   Grammar g;
   const auto roots = examples(g, {row(2, kRoofed, plain(5), kRoofed), row(2, kGlassRoofed, kGlass, kGlassRoofed)});
-  const NodeId merged = merge_examples(g, roots, {1e-9, true});
+  const NodeId merged = merge_examples(g, roots, test::uniform_merge());
   const auto& forms = std::get<Choose>(g.op(merged));
   ASSERT_EQ(forms.options.size(), 2u);
   EXPECT_EQ(alternatives(g, repeat_at(g, forms.options[0].child)).size(), 2u);
@@ -83,7 +83,7 @@ TEST(TileChoices, TilesOfFarApartLengthsAreDifferentKinds) {
   const std::string four = "split(x){ ~2.2 : " + kRoofed + " | ~2.2 : " + plain(4) + " | ~2.2 : " + kRoofed + " | ~2.2 : " +
                            plain(6) + " }";
   const auto roots = examples(g, {row(2, kRoofed, plain(5), kRoofed), four, row(0.5, plain(4), kTwin, plain(2))});
-  const NodeId merged = merge_examples(g, roots, {1e-9, true});
+  const NodeId merged = merge_examples(g, roots, test::uniform_merge());
   const auto& forms = std::get<Choose>(g.op(merged));
   ASSERT_EQ(forms.options.size(), 2u);
   const Repeat& plots = repeat_at(g, forms.options[0].child);

@@ -7,6 +7,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "graph/nodes_below.hpp"
 #include "inverse/choice_costs.hpp"
 #include "inverse/substitute.hpp"
 #include "inverse/weighted_choice.hpp"
@@ -31,7 +32,12 @@ struct Frame {
 class Generaliser {
  public:
   Generaliser(Grammar& g, const MergeOptions& o, FrameKinds kinds, const RowBook& rows)
-      : g_(g), opt_(o), kinds_(kinds), rows_(rows), references_(g.node_count(), 0) {}
+      : g_(g), opt_(o), kinds_(kinds), rows_(rows), references_(g.node_count(), 0), copied_(g.node_count(), false) {
+    // Placed groups are copied as they are (MergeOptions::placed): no
+    // split of theirs joins a frame.
+    for (const NodeId p : o.placed)
+      for (const NodeId n : nodes_below(g, p)) copied_[n] = true;
+  }
 
   NodeId run(NodeId root, bool& changed, std::vector<std::pair<NodeId, NodeId>>* rebuilt,
              std::vector<std::pair<NodeId, NodeId>>* joined) {
@@ -69,7 +75,7 @@ class Generaliser {
       // frame whatever their proportions: they stand for the same place.
       for (const auto& o : c->options) {
         const auto* s = std::get_if<Split>(&g_.op(o.child));
-        if (!s) continue;
+        if (!s || copied_[o.child]) continue;
         if (auto shape = split_shape(*s, false)) {
           Frame& frame = choice_frames_["c" + std::to_string(id) + "/" + *shape];
           frame.alternatives = true;
@@ -81,7 +87,7 @@ class Generaliser {
       return;
     }
     const auto* s = std::get_if<Split>(&op);
-    if (!s) return;
+    if (!s || copied_[id]) return;
     if (auto shape = split_shape(*s, true)) frames_[*shape].members.push_back(id);
   }
 
@@ -285,6 +291,7 @@ class Generaliser {
   FrameKinds kinds_;
   const RowBook& rows_;  // splits whose rows are known: built from examples unified
   std::vector<int> references_;  // by node id, below the root
+  std::vector<bool> copied_;     // by node id: in a placed group
   std::map<std::string, Frame> frames_;
   std::map<std::string, Frame> choice_frames_;  // alternatives of one choice, by shape
 };

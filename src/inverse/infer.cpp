@@ -70,15 +70,16 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   // million parts, through tidying): room for one and a half.
   graph.reserve(parts + parts / 2);
   const Grammar::Checkpoint empty = graph.checkpoint();
-  std::vector<NodeId> roots;
+  std::vector<NodeId> roots, placed;
   std::optional<Grammar::Checkpoint> unmerged;
   // One graph per example, in order, into one interned grammar; each tree
   // is dropped once used if `drop_trees` (large examples hold big trees).
   auto build_graphs = [&](const std::vector<Example>& laid_out, const std::vector<int>& quarters, bool drop_trees) {
     roots.clear();
+    placed.clear();
     for (std::size_t i = 0; i < examples.size(); ++i) {
       roots.push_back(split_graph(graph, trees[i], laid_out[i].boxes, laid_out[i].source, oriented.turns[i],
-                                  {own(examples[i]), &out.warnings}));
+                                  {own(examples[i]), &out.warnings, &placed}));
       // Turned back to be laid out: turned again where it is derived.
       if (quarters[i] != 0) roots.back() = turned_node(graph, roots.back(), {{Axis::Z, (4 - quarters[i]) % 4}});
       if (drop_trees) trees[i] = {};
@@ -92,6 +93,7 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
     merge.tolerance = tolerance;
     merge.draw_sizes = draw_sizes;
     merge.uniform_distributions = options.uniform_distributions;
+    merge.placed = placed;
     NodeId root = merge_examples(g, roots, merge);
     root = tidy_numbers(g, root, exact / 4);
     for (Rule& rule : g.rules) rule.body = tidy_numbers(g, rule.body, exact / 4);

@@ -23,6 +23,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "graph/nodes_below.hpp"
 #include "graph/overload.hpp"
 #include "graph/structural.hpp"
 
@@ -87,14 +88,16 @@ class Unifier {
  public:
   // counts: in how many examples each node occurs (example_counts); a
   // node beyond it counts once.
+  // copied: by node id, the nodes of placed groups (MergeOptions::placed).
   Unifier(Grammar& g, const MergeOptions& o, SampleBook& book, RowBook& rows, TileCounts& tile_counts,
-          const ExampleCounts& counts)
+          const ExampleCounts& counts, const std::vector<bool>& copied)
       : g_(g),
         opt_(o),
         book_(book),
         rows_(rows),
         tile_counts_(tile_counts),
         counts_(counts),
+        copied_(copied),
         group_of_(g.node_count(), kNoGroup) {}
 
   NodeId run(NodeId root) {
@@ -152,11 +155,13 @@ class Unifier {
     std::vector<std::size_t> children;
     std::size_t lengths = 0;  // a repeat's kind of tile length (TileLengths)
     std::size_t sizes = 0;    // the kind of its sizes among its structure's (size_clusters)
+    std::size_t copied = 0;   // a node copied as it is: its id + 1
     friend bool operator==(const Key&, const Key&) = default;
   };
   struct KeyHash {
     std::size_t operator()(const Key& k) const {
-      std::size_t h = hash_combine(hash_combine(hash_combine(k.children.size(), k.form), k.lengths), k.sizes);
+      std::size_t h =
+          hash_combine(hash_combine(hash_combine(hash_combine(k.children.size(), k.form), k.lengths), k.sizes), k.copied);
       for (std::size_t c : k.children) h = hash_combine(h, c);
       return h;
     }
@@ -218,6 +223,8 @@ class Unifier {
     return starts;
   }
 
+  bool frozen(NodeId id) const { return id < copied_.size() && copied_[id]; }
+
   // Every node below id once, children before parents.
   void collect(NodeId id, std::vector<bool>& seen, std::vector<NodeId>& order) const {
     if (seen[id]) return;
@@ -262,6 +269,8 @@ class Unifier {
         continue;
       }
       probe_.form = form_id(op);
+      // A node of a placed group is a group of its own (MergeOptions::placed).
+      probe_.copied = frozen(id) ? id + 1 : 0;
       probe_.lengths = 0;
       if (const auto* r = std::get_if<Repeat>(&op)) probe_.lengths = tile_lengths_.kind(*r);
       probe_.sizes = 0;
@@ -520,6 +529,7 @@ class Unifier {
   RowBook& rows_;
   TileCounts& tile_counts_;            // by repeat node: the tile counts it made where folded
   const ExampleCounts& counts_;  // by node id: examples it occurs in
+  const std::vector<bool>& copied_;  // by node id: in a placed group
   std::vector<Group> groups_;
   std::unordered_map<Key, std::size_t, KeyHash> group_by_key_;
   std::vector<std::size_t> group_of_;  // by node id; kNoGroup until visited
@@ -883,7 +893,11 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   SampleBook book;
   RowBook rows;
   const ExampleCounts counts = example_counts(g, folded);
-  NodeId merged = Unifier(g, options, book, rows, tile_counts, counts).run(examples);
+  // Placed groups and all below them, copied as they are.
+  std::vector<bool> copied(g.node_count(), false);
+  for (const NodeId p : options.placed)
+    for (const NodeId n : nodes_below(g, p)) copied[n] = true;
+  NodeId merged = Unifier(g, options, book, rows, tile_counts, counts, copied).run(examples);
   // Free combinations make parents alike, which unify, which may show more
   // free combinations above: repeat until nothing changes (a few rounds:
   // each round generalises at least one frame, and frames only merge).
@@ -901,7 +915,7 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
       if (!changed && united.replaced.empty()) break;
       carry_rows(rebuilt, rows);
       carry_rows(united.replaced, rows);
-      merged = Unifier(g, options, book, rows, tile_counts, counts).run(merged);
+      merged = Unifier(g, options, book, rows, tile_counts, counts, copied).run(merged);
     }
   };
   generalise(FrameKinds::Alike);
@@ -910,7 +924,7 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   const SelfNesting nesting = fold_self_nesting(g, merged, book, options.tolerance);
   if (nesting.rules > 0) {
     carry_notes(nesting.rebuilt, book, tile_counts);
-    merged = Unifier(g, options, book, rows, tile_counts, counts).run(nesting.root);
+    merged = Unifier(g, options, book, rows, tile_counts, counts, copied).run(nesting.root);
   }
   // Alternatives that differ only below some of their parts become one
   // split with choices at those parts; last, so that nested tiers are

@@ -56,6 +56,12 @@ struct MergeOptions {
   // where shares did. infer merges once more without them when its
   // check finds an example underived.
   bool draw_sizes = true;
+  // The nodes of placed groups (split_graph.hpp): parts no straight cut
+  // separates, placed with S(...) that reaches into the next piece. check
+  // can follow such a group only by deriving it, which needs one outcome:
+  // neither a group nor anything below it is unified with other nodes or
+  // joined into choices, so each is copied as it is, never varied.
+  std::vector<NodeId> placed;
 };
 
 // Returns the merged root; adds nodes to g (interned). roots must not be

@@ -112,6 +112,7 @@ class GraphBuilder {
   NodeId placed(const SplitTree& t) {
     const auto node = place_group(g_, t, options_.tolerance, [&](std::uint32_t box) { return leaf(box); }, nil());
     if (!node) unsplittable(t);
+    if (options_.placed != nullptr) options_.placed->push_back(*node);
     if (options_.warnings != nullptr) {
       const bool flat = t.children.size() == 1;
       const std::string what =

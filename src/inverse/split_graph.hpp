@@ -31,6 +31,9 @@ struct SplitGraphOptions {
   // Where to add one warning per Unsplittable container, naming the
   // example file and its parts (null: not reported).
   std::vector<std::string>* warnings = nullptr;
+  // Where to add the node of each placed group (placements.hpp), which
+  // merging copies as it is (MergeOptions::placed; null: not listed).
+  std::vector<NodeId>* placed = nullptr;
 };
 
 // The graph of a split tree over `boxes` (the boxes it was split from).

@@ -8,6 +8,7 @@
 
 #include "graph/import.hpp"
 #include "graph/parser.hpp"
+#include "inverse/merge.hpp"
 
 namespace vern::test {
 
@@ -18,6 +19,15 @@ inline std::vector<NodeId> example_graphs(Grammar& g, const std::vector<std::str
     roots.push_back(import_subgraph(g, parsed, parsed.rules[0].body));
   }
   return roots;
+}
+
+// Merging exactly (1e-9), varying sizes as rand(min, max): what the
+// merging tests compare written grammars with.
+inline MergeOptions uniform_merge() {
+  MergeOptions o;
+  o.tolerance = 1e-9;
+  o.uniform_distributions = true;
+  return o;
 }
 
 }  // namespace vern::test
