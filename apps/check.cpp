@@ -10,6 +10,7 @@
 #include "graph/parser.hpp"
 #include "inverse/check.hpp"
 #include "inverse/example.hpp"
+#include "inverse/layered_parts.hpp"
 #include "support/command_line.hpp"
 #include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
@@ -66,6 +67,7 @@ int run(int argc, char** argv) {
     options.max_steps = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-steps", 1, 1LL << 50));
   const bool brief = args.has("--brief");
   ExampleLimits limits = example_limits(args);
+  const std::vector<std::string> stack = stack_order(args);
   limits.tolerance = options.tolerance;
   // A hand-written grammar's plot can be larger than what it built (the
   // city's towers stop below its 80 m plot): --scope names the plot.
@@ -87,7 +89,10 @@ int run(int argc, char** argv) {
       example_files(std::vector<std::string>(args.positional.begin() + 1, args.positional.end()));
   std::size_t fits = 0;
   for (const auto& file : files) {
-    const Example example = load_example(file, limits);
+    // Parts set into parts, or painted over one another, as infer takes
+    // them: each keeps what is visible of it (layered_parts.hpp).
+    const Example loaded = load_example(file, limits);
+    const Example example = visible_parts(loaded, Layering{stack, example_tolerance(loaded, options.tolerance)});
     std::vector<LabelledBox> boxes = example.boxes;
     for (auto& b : boxes) {
       b.min -= example.min;

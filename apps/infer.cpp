@@ -112,6 +112,7 @@ int run(int argc, char** argv) {
     if (!(options.tolerance > 0)) usage("--tolerance must be > 0, got " + args.value("--tolerance"), "for example --tolerance 0.001");
   }
   if (args.has("--threads")) options.threads = static_cast<unsigned>(CommandLine::integer(args, "--threads", 1, 1024));
+  options.stack = stack_order(args);
   if (args.has("--distributions"))
     options.uniform_distributions = CommandLine::one_of(args, "--distributions", {"fitted", "uniform"}) == "uniform";
   if (args.has("--sizes"))

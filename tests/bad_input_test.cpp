@@ -340,8 +340,17 @@ const std::vector<BadInput> kCases = {
   {"obj_loose_pieces_overlap", "infer", {"loose_pieces_overlap.obj", "-o", "style.grm"}, kInput,
    "loose_pieces_overlap.obj:1:1: error: ", "is 2 loose pieces in one object: make each its own object (Blender: Edit Mode, Mesh > Separate > By Loose Parts)",
    {"obj/loose_pieces_overlap.obj"}},
-  {"obj_part_inside_part", "infer", {"contained.obj", "-o", "style.grm"}, kInput,
-   "contained.obj:1:1: error: ", "'wall' (line 1) and 'door' (line 16) overlap", {"obj/contained.obj"}},
+  // Issue 24, item 1: a part inside another is set into it, its container
+  // cut around it (layered_parts.hpp); overlaps neither contains need --stack.
+  {"obj_part_inside_part_is_set_into_it", "infer", {"contained.obj", "-o", "style.grm"}, kOk,
+   "", "", {"obj/contained.obj"}, nullptr, nullptr, 0, {"style.grm", "style.prims.obj"}},
+  {"obj_overlap_names_the_stack", "infer", {"overlapping.obj", "-o", "style.grm"}, kInput,
+   "overlapping.obj:1:1: error: ", "hint: say which is painted over which, bottom to top: --stack wall,door",
+   {"obj/overlapping.obj"}},
+  {"stack_with_an_empty_label", "infer", {"overlapping.obj", "-o", "style.grm", "--stack", "wall,,door"}, kUsage,
+   "infer: error: ", "--stack 'wall,,door' has an empty label", {"obj/overlapping.obj"}},
+  {"stack_listing_a_label_twice", "check", {"ok.grm", "two_parts.obj", "--stack", "wall,door,wall"}, kUsage,
+   "check: error: ", "--stack 'wall,door,wall' lists 'wall' twice", kGrammarAndObj},
   // No straight cut separates a pinwheel: inferred all the same, with S
   // placements and a warning naming the parts.
   {"obj_pinwheel_is_placed_with_a_warning", "infer", {"pinwheel.obj", "-o", "style.grm"}, kOk,

@@ -1,5 +1,9 @@
 #include "support/example_options.hpp"
 
+#include <algorithm>
+
+#include "graph/error.hpp"
+
 namespace vern {
 
 void add_example_options(CommandLine& cl) {
@@ -17,6 +21,9 @@ void add_example_options(CommandLine& cl) {
   cl.add({"--up", "", 1, "y|z",
           "the up axis of OBJ examples that do not declare one with a `# up` line\n"
           "(default y, as Blender exports OBJ; glTF is always y-up)"});
+  cl.add({"--stack", "", 1, "LABEL,LABEL,...",
+          "the order overlapping parts are painted in, bottom to top: each keeps what is visible of\n"
+          "it (annotations: --stack facade,window,sill). A part inside another needs no order"});
 }
 
 ExampleLimits example_limits(const ParsedCommandLine& args) {
@@ -35,6 +42,25 @@ ExampleLimits example_limits(const ParsedCommandLine& args) {
   limits.gltf.outside_folder = args.has("--allow-outside-files");
   if (args.has("--up")) limits.obj_up = *parse_up_axis(CommandLine::one_of(args, "--up", {"y", "z"}));
   return limits;
+}
+
+std::vector<std::string> stack_order(const ParsedCommandLine& args) {
+  std::vector<std::string> labels;
+  if (!args.has("--stack")) return labels;
+  const std::string text = args.value("--stack");
+  std::size_t from = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', from);
+    std::string label = text.substr(from, comma == std::string::npos ? std::string::npos : comma - from);
+    if (label.empty() || std::find(labels.begin(), labels.end(), label) != labels.end())
+      throw Error(ErrorKind::Usage, args.program + ": error: --stack '" + text + "' " +
+                                        (label.empty() ? "has an empty label" : "lists '" + label + "' twice") +
+                                        "\n  hint: labels bottom to top, separated by commas: --stack wall,window,sill");
+    labels.push_back(std::move(label));
+    if (comma == std::string::npos) break;
+    from = comma + 1;
+  }
+  return labels;
 }
 
 }  // namespace vern

@@ -11,6 +11,7 @@
 #include "graph/writer.hpp"
 #include "inverse/check.hpp"
 #include "inverse/infer.hpp"
+#include "inverse/layered_parts.hpp"
 #include "inverse/test_buildings.hpp"
 #include "layout.hpp"
 #include "verdict.hpp"
@@ -58,7 +59,9 @@ std::string run(const Layout& layout) {
   if (!equal_grammars(reread, inferred.grammar))
     return "the inferred grammar reads back as a different graph:\n" + excerpt(text) + "\n" + describe(layout);
 
-  for (const Example& e : layout.examples) {
+  for (const Example& laid_out : layout.examples) {
+    // Parts set into parts, as check takes them (layered_parts.hpp).
+    const Example e = visible_parts(laid_out, Layering{{}, example_tolerance(laid_out, 0)});
     std::vector<LabelledBox> boxes = e.boxes;
     for (LabelledBox& b : boxes) {
       b.min -= e.min;

@@ -230,9 +230,17 @@ class Splitter {
       stack_.pop_back();
       cut(next);
     }
-    check_overlaps();
+    if (overlaps_) {
+      for (const auto& group : groups_) overlaps_in(group, *overlaps_);
+      std::sort(overlaps_->begin(), overlaps_->end());
+    } else {
+      check_overlaps();
+    }
     return root;
   }
+
+  // Overlapping pairs are listed here instead of refused.
+  void collect_overlaps(std::vector<std::pair<std::uint32_t, std::uint32_t>>* out) { overlaps_ = out; }
 
  private:
   // Snaps and ranks the coordinates along axis a (its bounds sorted), and
@@ -752,32 +760,17 @@ class Splitter {
 
   // Overlapping boxes share an unsplittable container; look for them there.
   void check_overlaps() const {
-    std::size_t count = 0;
-    std::pair<std::uint32_t, std::uint32_t> first{kNone, kNone};
-    for (const auto& group : groups_) overlaps_in(group, count, first);
-    if (count == 0) return;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (const auto& group : groups_) overlaps_in(group, pairs);
+    if (pairs.empty()) return;
+    const std::size_t count = pairs.size();
+    const auto first = *std::min_element(pairs.begin(), pairs.end());
     const LabelledBox& a = boxes_[first.first];
     const LabelledBox& b = boxes_[first.second];
-    std::string by;
-    for (int i = 0; i < 3; ++i) {
-      const double o = std::max(0.0, std::min(a.max[i], b.max[i]) - std::max(a.min[i], b.min[i]));
-      by += (i == 0 ? "" : " x ") + amount(o);
-    }
-    std::string message = "objects " + describe_object(a) + " and " + describe_object(b) + " overlap by " + by +
-                          " (along x, y, z)";
+    std::string message = describe_overlap(a, b);
     if (count > 1) message += "; " + std::to_string(count - 1) + " more pair" + (count > 2 ? "s" : "") + " overlap";
-    std::string hint = "inference needs non-overlapping parts; separate or merge these objects";
-    // An object of loose pieces that could not be told apart (their boxes
-    // meet) is one box, which may well be what overlaps.
-    for (const LabelledBox* box : {&a, &b}) {
-      if (box->loose_pieces > 1) {
-        hint = describe_object(*box) + " is " + std::to_string(box->loose_pieces) +
-               " loose pieces in one object: make each its own object (Blender: Edit Mode, Mesh > Separate > "
-               "By Loose Parts), then export again";
-        break;
-      }
-    }
-    fail_at(a, message, hint);
+    fail_at(a, message,
+            loose_pieces_hint(a, b).value_or("inference needs non-overlapping parts; separate or merge these objects"));
   }
 
   // The insides of boxes along an axis as half-open integer intervals:
@@ -793,8 +786,7 @@ class Splitter {
   }
 
   // Sweep and prune along x among a group's boxes.
-  void overlaps_in(std::vector<std::uint32_t> group, std::size_t& count,
-                   std::pair<std::uint32_t, std::uint32_t>& first) const {
+  void overlaps_in(std::vector<std::uint32_t> group, std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) const {
     std::sort(group.begin(), group.end(), [&](std::uint32_t p, std::uint32_t q) {
       const auto ip = inside(p, 0), iq = inside(q, 0);
       return ip[0] != iq[0] ? ip[0] < iq[0] : p < q;
@@ -810,9 +802,7 @@ class Splitter {
           meet = std::max(ib[0], io[0]) < std::min(ib[1], io[1]);
         }
         if (!meet) continue;
-        ++count;
-        const std::pair<std::uint32_t, std::uint32_t> pair{std::min(b, o), std::max(b, o)};
-        if (pair < first) first = pair;
+        pairs.emplace_back(std::min(b, o), std::max(b, o));
       }
       open.push_back(b);
     }
@@ -840,6 +830,7 @@ class Splitter {
   std::vector<std::uint64_t> faces_;          // cuts_line_up_by_chance's (piece, rank) pairs (reused)
   std::vector<Work> stack_;                   // containers still to cut
   std::vector<std::vector<std::uint32_t>> groups_;  // unsplittable containers' boxes
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>* overlaps_ = nullptr;  // collect_overlaps
   // The current sweep's pieces (reused: nothing is allocated per container).
   std::vector<Span> spans_, pieces_;
   std::vector<bool> compound_;  // per piece: a run of touching pieces joined by group_touching_pieces
@@ -860,13 +851,34 @@ void count(const SplitTree& t, std::size_t depth, SplitTreeStats& s) {
 }  // namespace
 
 SplitTree split_boxes(const std::vector<LabelledBox>& boxes, const BoxSplitOptions& options,
-                      const std::string& source) {
+                      const std::string& source, std::vector<std::pair<std::uint32_t, std::uint32_t>>* overlaps) {
+  if (overlaps) overlaps->clear();
   if (boxes.empty()) return {};
   if (boxes.size() >= (std::size_t{1} << 29)) {
     fail(ErrorKind::Limit, source, {}, "too many parts to split (" + std::to_string(boxes.size()) + ")",
          "split the example into smaller buildings");
   }
-  return Splitter(boxes, std::max(0.0, options.tolerance), source).run();
+  Splitter splitter(boxes, std::max(0.0, options.tolerance), source);
+  splitter.collect_overlaps(overlaps);
+  return splitter.run();
+}
+
+std::string describe_overlap(const LabelledBox& a, const LabelledBox& b) {
+  std::string by;
+  for (int i = 0; i < 3; ++i) {
+    const double o = std::max(0.0, std::min(a.max[i], b.max[i]) - std::max(a.min[i], b.min[i]));
+    by += (i == 0 ? "" : " x ") + amount(o);
+  }
+  return "objects " + describe_object(a) + " and " + describe_object(b) + " overlap by " + by + " (along x, y, z)";
+}
+
+std::optional<std::string> loose_pieces_hint(const LabelledBox& a, const LabelledBox& b) {
+  for (const LabelledBox* box : {&a, &b})
+    if (box->loose_pieces > 1)
+      return describe_object(*box) + " is " + std::to_string(box->loose_pieces) +
+             " loose pieces in one object: make each its own object (Blender: Edit Mode, Mesh > Separate > "
+             "By Loose Parts), then export again";
+  return std::nullopt;
 }
 
 SplitTreeStats split_tree_stats(const SplitTree& tree) {

@@ -32,7 +32,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -70,9 +72,21 @@ struct SplitTree {
 // 9.1.3): O(n log n + n m) for n boxes and a tree m levels deep. `source`
 // names the example file in messages. No boxes give an Empty tree of zero
 // extent; one box, a Leaf.
-// Throws vern::Error (Input) for overlapping boxes (see above).
+// Throws vern::Error (Input) for overlapping boxes (see above), unless
+// `overlaps` is given: then every overlapping pair (i < j, box indices) is
+// listed there, sorted, and the tree holds them in Unsplittable
+// containers (layered_parts.hpp resolves them into visible pieces).
 SplitTree split_boxes(const std::vector<LabelledBox>& boxes, const BoxSplitOptions& options,
-                      const std::string& source = {});
+                      const std::string& source = {},
+                      std::vector<std::pair<std::uint32_t, std::uint32_t>>* overlaps = nullptr);
+
+// "objects 'a' (line 4) and 'b' (line 9) overlap by 1 x 0.2 x 0.5 (along
+// x, y, z)": how messages name an overlap.
+std::string describe_overlap(const LabelledBox& a, const LabelledBox& b);
+
+// Where a or b is an object of loose pieces whose boxes meet (one part,
+// loose_parts.hpp), which may well be what overlaps: how to separate them.
+std::optional<std::string> loose_pieces_hint(const LabelledBox& a, const LabelledBox& b);
 
 // Counts of the tree's nodes by kind (Unsplittable leaves are counted as
 // leaves too): for tests and for the caller's warnings.

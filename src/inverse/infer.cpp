@@ -9,6 +9,7 @@
 #include "inverse/derives_examples.hpp"
 #include "inverse/fit_distribution.hpp"
 #include "inverse/joint_sizes.hpp"
+#include "inverse/layered_parts.hpp"
 #include "inverse/merge.hpp"
 #include "inverse/orientation.hpp"
 #include "inverse/overflow_splits.hpp"
@@ -26,10 +27,10 @@ namespace {
 // whole grammar once per rule it makes; beyond this many parts in all
 // neither is tried (a million-part example is one example anyway).
 constexpr std::size_t kJoinedPartsLimit = 200'000;
-}  // namespace
 
-Inference infer(const std::vector<Example>& examples, const InferOptions& options) {
-  if (examples.empty()) throw Error(ErrorKind::Usage, "infer: error: no examples given");
+// infer(), once overlapping parts are known to be resolved (`layered`:
+// each example's overlaps are still to be found while splitting it).
+Inference infer_laid_out(const std::vector<Example>& examples, const InferOptions& options, bool layered) {
   Inference out;
   out.tolerance = options.tolerance;
   if (out.tolerance <= 0)
@@ -47,18 +48,39 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   PartOrientations oriented;
   const PrimitiveLibrary& library = options.primitives ? *options.primitives : PrimitiveLibrary::builtin();
   std::vector<SplitTree> trees(examples.size());
+  // Overlapping parts are found where the split meets them, so examples
+  // without any pay nothing more.
+  std::vector<std::vector<OverlapPair>> overlaps(layered ? examples.size() : 0);
   run_alongside(
       options.threads, [&] { oriented = orient_parts(examples, library, out.tolerance); },
       [&] {
         parallel_for(
             examples.size(), options.threads,
             [&](std::size_t i) {
-              trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{own(examples[i])}, examples[i].source);
+              trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{own(examples[i])}, examples[i].source,
+                                     layered ? &overlaps[i] : nullptr);
             },
             [&](std::size_t done) {
               if (options.progress) options.progress(done, examples.size());
             });
       });
+  // Parts set into parts, or painted over one another: each keeps what is
+  // visible of it (layered_parts.hpp), and inference starts again on
+  // those. Every example's unordered overlaps are reported, not the first.
+  if (std::any_of(overlaps.begin(), overlaps.end(), [](const auto& o) { return !o.empty(); })) {
+    std::vector<Example> visible(examples.size());
+    std::string errors;
+    for (std::size_t i = 0; i < examples.size(); ++i) {
+      try {
+        visible[i] = visible_parts(examples[i], overlaps[i], Layering{options.stack, own(examples[i])});
+      } catch (const Error& e) {
+        if (e.kind() != ErrorKind::Input) throw;
+        errors += (errors.empty() ? "" : "\n") + std::string(e.what());
+      }
+    }
+    if (!errors.empty()) throw Error(ErrorKind::Input, errors);
+    return infer_laid_out(visible, options, false);
+  }
   // Rounding may move a number by a quarter of the smallest example's
   // tolerance: every example then still matches within its own tolerance
   // (check's default), however the rounded numbers of one split add up.
@@ -238,6 +260,13 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   // box when generated.
   out.primitives = std::move(oriented.canonical);
   return out;
+}
+
+}  // namespace
+
+Inference infer(const std::vector<Example>& examples, const InferOptions& options) {
+  if (examples.empty()) throw Error(ErrorKind::Usage, "infer: error: no examples given");
+  return infer_laid_out(examples, options, true);
 }
 
 }  // namespace vern

@@ -38,6 +38,10 @@ struct InferOptions {
   // null: the built-in primitives. A label's first part's own mesh stands
   // in where the library's is not one of its turns.
   const PrimitiveLibrary* primitives = nullptr;
+  // Labels bottom to top (--stack): of two overlapping parts, the later
+  // label is painted over the earlier and the earlier keeps what is
+  // visible of it (layered_parts.hpp). Parts inside others need no order.
+  std::vector<std::string> stack;
   // Threads that split examples (0: one per core); the result is the same.
   unsigned threads = 0;
   // Called as examples are split: (done, total), one call at a time.
