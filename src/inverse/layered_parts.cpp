@@ -170,12 +170,15 @@ Example visible_parts(const Example& example, const std::vector<OverlapPair>& ov
       top = ra > rb ? i : j;
     } else {
       const bool b_in_a = holds(a, b, tol), a_in_b = holds(b, a, tol);
-      if (b_in_a == a_in_b) {
+      if (b_in_a != a_in_b) {
+        top = b_in_a ? j : i;
+      } else if (ra >= 0 && ra == rb) {
+        top = j;  // one listed label: painted in file order, as annotations are
+      } else {
         ++unordered;
         if (!first) first = OverlapPair{i, j};
         continue;
       }
-      top = b_in_a ? j : i;
     }
     const std::uint32_t bottom = top == i ? j : i;
     above[bottom].push_back(top);
@@ -191,7 +194,8 @@ Example visible_parts(const Example& example, const std::vector<OverlapPair>& ov
     const std::string hint =
         loose_pieces_hint(a, b) ? *loose_pieces_hint(a, b)
         : a.label == b.label
-            ? "separate or merge these objects (parts of one label have no order to be painted in)"
+            ? "separate or merge these objects, or list their label in --stack: parts of one listed label are "
+              "painted in file order, the later over the earlier"
             : "say which is painted over which, bottom to top: --stack " + a.label + "," + b.label +
                   " (or the reverse; list every label that overlaps another), or separate them";
     fail_at(example, a, message, hint);

@@ -11,7 +11,10 @@
 //      top), when both are listed and differ;
 //   2. otherwise the part that lies inside the other (within the
 //      tolerance): a window set into its wall, the wall its container;
-//   3. otherwise no one can say, and the pair is an error that names both
+//   3. otherwise, for two parts of one listed label, the later in the
+//      file: annotation tools paint in the order they write (two blinds of
+//      the CMP set overlapping by a few millimetres);
+//   4. otherwise no one can say, and the pair is an error that names both
 //      parts and how to give the order.
 // A part wholly covered is gone. The visible region is tiled by straight
 // cuts where they cut nothing painted over it, on z first, then x, then y
