@@ -25,6 +25,26 @@ std::string right_garage(double height) {
          std::to_string(9 - height) + " : nil } }";
 }
 
+// A placed group (split_graph.hpp): a panel resized past its piece into
+// the next, and a column of three equal tiles. Beside it two columns of
+// one structure vary, so the building varies; the group keeps its own
+// split, which check derives as one, not flattened into the building's,
+// and its tiles stay three (repeatN, as simplifying writes equal parts),
+// not a stretching repeat.
+TEST(Merge, APlacedGroupIsCopiedAsItIsBesideWhatVaries) {
+  Grammar g;
+  const std::string group =
+      "split(x){ ~1 : S(~2, ~1, ~1){ I(a) } | ~1 : nil | ~1 : split(z){ ~1 : I(d) | ~1 : I(d) | ~1 : I(d) } }";
+  const auto roots = examples(g, {"split(x){ ~3 : " + group + " | ~1 : split(z){ ~1 : I(b) | ~2 : I(c) } | ~1 : split(z){ ~2 : I(b) | ~1 : I(c) } }",
+                                  "split(x){ ~3 : " + group + " | ~1 : split(z){ ~1 : I(b) | ~1 : I(c) } }"});
+  MergeOptions options = kUniform;
+  options.placed = {std::get<Split>(g.op(roots[0])).parts[0].child};
+  const std::string written = write_grammar(rules_for(g, merge_examples(g, roots, options)));
+  EXPECT_NE(written.find("--> split(x){\n    ~1 : S(~2, ~1, ~1){ I(a) } |\n    ~1 : nil |\n    ~1 : repeatN(z, 3){ I(d) } }"),
+            std::string::npos)
+      << written;
+}
+
 TEST(Merge, IdenticalExamplesAreOneGraph) {
   Grammar g;
   const auto roots = examples(g, {right_garage(3), right_garage(3)});

@@ -23,10 +23,11 @@ struct Inset {
 
 class Nester {
  public:
-  Nester(Grammar& g, double tolerance) : g_(g), tol_(tolerance) {}
+  Nester(Grammar& g, double tolerance, const std::vector<bool>* kept) : g_(g), tol_(tolerance), kept_(kept) {}
 
   NodeId run(NodeId id) {
     if (const auto it = memo_.find(id); it != memo_.end()) return it->second;
+    if (kept_ != nullptr && id < kept_->size() && (*kept_)[id]) return id;
     const auto [done, changed] = map_children(g_.op(id), [&](NodeId c) { return run(c); });
     NodeId out = id;
     if (changed) {
@@ -177,11 +178,14 @@ class Nester {
 
   Grammar& g_;
   double tol_;
+  const std::vector<bool>* kept_;  // by node id: left as it is, or null
   std::unordered_map<NodeId, NodeId> memo_;
 };
 
 }  // namespace
 
-NodeId nest_inset_runs(Grammar& g, NodeId root, double tolerance) { return Nester(g, tolerance).run(root); }
+NodeId nest_inset_runs(Grammar& g, NodeId root, double tolerance, const std::vector<bool>* kept) {
+  return Nester(g, tolerance, kept).run(root);
+}
 
 }  // namespace vern

@@ -20,12 +20,15 @@
 // last level up.
 #pragma once
 
+#include <vector>
+
 #include "graph/grammar.hpp"
 
 namespace vern {
 
 // The graph below root with such runs nested; tolerance: margins that
-// agree within it are one.
-NodeId nest_inset_runs(Grammar& g, NodeId root, double tolerance);
+// agree within it are one. Nodes `kept` marks (by id; placed groups) are
+// left as they are, and all below them.
+NodeId nest_inset_runs(Grammar& g, NodeId root, double tolerance, const std::vector<bool>* kept = nullptr);
 
 }  // namespace vern

@@ -22,6 +22,7 @@
 #include <span>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "graph/nodes_below.hpp"
 #include "graph/overload.hpp"
@@ -565,13 +566,15 @@ class Unifier {
 // the node itself.
 class Simplifier {
  public:
-  Simplifier(Grammar& g, const MergeOptions& o) : g_(g), opt_(o), memo_(g.node_count(), kNotYet) {}
+  Simplifier(Grammar& g, const MergeOptions& o)
+      : g_(g), opt_(o), memo_(g.node_count(), kNotYet), placed_(o.placed.begin(), o.placed.end()) {}
 
   NodeId run(NodeId id) {
     if (id >= memo_.size()) memo_.resize(g_.node_count(), kNotYet);
     if (memo_[id] != kNotYet) return memo_[id];
     const NodeId out = simplify(id);
     memo_[id] = out;
+    if (placed_.count(id) > 0) placed_.insert(out);  // simplified, still the group
     return out;
   }
 
@@ -616,10 +619,13 @@ class Simplifier {
   // inner sizes c_j give parts s * c_j / sum(c), relative or absolute as
   // the outer part was, which derive the same lengths. Inner absolute
   // sizes or ranges would not (they share space differently), so those stay.
+  //
+  // A placed group keeps its own split (MergeOptions::placed): check
+  // derives it as one, which its parts spread into the parent could not be.
   void flatten_into(std::vector<SplitPart>& out, const SplitPart& part, const Expr& axis) {
     const auto outer = part.size.value.literal();
     const auto* inner = std::get_if<Split>(&g_.op(part.child));
-    if (outer && inner && inner->axis == axis) {
+    if (outer && inner && inner->axis == axis && placed_.count(part.child) == 0) {
       double total = 0;
       bool literal_relative = true;
       for (const auto& q : inner->parts) {
@@ -645,7 +651,7 @@ class Simplifier {
   // Would flatten_into take the inner split's parts in place of this part?
   bool flattens(const SplitPart& part, const Expr& axis) const {
     const auto* inner = std::get_if<Split>(&g_.op(part.child));
-    if (!part.size.value.literal() || !inner || inner->axis != axis) return false;
+    if (!part.size.value.literal() || !inner || inner->axis != axis || placed_.count(part.child) > 0) return false;
     double total = 0;
     for (const auto& q : inner->parts) {
       const auto v = q.size.value.literal();
@@ -747,6 +753,7 @@ class Simplifier {
   Grammar& g_;
   const MergeOptions& opt_;
   std::vector<NodeId> memo_;  // by node id: what it simplified to, or kNotYet
+  std::unordered_set<NodeId> placed_;  // placed groups, as given and as simplified
 };
 
 }  // namespace
@@ -878,8 +885,14 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   TileCounts tile_counts;
   // Tiers set in step by step are nested first (inset_runs.hpp), so that
   // recursion is found below and no run of them is read as tiles.
+  // Placed groups and all below them, copied as they are: nothing folds,
+  // nests, unifies or joins them (MergeOptions::placed).
+  std::vector<bool> copied(g.node_count(), false);
+  for (const NodeId p : options.placed)
+    for (const NodeId n : nodes_below(g, p)) copied[n] = true;
   for (NodeId r : roots)
-    folded.push_back(fold_repeats(g, nest_inset_runs(g, r, options.tolerance), options.tolerance, unlike, &tile_counts));
+    folded.push_back(fold_repeats(g, nest_inset_runs(g, r, options.tolerance, &copied), options.tolerance, unlike,
+                                  &tile_counts, &copied));
   Choose all;
   for (NodeId r : folded) all.options.push_back({Expr{}, Expr::number(1.0), r});
   const NodeId examples = g.intern({std::move(all), {}});
@@ -893,10 +906,6 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   SampleBook book;
   RowBook rows;
   const ExampleCounts counts = example_counts(g, folded);
-  // Placed groups and all below them, copied as they are.
-  std::vector<bool> copied(g.node_count(), false);
-  for (const NodeId p : options.placed)
-    for (const NodeId n : nodes_below(g, p)) copied[n] = true;
   NodeId merged = Unifier(g, options, book, rows, tile_counts, counts, copied).run(examples);
   // Free combinations make parents alike, which unify, which may show more
   // free combinations above: repeat until nothing changes (a few rounds:

@@ -17,11 +17,12 @@ namespace {
 
 class Folder {
  public:
-  Folder(Grammar& g, double tolerance, UnlikeTiles unlike, TileCounts* counts)
-      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts) {}
+  Folder(Grammar& g, double tolerance, UnlikeTiles unlike, TileCounts* counts, const std::vector<bool>* kept)
+      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts), kept_(kept) {}
 
   NodeId run(NodeId id) {
     if (id < memo_.size() && memo_[id] != kNotYet) return memo_[id];
+    if (kept_ != nullptr && id < kept_->size() && (*kept_)[id]) return id;
     // Children first, by id: running them may intern nodes and move the
     // arena, so the operation is copied only when it must be rebuilt.
     const auto [done, changed] = map_children(g_.op(id), [&](NodeId c) { return run(c); });
@@ -505,6 +506,7 @@ class Folder {
   double tol_;
   UnlikeTiles unlike_;
   TileCounts* counts_;  // where to note each repeat's tile count, or null
+  const std::vector<bool>* kept_;  // by node id: left as it is, or null
   std::vector<NodeId> memo_;  // by node id; kNotYet until folded
   std::vector<std::vector<LabelId>> labels_;  // labels_below, by node id
   std::vector<bool> labels_known_;            // by node id: labels_ holds its labels
@@ -512,8 +514,9 @@ class Folder {
 
 }  // namespace
 
-NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike, TileCounts* counts) {
-  return Folder(g, tolerance, unlike, counts).run(root);
+NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike, TileCounts* counts,
+                    const std::vector<bool>* kept) {
+  return Folder(g, tolerance, unlike, counts, kept).run(root);
 }
 
 }  // namespace vern

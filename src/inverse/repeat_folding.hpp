@@ -71,8 +71,9 @@ using TileCounts = std::unordered_map<NodeId, std::vector<TileSeen>>;
 
 // Rewrites every split below root whose sizes are literals; returns the new
 // root (nodes interned in g). Notes each repeat's tile count in counts,
-// where given.
+// where given. Nodes `kept` marks (by id; placed groups, which merging
+// copies as they are) are left as they are, and all below them.
 NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike = UnlikeTiles::Fold,
-                    TileCounts* counts = nullptr);
+                    TileCounts* counts = nullptr, const std::vector<bool>* kept = nullptr);
 
 }  // namespace vern
