@@ -73,7 +73,6 @@ namespace vern {
 namespace {
 
 using Rank = std::uint32_t;
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 // Order of events sharing a rank (9.1.2 puts max bounds before min bounds;
 // flat boxes wrap around both so that no cut passes through them).
