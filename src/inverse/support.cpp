@@ -516,13 +516,26 @@ Support Support::clamp(double lo, double hi) const {
 Support Support::unite(const Support& other) const {
   if (empty()) return other;
   if (other.empty()) return *this;
-  // A whole-number set joined with a continuous one can only stay
-  // whole-number if both are; otherwise it widens to the intervals.
-  Intervals all;
-  all.reserve(intervals.size() + other.intervals.size());
-  for (const Interval& iv : intervals) all.push_back(iv);
-  for (const Interval& iv : other.intervals) all.push_back(iv);
-  return normalised(std::move(all), integer && other.integer);
+  // Both lists are sorted and disjoint already: one merge pass, joining
+  // what overlaps, in linear time (sorting the concatenation again was
+  // most of inferring 37 CMP facades, whose checks unite thousands of
+  // lengths one by one). A whole-number set joined with a continuous one
+  // widens to its intervals; two whole-number sets stay one, and cannot
+  // shrink below the expansion size, since neither was expanded.
+  Support s;
+  s.integer = integer && other.integer;
+  s.intervals.reserve(intervals.size() + other.intervals.size());
+  std::size_t i = 0, j = 0;
+  while (i < intervals.size() || j < other.intervals.size()) {
+    const bool mine = j == other.intervals.size() || (i < intervals.size() && intervals[i] < other.intervals[j]);
+    const Interval& iv = mine ? intervals[i++] : other.intervals[j++];
+    if (!s.intervals.empty() && iv.first <= s.intervals.back().second)
+      s.intervals.back().second = std::max(s.intervals.back().second, iv.second);
+    else
+      s.intervals.push_back(iv);
+  }
+  if (s.intervals.size() > kMaxIntervals) s.intervals = {{s.intervals.front().first, s.intervals.back().second}};
+  return s;
 }
 
 Support Support::intersect(const Support& other) const {
