@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <random>
 
@@ -571,6 +572,41 @@ TEST(BoxSplit, HundredThousandGuillotineBoxesSplitIntoAsManyLeaves) {
   visit(t);
   EXPECT_EQ(misfits, 0u);
   EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(n));
+}
+
+// A street of towers, each of storeys 3 to 4 m high: the storeys of
+// different towers meet the air at heights a few centimetres apart, though
+// every part is metres thick. At a tolerance of 0.3 m neighbouring heights
+// used to chain into one rank tens of metres long, every storey in it flat
+// and overlapping the next. Clusters never span more than the tolerance,
+// so the street splits into its storeys.
+TEST(BoxSplit, CoordinatesCloserThanTheToleranceNeverChainIntoOneRank) {
+  std::mt19937_64 rng(1206);
+  std::uniform_real_distribution<double> storey(3, 4);
+  std::vector<LabelledBox> boxes;
+  for (std::uint32_t t = 0; t < 200; ++t) {
+    double z = 0;
+    for (int k = 0; k < 30; ++k) {
+      const double h = storey(rng);
+      boxes.push_back(part("rect", {10.0 * t, 0, z}, {10.0 * t + 10, 12, z + h}, static_cast<std::uint32_t>(boxes.size())));
+      z += h;
+    }
+  }
+  const double tolerance = 0.3;
+  // The case is real: neighbouring heights chain over tens of metres.
+  std::vector<double> zs;
+  for (const LabelledBox& b : boxes) zs.insert(zs.end(), {b.min.z, b.max.z});
+  std::sort(zs.begin(), zs.end());
+  double longest_chain = 0, chain_start = zs.front();
+  for (std::size_t i = 1; i < zs.size(); ++i) {
+    if (zs[i] - zs[i - 1] > tolerance) chain_start = zs[i];
+    longest_chain = std::max(longest_chain, zs[i] - chain_start);
+  }
+  ASSERT_GT(longest_chain, 30.0);
+  const SplitTree t = split(boxes, tolerance);
+  const SplitTreeStats s = split_tree_stats(t);
+  EXPECT_EQ(s.leaves, boxes.size());
+  EXPECT_EQ(s.unsplittable, 0u);
 }
 
 // The same shape: kinds, axes and boxes equal, extents within tolerance.

@@ -34,8 +34,9 @@
 // order-preserving bit patterns (11 bits a pass), ties in input order.
 //
 // What this file adds to the thesis:
-//   - Snapping: per axis, the sorted coordinates fall into runs whose
-//     neighbours lie within the tolerance; each run is one rank. Every
+//   - Snapping: per axis, the sorted coordinates fall into clusters that
+//     span at most the tolerance, closest neighbours joined first, never
+//     chained (coordinate_clusters.hpp); each cluster is one rank. Every
 //     decision compares ranks exactly, so float noise neither blocks a cut
 //     nor makes a sliver part or a false overlap. Where a cut is placed is
 //     measured locally: the smallest of the coordinates of the boxes that
@@ -67,6 +68,7 @@
 #include <limits>
 
 #include "graph/error.hpp"
+#include "inverse/coordinate_clusters.hpp"
 
 namespace vern {
 
@@ -246,19 +248,21 @@ class Splitter {
   // puts the sweep events in order.
   void rank_axis(std::size_t ax, const std::vector<Bound>& bounds, double tolerance) {
     const std::size_t n = boxes_.size();
-    // A new rank starts where the gap to the previous coordinate exceeds
-    // the tolerance: coordinates within tolerance of a neighbour share one.
+    // Each cluster of coordinates (none spanning more than the tolerance,
+    // coordinate_clusters.hpp) is one rank.
     std::vector<Rank>& lo = lo_[ax];
     std::vector<Rank>& hi = hi_[ax];
     lo.resize(n);
     hi.resize(n);
     std::vector<std::uint32_t> run_start;  // first position of each rank
-    double previous = 0;
+    {
+      std::vector<double> values(bounds.size());
+      for (std::size_t i = 0; i < bounds.size(); ++i) values[i] = from_ordered_bits(bounds[i].key);
+      run_start = cluster_starts(values, tolerance);
+    }
+    Rank rank = 0;
     for (std::size_t i = 0; i < bounds.size(); ++i) {
-      const double v = from_ordered_bits(bounds[i].key);
-      if (i == 0 || v - previous > tolerance) run_start.push_back(static_cast<std::uint32_t>(i));
-      previous = v;
-      const auto rank = static_cast<Rank>(run_start.size() - 1);
+      if (rank + 1 < run_start.size() && run_start[rank + 1] == i) ++rank;
       ((bounds[i].id & 1u) != 0 ? hi : lo)[bounds[i].id >> 1] = rank;
     }
     ranks_[ax] = static_cast<Rank>(run_start.size());
