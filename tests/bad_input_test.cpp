@@ -470,7 +470,7 @@ const std::vector<BadInput> kCases = {
    "byte_stride_below_element.gltf: error: ", "node 0 'wall': its POSITION accessor (accessor 0) has byteStride 4 "
    "(buffer view 0), less than its elements' 12 bytes", {"gltf/byte_stride_below_element.gltf"}},
   {"gltf_unknown_required_extension", "infer", {"unknown_required_extension.gltf", "-o", "style.grm"}, kInput,
-   "unknown_required_extension.gltf: error: ", "requires the extension KHR_draco_mesh_compression, which this "
+   "unknown_required_extension.gltf: error: ", "requires the extension KHR_meshopt_compression, which this "
    "reader does not implement", {"gltf/unknown_required_extension.gltf"}},
   {"gltf_primitive_mode_minus_one", "infer", {"primitive_mode_minus_one.gltf", "-o", "style.grm"}, kInput,
    "primitive_mode_minus_one.gltf: error: ", "node 0 'wall': mesh 0 primitive 0 has mode -1, which is not a glTF "

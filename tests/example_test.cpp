@@ -11,6 +11,7 @@
 #include "forward/obj_writer.hpp"
 #include "graph/error.hpp"
 #include "graph/parser.hpp"
+#include "support/base64.hpp"
 #include "support/example_helpers.hpp"
 #include "support/run_command.hpp"
 
@@ -301,17 +302,7 @@ TEST(Example, GltfAndObjWrittenByTheWritersReadBackToTheSameBoxes) {
   }
 }
 
-std::string base64(const std::string& bytes) {
-  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::size_t got = std::min<std::size_t>(3, bytes.size() - i);
-    std::uint32_t chunk = 0;
-    for (std::size_t k = 0; k < 3; ++k) chunk = (chunk << 8) | (k < got ? static_cast<unsigned char>(bytes[i + k]) : 0u);
-    for (std::size_t k = 0; k < 4; ++k) out += k <= got ? digits[(chunk >> (18 - 6 * k)) & 63] : '=';
-  }
-  return out;
-}
+using test::base64;
 
 // One triangle (0,0,0) (1,0,0) (0,1,0) under a parent turned a quarter
 // about z; the child is moved and scaled: its world box is
@@ -476,22 +467,53 @@ std::string two_meshes_gltf(const std::string& meshes, const std::string& nodes,
 // three.js's exporter names the second node of a name "quad_1" where
 // Blender writes "quad.001": the part is a quad all the same. Only in files
 // three.js says it wrote: elsewhere "quad_1" is a label of its own.
-TEST(Example, NodesThreeJsNumberedCarryTheLabelTheyCopy) {
+// Three nodes of the quad's mesh, read from a file three.js's exporter
+// wrote and from one another tool wrote.
+struct ThreeJsAndOther {
+  Example three, other;
+};
+
+ThreeJsAndOther three_quads_from_three_js_and_other(const std::string& nodes) {
   TempFolder dir;
-  const std::string nodes = R"({"name": "quad", "mesh": 0}, {"name": "quad_1", "mesh": 0, "translation": [5, 0, 0]},
-                              {"name": "quad_2_b", "mesh": 0, "translation": [10, 0, 0]})";
   std::string three = two_meshes_gltf("1", nodes, "0, 1, 2");
-  three.replace(three.find(R"("version": "2.0")"), 16, R"("version": "2.0", "generator": "THREE.GLTFExporter r150")");
+  three.replace(three.find(R"("version": "2.0")"), 16, R"("version": "2.0", "generator": "THREE.GLTFExporter r160")");
   write_text(dir / "three.gltf", three);
   write_text(dir / "other.gltf", two_meshes_gltf("1", nodes, "0, 1, 2"));
-  const Example from_three = load_example(dir / "three.gltf");
+  ThreeJsAndOther out{load_example(dir / "three.gltf"), load_example(dir / "other.gltf")};
+  EXPECT_EQ(out.three.boxes.size(), 3u);
+  EXPECT_EQ(out.other.boxes.size(), 3u);
+  return out;
+}
+
+TEST(Example, NodesThreeJsNumberedCarryTheLabelTheyCopy) {
+  const std::string nodes = R"({"name": "quad", "mesh": 0}, {"name": "quad_1", "mesh": 0, "translation": [5, 0, 0]},
+                              {"name": "quad_2_b", "mesh": 0, "translation": [10, 0, 0]})";
+  const auto [from_three, other] = three_quads_from_three_js_and_other(nodes);
   ASSERT_EQ(from_three.boxes.size(), 3u);
   EXPECT_EQ(from_three.boxes[0].label, "quad");
   EXPECT_EQ(from_three.boxes[1].label, "quad");
   EXPECT_EQ(from_three.boxes[2].label, "quad_2_b");  // no copy number: a name of its own
-  const Example other = load_example(dir / "other.gltf");
   ASSERT_EQ(other.boxes.size(), 3u);
   EXPECT_EQ(other.boxes[1].label, "quad_1");
+}
+
+// three.js keeps the name it read as extras.name and renames the node
+// ("window.001" to "window001", "a b" to "a_b", a taken name to "..._1"):
+// in its files the kept name is the part's. Elsewhere extras are the
+// author's own and the node's name is the part's.
+TEST(Example, NodesThreeJsRenamedCarryTheNameItKeptInExtras) {
+  const std::string nodes = R"({"name": "window001", "mesh": 0, "extras": {"name": "window.001"}},
+                              {"name": "a_b", "mesh": 0, "translation": [5, 0, 0], "extras": {"name": "a b"}},
+                              {"name": "quad_1", "mesh": 0, "translation": [10, 0, 0], "extras": {"name": 7}})";
+  const auto [from_three, other] = three_quads_from_three_js_and_other(nodes);
+  ASSERT_EQ(from_three.boxes.size(), 3u);
+  EXPECT_EQ(from_three.boxes[0].label, "window");
+  EXPECT_EQ(from_three.boxes[1].label, "a b");
+  EXPECT_EQ(from_three.boxes[2].label, "quad");  // extras.name no text: the node's name, its copy number dropped
+  ASSERT_EQ(other.boxes.size(), 3u);
+  EXPECT_EQ(other.boxes[0].label, "window001");
+  EXPECT_EQ(other.boxes[1].label, "a_b");
+  EXPECT_EQ(other.boxes[2].label, "quad_1");
 }
 
 // A mesh that several nodes use is read once and placed for each

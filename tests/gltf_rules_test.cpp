@@ -105,9 +105,9 @@ TEST(GltfRules, TheAssetIsGltf2AndItsRequiredExtensionsAreImplemented) {
                  "asset.minVersion '2.1' is not a glTF version at most its version 2.0");
   expect_refused(g.with(R"("version": "2.0")", R"("version": "2.2", "minVersion": "2.1")"),
                  "asset.minVersion is 2.1: the file needs glTF 2.1 features");
-  expect_refused(g.with(R"("asset")", R"("extensionsUsed": ["KHR_draco_mesh_compression"],)"
-                                      R"( "extensionsRequired": ["KHR_draco_mesh_compression"], "asset")"),
-                 "requires the extension KHR_draco_mesh_compression, which this reader does not implement");
+  expect_refused(g.with(R"("asset")", R"("extensionsUsed": ["KHR_meshopt_compression"],)"
+                                      R"( "extensionsRequired": ["KHR_meshopt_compression"], "asset")"),
+                 "requires the extension KHR_meshopt_compression, which this reader does not implement");
   expect_refused(g.with(R"("asset")", R"("extensionsRequired": ["EXT_mesh_gpu_instancing"], "asset")"),
                  "requires the extension EXT_mesh_gpu_instancing but does not list it in extensionsUsed");
 }

@@ -29,6 +29,7 @@
 #include "graph/number_format.hpp"
 #include "graph/out_of_memory.hpp"
 #include "inverse/glb_chunks.hpp"
+#include "inverse/gltf_compression.hpp"
 #include "inverse/gltf_files.hpp"
 #include "inverse/gltf_rules.hpp"
 #include "inverse/json_cost.hpp"
@@ -679,6 +680,18 @@ void place_mesh(const LocalMesh& local, const Placement& placement, const std::s
 // One that several parts use is kept (LocalMesh) and only placed for the
 // others; one used once is not kept, as a scanned statue's copy would
 // double the memory reading it takes.
+// The name a node had before three.js renamed it, or null. three.js's
+// loader makes every name unique ("rect", "rect_1") and drops the
+// characters its animation paths reserve ("window.001" becomes
+// "window001", "a b" "a_b"), but keeps the name it read as userData.name,
+// which its exporter writes as extras.name: the part's name, copy number
+// and all.
+const std::string* three_js_kept_name(const tinygltf::Node& node) {
+  if (!node.extras.IsObject() || !node.extras.Has("name")) return nullptr;
+  const tinygltf::Value& name = node.extras.Get("name");
+  return name.IsString() ? &name.Get<std::string>() : nullptr;
+}
+
 class MeshReader {
  public:
   MeshReader(const tinygltf::Model& model, const std::string& source, const ExampleLimits& limits)
@@ -812,13 +825,17 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     json = chunks.json;
   }
   check_json_cost({reinterpret_cast<const char*>(json.data()), json.size()}, binary, ex.source, limits.gltf);
+  // Compressed files hold what tinygltf refuses (gltf_compression.hpp).
+  if (auto prepared = prepared_for_tinygltf(bytes, binary)) bytes = std::move(*prepared);
   // The common GLB is read without tinygltf's JSON document; every other
   // file, and every error, is tinygltf's (plain_glb.hpp).
   std::optional<tinygltf::Model> plain = binary ? read_plain_glb(bytes) : std::nullopt;
   tinygltf::Model model = plain ? std::move(*plain) : load_with_tinygltf(path, binary, limits, bytes, ex.source);
   plain.reset();
   bytes = {};
+  // The file's own rules first: decoded data lives in buffers of our own.
   check_gltf_file_rules(model, ex.source);
+  decode_compression(model, ex.source, limits.gltf.max_bytes);
 
   // The default scene's roots (check_gltf_file_rules found it); without
   // scenes, every node no other node lists as a child.
@@ -874,8 +891,10 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     // first word (written with its spaces as %20).
     const auto instances = instance_matrices(model, node, ex.source, who, limits, ex.boxes.size());
     const std::size_t parts = instances ? instances->size() : 1;
-    std::string_view name = instances ? std::string_view(node.name).substr(0, node.name.find(' ')) : node.name;
-    if (made_by_three_js) name = without_three_js_copy_number(name);
+    const std::string* kept = made_by_three_js ? three_js_kept_name(node) : nullptr;
+    const std::string& full = kept ? *kept : node.name;
+    std::string_view name = instances ? std::string_view(full).substr(0, full.find(' ')) : std::string_view(full);
+    if (made_by_three_js && !kept) name = without_three_js_copy_number(name);
     const std::string label = read_label(name, NameOf::Part, ex.source, {}, "the name of node " + std::to_string(index));
     for (std::size_t i = 0; i < parts; ++i) {
       const PartName part{index, node.name, instances ? std::optional<std::size_t>(i) : std::nullopt};

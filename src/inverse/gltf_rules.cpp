@@ -69,6 +69,7 @@ void check_asset(const tinygltf::Model& model, const std::string& source) {
 // only change how a surface looks, which inference does not read.
 bool may_be_required(const std::string& name) {
   if (name == "EXT_mesh_gpu_instancing" || name == "KHR_mesh_quantization") return true;
+  if (name == "EXT_meshopt_compression" || name == "KHR_draco_mesh_compression") return true;  // gltf_compression.hpp
   for (const char* look : {"KHR_materials_", "KHR_texture_", "EXT_texture_"})
     if (name.starts_with(look)) return true;
   return name == "KHR_lights_punctual";
