@@ -8,12 +8,14 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <regex>
 #include <sstream>
 
 #include <glm/glm.hpp>
 
 #include "graph/description_length.hpp"
 #include "graph/parser.hpp"
+#include "support/base64.hpp"
 #include "support/example_helpers.hpp"
 #include "support/run_command.hpp"
 
@@ -239,6 +241,92 @@ TEST(InferCli, BlenderExportedObjHasItsHeightOnZ) {
   r = run_program("check", {"house.grm", "house_6.obj", "--up", "x"}, dir.path());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--up"), std::string::npos) << r.err;
+}
+
+// Boxes as Blender's glTF exporter writes them: a unit cube mesh placed by
+// each object's translation and scale, numbers Blender keeps as 32-bit
+// floats and writes as the doubles they are (12.600000381469727 for 12.6);
+// y up, so the grammar's (x, y, z) is the file's (x, z, -y).
+std::string blender_gltf(const std::vector<std::pair<std::string, std::pair<glm::dvec3, glm::dvec3>>>& boxes) {
+  std::string bytes;
+  auto put = [&](const void* p, std::size_t n) { bytes.append(static_cast<const char*>(p), n); };
+  for (int i = 0; i < 8; ++i) {
+    const float v[3] = {static_cast<float>(i & 1), static_cast<float>((i >> 1) & 1), static_cast<float>((i >> 2) & 1)};
+    put(v, sizeof v);
+  }
+  for (const int corner : {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                           2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5}) {
+    const auto t = static_cast<std::uint16_t>(corner);
+    put(&t, sizeof t);
+  }
+  auto f32 = [](double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", static_cast<double>(static_cast<float>(v)));
+    return std::string(text);
+  };
+  std::string nodes, roots;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const auto& [lo, hi] = boxes[i].second;
+    nodes += std::string(i ? ",\n" : "") + R"({"name": ")" + boxes[i].first + R"(", "mesh": 0, "translation": [)" +
+             f32(lo.x) + ", " + f32(lo.z) + ", " + f32(-hi.y) + R"(], "scale": [)" + f32(hi.x - lo.x) + ", " +
+             f32(hi.z - lo.z) + ", " + f32(hi.y - lo.y) + "]}";
+    roots += (i ? ", " : "") + std::to_string(i);
+  }
+  return R"({"asset": {"version": "2.0", "generator": "Khronos glTF Blender I/O v3.4.50"},
+  "buffers": [{"byteLength": 168, "uri": "data:application/octet-stream;base64,)" + test::base64(bytes) + R"("}],
+  "bufferViews": [{"buffer": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 72}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "nodes": [)" + nodes + R"(], "scenes": [{"nodes": [)" + roots + R"(]}], "scene": 0})";
+}
+
+// One Blender scene of houses exported as OBJ (six decimals) and as glTF
+// (32-bit floats written as doubles) gives one grammar: the floats' noise
+// (15.600000381469727, and sizes computed from it) comes out as the
+// numbers typed, ranges' bounds included (rand(..., 18.600001) before).
+TEST(InferCli, AnObjAndAGltfOfOneBlenderSceneGiveOneGrammar) {
+  TempFolder dir;
+  fs::create_directories(dir / "obj");
+  fs::create_directories(dir / "gltf");
+  // Widths and heights whose floats lie outside the decimals at the
+  // extremes (4.1 and 4.4 below, 15.6 and 13.3 above), where a range's
+  // bounds are drawn from.
+  const double sizes[4][2] = {{4.1, 4.4}, {9.7, 7.8}, {15.6, 13.3}, {6.1, 5.3}};
+  std::vector<std::string> objs, gltfs;
+  for (int i = 0; i < 4; ++i) {
+    const double w = sizes[i][0], h = sizes[i][1];
+    const glm::dvec3 wall_hi(w, 2.3, h * 0.8), roof_lo(0, 0, h * 0.8), roof_hi(w, 2.3, h);
+    int base = 1;
+    const std::string name = "house_" + std::to_string(i);
+    std::string obj = "# Blender 3.4.1\n" + blender_box("wall", {0, 0, 0}, wall_hi, base);
+    obj += blender_box("roof", roof_lo, roof_hi, base);
+    write_text(dir / "obj" / (name + ".obj"), obj);
+    write_text(dir / "gltf" / (name + ".gltf"), blender_gltf({{"wall", {{0, 0, 0}, wall_hi}}, {"roof", {roof_lo, roof_hi}}}));
+    objs.push_back("obj/" + name + ".obj");
+    gltfs.push_back("gltf/" + name + ".gltf");
+  }
+  auto grammar_of = [&](std::vector<std::string> files, const std::string& out) {
+    files.insert(files.end(), {"-o", out, "-q"});
+    const auto r = run_program("infer", files, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    std::string text;  // without the comments, which name the files
+    std::istringstream in(read_file(dir / out));
+    for (std::string line; std::getline(in, line);)
+      if (!line.starts_with("#") && !line.starts_with("@primitives")) text += line + "\n";
+    return text;
+  };
+  const std::string from_obj = grammar_of(objs, "obj.grm");
+  const std::string from_gltf = grammar_of(gltfs, "gltf.grm");
+  EXPECT_EQ(from_obj, from_gltf);
+  // Numbers as typed: none has the float's digits (15.600001, 4.099999).
+  EXPECT_FALSE(std::regex_search(from_gltf, std::regex("[0-9]\\.[0-9]{5}"))) << from_gltf;
+  for (const auto& [grammar, files] : {std::pair{"obj.grm", objs}, std::pair{"gltf.grm", gltfs}}) {
+    std::vector<std::string> args = {grammar};
+    args.insert(args.end(), files.begin(), files.end());
+    const auto r = run_program("check", args, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << grammar << "\n" << r.out << r.err;
+  }
 }
 
 // The OBJ objects a file names, sorted: its labels as written.

@@ -118,6 +118,13 @@ std::optional<std::vector<double>> row_through(const std::vector<Observation>& v
 
 }  // namespace
 
+namespace {
+
+// The shortest decimal in [a, b] (a <= b).
+double shortest_within(double a, double b) { return shortest_decimal((a + b) / 2, (b - a) / 2); }
+
+}  // namespace
+
 Distribution fit_distribution(const std::vector<Observation>& all, const FitOptions& options) {
   if (all.empty()) throw Error(ErrorKind::Internal, "error: a distribution fitted to no observations");
   const std::vector<Observation> observations = once_per_example(all, options.resolution);
@@ -142,7 +149,16 @@ Distribution fit_distribution(const std::vector<Observation>& all, const FitOpti
   // Every model's probabilities are per resolution-wide bin.
   const double log_bin = std::log(options.resolution);
   const double widen = (hi_seen - lo_seen) / (n - 1);
-  const double lo = std::max(options.floor, lo_seen - widen), hi = hi_seen + widen;
+  // The widened bounds estimate where the style stops, to a fraction of
+  // the widening: each is the shortest decimal within a tenth of it (never
+  // inside the values seen, nor below the floor). So they read as a person
+  // writes them (rand(2, 19.4), not rand(2.05, 19.433333)), and the
+  // examples' float noise stays out (19.433334 from a GLB where the OBJ of
+  // the same Blender scene gave 19.433333).
+  const double slack = widen / 10;
+  const double lo = shortest_within(std::max(options.floor, lo_seen - widen - slack),
+                                    std::max(options.floor, std::min(lo_seen - widen + slack, lo_seen)));
+  const double hi = shortest_within(std::max(hi_seen + widen - slack, hi_seen), hi_seen + widen + slack);
 
   // rand(lo, hi).
   best.kind = DistributionKind::Uniform;
@@ -283,8 +299,8 @@ std::optional<Distribution> written_distribution(const Expr& e) {
 
 Distribution short_decimals(Distribution d, double tolerance) {
   for (double& v : d.values) v = shortest_decimal(v, tolerance);
-  d.lo = shortest_decimal(d.lo, tolerance, -1);
-  d.hi = shortest_decimal(d.hi, tolerance, +1);
+  d.lo = shortest_decimal(d.lo, tolerance);
+  d.hi = shortest_decimal(d.hi, tolerance);
   if (d.kind == DistributionKind::TruncatedNormal) {
     d.mu = shortest_decimal(d.mu, std::max(tolerance, d.sigma * 0.01));
     d.sigma = shortest_decimal(d.sigma, std::max(tolerance, d.sigma * 0.01));

@@ -20,7 +20,8 @@
 // one footing. The continuous supports widen the range seen by the
 // unbiased estimate for a uniform sample ((max - min) / (n - 1) each side;
 // never below `floor`): ten examples say the style reaches a little
-// beyond their own extremes.
+// beyond their own extremes. Being estimates, the widened bounds are the
+// shortest decimals within a tenth of the widening.
 #pragma once
 
 #include <cstdint>
@@ -87,8 +88,9 @@ Expr distribution_expr(const Distribution& d);
 // none for anything else (rand(0, s1), 2 * rand(1, 2)).
 std::optional<Distribution> written_distribution(const Expr& e);
 
-// The distribution's numbers as short decimals: support bounds rounded
-// outwards within `tolerance`, mu and sigma to about a hundredth of sigma.
+// The distribution's numbers as short decimals: values and support bounds
+// the shortest within `tolerance` either way (tidy_numbers.hpp says why),
+// mu and sigma to about a hundredth of sigma.
 Distribution short_decimals(Distribution d, double tolerance);
 
 }  // namespace vern

@@ -117,13 +117,13 @@ class Tidier {
   Expr tidy(const Expr& e) const {
     if (auto v = e.literal()) return Expr::number(shortest_decimal(*v, tol_));
     if (auto r = literal_range(e))
-      return range_expr({shortest_decimal(r->lo, tol_, -1), shortest_decimal(r->hi, tol_, +1)}, 0.0);
+      return range_expr({shortest_decimal(r->lo, tol_), shortest_decimal(r->hi, tol_)}, 0.0);
     return tidy_distribution(e);
   }
 
   // Fitted distributions (fit_distribution.hpp) of literal arguments:
-  // choice(...) values within the tolerance; tnormal's support outward
-  // like a range's, its mean and spread to a hundredth of the spread (they
+  // choice(...) values within the tolerance; tnormal's support like a
+  // range's, its mean and spread to a hundredth of the spread (they
   // shape the variants, not which examples derive).
   Expr tidy_distribution(const Expr& e) const {
     const ExprNode& root = e.node(e.root());
@@ -140,7 +140,7 @@ class Tidier {
     } else if (f == Function::TNormal && args.size() == 4) {
       const double fine = std::max(tol_, args[1] / 100);
       out = {Expr::number(shortest_decimal(args[0], fine)), Expr::number(shortest_decimal(args[1], fine)),
-             Expr::number(shortest_decimal(args[2], tol_, -1)), Expr::number(shortest_decimal(args[3], tol_, +1))};
+             Expr::number(shortest_decimal(args[2], tol_)), Expr::number(shortest_decimal(args[3], tol_))};
     } else {
       return e;
     }

@@ -9,8 +9,12 @@
 //     the absolute parts are rounded as below).
 //   - Any other literal becomes the shortest decimal within the tolerance:
 //     0.30000000000000004 is 0.3.
-//   - A range rand(lo, hi) rounds outward to the shortest decimals within
-//     the tolerance (lo down, hi up), so every example stays inside it.
+//   - A range rand(lo, hi) rounds each bound to the shortest decimal within
+//     the tolerance, either way: a Blender scene's 15.800001 (a float's
+//     noise) is 15.8. An example at a bound then lies outside the range by
+//     less than the tolerance, and check takes it, as it takes any size
+//     within the tolerance; rounding outward kept the noise in the text,
+//     and an OBJ and a GLB of one scene gave different grammars.
 #pragma once
 
 #include "graph/grammar.hpp"
