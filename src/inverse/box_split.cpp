@@ -255,11 +255,9 @@ class Splitter {
     lo.resize(n);
     hi.resize(n);
     std::vector<std::uint32_t> run_start;  // first position of each rank
-    {
-      std::vector<double> values(bounds.size());
-      for (std::size_t i = 0; i < bounds.size(); ++i) values[i] = from_ordered_bits(bounds[i].key);
-      run_start = cluster_starts(values, tolerance);
-    }
+    run_start = cluster_starts(
+        static_cast<std::uint32_t>(bounds.size()), [&](std::uint32_t i) { return from_ordered_bits(bounds[i].key); },
+        tolerance);
     Rank rank = 0;
     for (std::size_t i = 0; i < bounds.size(); ++i) {
       if (rank + 1 < run_start.size() && run_start[rank + 1] == i) ++rank;

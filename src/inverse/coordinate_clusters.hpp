@@ -19,10 +19,43 @@
 
 namespace vern {
 
-// The first position of each cluster of `sorted` (ascending; NaN-free),
-// in order; the first is 0 (empty input: none). O(n) where every run of
-// neighbours within the tolerance spans at most the tolerance (the usual
-// case), O(n log n) at worst.
-std::vector<std::uint32_t> cluster_starts(std::span<const double> sorted, double tolerance);
+// Appends to `starts` the first position (offset by `from`) of every
+// cluster of `chain` but its first: a run of sorted values, each within
+// the tolerance of the next, spanning more than it.
+void split_chain(std::span<const double> chain, std::uint32_t from, double tolerance,
+                 std::vector<std::uint32_t>& starts);
+
+// The first position of each cluster of the n values value(0) <= value(1)
+// <= ... (NaN-free), in order; the first is 0 (n = 0: none). One pass
+// where every run of neighbours within the tolerance spans at most the
+// tolerance (the usual case); a longer run is copied and split, O(k log k).
+template <typename Value>
+std::vector<std::uint32_t> cluster_starts(std::uint32_t n, Value value, double tolerance) {
+  std::vector<std::uint32_t> starts;
+  std::uint32_t chain = 0;  // first position of the current run of near neighbours
+  double first = 0, previous = 0;
+  for (std::uint32_t i = 0; i <= n; ++i) {
+    const double v = i < n ? value(i) : 0.0;
+    if (i < n && i > 0 && v - previous <= tolerance) {
+      previous = v;
+      continue;
+    }
+    // [chain, i) is a run of neighbours within the tolerance.
+    if (i > 0 && previous - first > tolerance) {
+      std::vector<double> run(i - chain);
+      for (std::uint32_t k = chain; k < i; ++k) run[k - chain] = value(k);
+      split_chain(run, chain, tolerance, starts);
+    }
+    if (i < n) starts.push_back(i);
+    chain = i;
+    first = previous = v;
+  }
+  return starts;
+}
+
+inline std::vector<std::uint32_t> cluster_starts(std::span<const double> sorted, double tolerance) {
+  return cluster_starts(static_cast<std::uint32_t>(sorted.size()), [&](std::uint32_t i) { return sorted[i]; },
+                        tolerance);
+}
 
 }  // namespace vern
