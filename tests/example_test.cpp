@@ -11,7 +11,7 @@
 #include "forward/obj_writer.hpp"
 #include "graph/error.hpp"
 #include "graph/parser.hpp"
-#include "support/base64.hpp"
+#include "forward/gltf_container.hpp"
 #include "support/example_helpers.hpp"
 #include "support/run_command.hpp"
 
@@ -302,7 +302,6 @@ TEST(Example, GltfAndObjWrittenByTheWritersReadBackToTheSameBoxes) {
   }
 }
 
-using test::base64;
 
 // One triangle (0,0,0) (1,0,0) (0,1,0) under a parent turned a quarter
 // about z; the child is moved and scaled: its world box is

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "forward/gltf_container.hpp"
 #include "graph/error.hpp"
 #include "inverse/example.hpp"
 #include "inverse/glb_chunks.hpp"
@@ -95,22 +96,9 @@ struct Glb {
   }
 
   void write(const fs::path& p) const {
-    std::string text = json.dump();
-    while (text.size() % 4) text.push_back(' ');
-    std::string out;
-    auto u32 = [&](std::uint32_t v) {
-      for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xffu));
-    };
-    u32(0x46546C67u);
-    u32(2);
-    u32(static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + bin.size()));
-    u32(static_cast<std::uint32_t>(text.size()));
-    u32(0x4E4F534Au);
-    out += text;
-    u32(static_cast<std::uint32_t>(bin.size()));
-    u32(0x004E4942u);
-    out.append(bin.begin(), bin.end());
-    test::write_text(p, out);
+    const std::string text = json.dump();
+    const std::string bytes(bin.begin(), bin.end());
+    test::write_text(p, glb_header(text.size(), bin.size()) + text + glb_between(text.size(), bin.size()) + bytes);
   }
 };
 

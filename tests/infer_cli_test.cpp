@@ -15,7 +15,7 @@
 
 #include "graph/description_length.hpp"
 #include "graph/parser.hpp"
-#include "support/base64.hpp"
+#include "forward/gltf_container.hpp"
 #include "support/example_helpers.hpp"
 #include "support/run_command.hpp"
 
@@ -273,7 +273,7 @@ std::string blender_gltf(const std::vector<std::pair<std::string, std::pair<glm:
     roots += (i ? ", " : "") + std::to_string(i);
   }
   return R"({"asset": {"version": "2.0", "generator": "Khronos glTF Blender I/O v3.4.50"},
-  "buffers": [{"byteLength": 168, "uri": "data:application/octet-stream;base64,)" + test::base64(bytes) + R"("}],
+  "buffers": [{"byteLength": 168, "uri": "data:application/octet-stream;base64,)" + base64(bytes) + R"("}],
   "bufferViews": [{"buffer": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 72}],
   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3"},
                 {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}],

@@ -816,8 +816,9 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
   }
   // The container and the JSON are checked before any reader sees them.
   std::span<const unsigned char> json = bytes;
+  GlbChunks chunks;
   if (binary) {
-    const GlbChunks chunks = glb_chunks(bytes);
+    chunks = glb_chunks(bytes);
     if (!chunks.problem.empty()) {
       fail(ErrorKind::Input, ex.source, {}, "is not a valid GLB file: " + chunks.problem,
            "export the file again, or check it with scripts/validate-gltf");
@@ -826,7 +827,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
   }
   check_json_cost({reinterpret_cast<const char*>(json.data()), json.size()}, binary, ex.source, limits.gltf);
   // Compressed files hold what tinygltf refuses (gltf_compression.hpp).
-  if (auto prepared = prepared_for_tinygltf(bytes, binary)) bytes = std::move(*prepared);
+  if (auto prepared = prepared_for_tinygltf(json, binary ? &chunks : nullptr)) bytes = std::move(*prepared);
   // The common GLB is read without tinygltf's JSON document; every other
   // file, and every error, is tinygltf's (plain_glb.hpp).
   std::optional<tinygltf::Model> plain = binary ? read_plain_glb(bytes) : std::nullopt;

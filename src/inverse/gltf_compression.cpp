@@ -13,7 +13,7 @@
 #include <string_view>
 
 #include "graph/error.hpp"
-#include "inverse/glb_chunks.hpp"
+#include "forward/gltf_container.hpp"
 
 namespace vern {
 
@@ -35,10 +35,6 @@ bool is_fallback(const nlohmann::ordered_json& buffer) {
   if (meshopt == ext->end() || !meshopt->is_object()) return false;
   const auto fallback = meshopt->find("fallback");
   return fallback != meshopt->end() && fallback->is_boolean() && fallback->get<bool>();
-}
-
-void put_u32(std::vector<unsigned char>& out, std::uint32_t v) {
-  for (int i = 0; i < 4; ++i) out.push_back(static_cast<unsigned char>((v >> (8 * i)) & 0xffu));
 }
 
 // A member of an extension object as a whole number in [0, max], or
@@ -263,16 +259,10 @@ void decode_draco_primitive(tinygltf::Model& model, std::size_t m, std::size_t p
 
 }  // namespace
 
-std::optional<std::vector<unsigned char>> prepared_for_tinygltf(std::span<const unsigned char> file, bool binary) {
-  GlbChunks chunks;
-  std::span<const unsigned char> text = file;
-  if (binary) {
-    chunks = glb_chunks(file);
-    if (!chunks.problem.empty()) return std::nullopt;
-    text = chunks.json;
-  }
-  const std::string_view json(reinterpret_cast<const char*>(text.data()), text.size());
-  if (json.find(kMeshopt) == std::string_view::npos && json.find(kDraco) == std::string_view::npos) return std::nullopt;
+std::optional<std::vector<unsigned char>> prepared_for_tinygltf(std::span<const unsigned char> json_bytes,
+                                                                const GlbChunks* glb) {
+  const std::string_view json(reinterpret_cast<const char*>(json_bytes.data()), json_bytes.size());
+  if (json.find("_compression") == std::string_view::npos) return std::nullopt;
   nlohmann::ordered_json doc = nlohmann::ordered_json::parse(json, nullptr, false);
   if (doc.is_discarded() || !doc.is_object()) return std::nullopt;
   bool changed = false;
@@ -298,22 +288,17 @@ std::optional<std::vector<unsigned char>> prepared_for_tinygltf(std::span<const 
   }
   if (!changed) return std::nullopt;
   std::string new_json = doc.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
-  if (!binary) return std::vector<unsigned char>(new_json.begin(), new_json.end());
-  while (new_json.size() % 4 != 0) new_json.push_back(' ');
+  if (!glb) return std::vector<unsigned char>(new_json.begin(), new_json.end());
+  // As the writer lays a GLB out (gltf_container.hpp); the BIN chunk is
+  // 4-byte aligned already (glb_chunks checked it).
+  const std::string head = glb_header(new_json.size(), glb->bin.size());
+  const std::string between = glb_between(new_json.size(), glb->bin.size());
   std::vector<unsigned char> out;
-  const std::size_t bin_chunk = chunks.has_bin ? 8 + chunks.bin.size() : 0;
-  out.reserve(12 + 8 + new_json.size() + bin_chunk);
-  put_u32(out, 0x46546C67u);  // "glTF"
-  put_u32(out, 2);
-  put_u32(out, static_cast<std::uint32_t>(12 + 8 + new_json.size() + bin_chunk));
-  put_u32(out, static_cast<std::uint32_t>(new_json.size()));
-  put_u32(out, 0x4E4F534Au);  // "JSON"
+  out.reserve(head.size() + new_json.size() + between.size() + glb->bin.size());
+  out.insert(out.end(), head.begin(), head.end());
   out.insert(out.end(), new_json.begin(), new_json.end());
-  if (chunks.has_bin) {
-    put_u32(out, static_cast<std::uint32_t>(chunks.bin.size()));
-    put_u32(out, 0x004E4942u);  // "BIN"
-    out.insert(out.end(), chunks.bin.begin(), chunks.bin.end());
-  }
+  out.insert(out.end(), between.begin(), between.end());
+  out.insert(out.end(), glb->bin.begin(), glb->bin.end());
   return out;
 }
 

@@ -31,17 +31,21 @@
 
 #include <tiny_gltf.h>
 
+#include "inverse/glb_chunks.hpp"
+
 namespace vern {
 
-// The file (a GLB when `binary`, else glTF JSON text) as tinygltf reads
-// it: every buffer that EXT_meshopt_compression marks as a fallback and
-// that has no URI given one byte of data in a data URI, and every Draco
-// primitive's indices left out (their accessor has no buffer view, which
-// tinygltf refuses; decode_compression gives the primitive its decoded
-// triangles). Nothing when there is no such buffer or primitive (the
-// common file, found by a look for the extensions' names) or when the JSON
-// does not parse (tinygltf then says why).
-std::optional<std::vector<unsigned char>> prepared_for_tinygltf(std::span<const unsigned char> file, bool binary);
+// The file as tinygltf reads it, given its JSON text and, for a GLB, its
+// chunks (glb_chunks, sound): every buffer that EXT_meshopt_compression
+// marks as a fallback and that has no URI given one byte of data in a
+// data URI, and every Draco primitive's indices left out (their accessor
+// has no buffer view, which tinygltf refuses; decode_compression gives
+// the primitive its decoded triangles). Nothing when there is no such
+// buffer or primitive (the common file, found by one look for the
+// extensions' common "_compression") or when the JSON does not parse
+// (tinygltf then says why).
+std::optional<std::vector<unsigned char>> prepared_for_tinygltf(std::span<const unsigned char> json,
+                                                                const GlbChunks* glb);
 
 // Decodes every EXT_meshopt_compression buffer view and every
 // KHR_draco_mesh_compression primitive of `model` in place: each becomes
