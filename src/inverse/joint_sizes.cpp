@@ -637,6 +637,28 @@ class Joiner {
       for (const auto& f : parts)
         if (f)
           for (std::size_t k = 0; k < f->c.size(); ++k) uses[k] += f->c[k] != 0 ? 1 : 0;
+    // A split brings one parameter at most (check solves for one unknown
+    // per split). Where its rest would make it bring more, shares used
+    // nowhere else becoming parameters only to be subtracted there, the
+    // rest is drawn on its own instead, as its shares were seen: the
+    // sizes the split shares with the rest of the region (a wing's height
+    // with the other wing's) still join, where the region was given up.
+    for (const Rest& rest : rests) {
+      std::size_t brings = 0;
+      for (std::size_t k = 0; k < drawn.size(); ++k) brings += drawn_at[k] == rest.occurrence && uses[k] >= 2 ? 1 : 0;
+      if (brings <= 1) continue;
+      auto& f = formula[rest.occurrence][rest.part];
+      for (std::size_t k = 0; k < f->c.size(); ++k) uses[k] -= f->c[k] != 0 ? 1 : 0;
+      const std::vector<double> seen_values = present_values(at[rest.occurrence].value[rest.part]);
+      std::vector<Observation> obs;
+      for (double v : seen_values) obs.push_back({v, 1});
+      f = Linear{};
+      f->add(drawn.size(), 1);
+      drawn.push_back(fit_distribution(obs, fit));
+      drawn_values.push_back(seen_values);
+      drawn_at.push_back(rest.occurrence);
+      uses.push_back(1);
+    }
     std::vector<std::pair<double, double>> ranges;
     for (const Distribution& d : drawn) ranges.push_back(support(d));
     for (const auto& parts : formula)
@@ -725,6 +747,7 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   Joiner::Runners runners;
   for (std::size_t i = 0; i < results.size(); ++i)
     for (const MatchedPart& m : results[i].parts) {
+      if (!m.random) continue;
       std::vector<MatchedPart>& at = seen[i][m.path];
       if (at.empty()) runners[m.path].push_back(i);
       at.push_back(m);
