@@ -75,5 +75,50 @@ col --> split(z){ ~rand(1, 9) : I(rect) | ~1 : nil }
   EXPECT_EQ(write_grammar(g), before);
 }
 
+// A bay of two windows and a mullion between piers, as merging writes a
+// row of them from bays of several widths: the windows and the mullion
+// are shares written as numbers, each pier draws. The examples' piers are
+// equal in every bay (the source draws one width for both).
+constexpr const char* kPiersOfOneWidth = R"(
+@scope 12, 8, 10
+b --> repeat(x, 4){ bay(rand(0.5, 1.5)) }
+bay(p) --> split(x){ ~p : I(pier) | ~1 : I(window) | ~0.4 : I(mullion) | ~1 : I(window) | ~p : I(pier) }
+)";
+constexpr const char* kPiersAsMerged = R"(
+@scope 12, 8, 10
+b --> repeat(x, 4){ split(x){
+    ~rand(0.5, 1.5) : I(pier) | ~1 : I(window) | ~0.4 : I(mullion) | ~1 : I(window) | ~rand(0.5, 1.5) : I(pier) } }
+)";
+
+TEST(ShareSplits, DrawnSharesBesideNumbersBecomeOneDrawInTheNumbersScale) {
+  const std::vector<Example> examples = examples_of(parse_grammar(kPiersOfOneWidth, "source.grm"));
+  Grammar g = parse_grammar(kPiersAsMerged, "merged.grm");
+  std::vector<CheckResult> results;
+  for (const Example& e : examples) results.push_back(check_example(g, e.boxes, kPlot));
+  for (const CheckResult& r : results) ASSERT_TRUE(r.derivable) << r.mismatch;
+
+  EXPECT_EQ(share_splits(g, results, {1e-6, false}), 1u);
+  // One rule of one parameter: both piers are s1, the numbers stay.
+  const Rule* bay = nullptr;
+  for (const Rule& r : g.rules)
+    if (r.params == std::vector<std::string>{"s1"}) bay = &r;
+  ASSERT_NE(bay, nullptr) << write_grammar(g);
+  const auto& split = std::get<Split>(g.op(bay->body));
+  ASSERT_EQ(split.parts.size(), 5u);
+  EXPECT_EQ(split.parts[0].size.value, split.parts[4].size.value) << write_grammar(g);
+  EXPECT_TRUE(split.parts[0].size.value.uses_params());
+  for (const std::size_t i : {1, 3}) EXPECT_NEAR(split.parts[i].size.value.literal().value_or(0), 1, 1e-6);
+  EXPECT_NEAR(split.parts[2].size.value.literal().value_or(0), 0.4, 1e-6);
+  for (const Example& e : examples) {
+    const CheckResult r = check_example(g, e.boxes, kPlot);
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(g);
+  }
+  // Piers drawn apart in the examples stay apart.
+  Grammar apart = parse_grammar(kPiersAsMerged, "merged.grm");
+  results.clear();
+  for (const Example& e : examples_of(apart)) results.push_back(check_example(apart, e.boxes, kPlot));
+  EXPECT_EQ(share_splits(apart, results, {1e-6, false}), 0u) << write_grammar(apart);
+}
+
 }  // namespace
 }  // namespace vern

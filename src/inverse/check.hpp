@@ -116,14 +116,15 @@ inline std::uint64_t derivation_path(std::uint64_t parent, NodeId node, std::uin
   return h ^ (h >> 29);
 }
 
-// One part whose size is random, as the derivation that reproduces an
-// example places it.
+// One part of a split with a random size, as the derivation that
+// reproduces an example places it.
 struct MatchedPart {
   std::uint64_t path = 0;  // the split's derivation_path
   NodeId split = 0;
   std::size_t part = 0;
   double length = 0;  // metres, along the split's axis
   double value = 0;   // the size's value (a relative size: the share, for the scale chosen)
+  bool random = true;  // false: a size written as a number, beside one that draws
 };
 
 // One step of the derivation that reproduces an example, as data, in
@@ -147,7 +148,8 @@ struct CheckResult {
   //   "garage, split(z) at 26:12, part 1: 1.04 (~rand(0.75, 1.25))"
   //   "plot, floors at 53:10: numFloors = 3 (randint(minFloors, maxFloors))"
   std::vector<std::string> witness;
-  // When derivable: every random split part of that derivation, in order.
+  // When derivable: every part of a split with a random part in that
+  // derivation, in order.
   std::vector<MatchedPart> parts;
   // When derivable: its choices, values and repeats, in order.
   std::vector<CheckStep> steps;

@@ -15,7 +15,7 @@ namespace vern::check_detail {
 std::vector<MatchedPart> Matcher::matched_parts() const {
   std::vector<MatchedPart> out;
   for (const WitnessLine& w : witness_)
-    if (w.kind == WitnessLine::Kind::Part) out.push_back({w.path, w.node, w.index, w.length, w.value});
+    if (w.kind == WitnessLine::Kind::Part) out.push_back({w.path, w.node, w.index, w.length, w.value, w.spelled});
   return out;
 }
 
@@ -34,7 +34,9 @@ std::vector<CheckStep> Matcher::steps() const {
       case WitnessLine::Kind::Alternative: out.push_back({CheckStep::Kind::Alternative, w.node, w.index, 0, 0}); break;
       case WitnessLine::Kind::Value: out.push_back({CheckStep::Kind::Value, w.node, 0, w.value, 0}); break;
       case WitnessLine::Kind::Tiles: out.push_back({CheckStep::Kind::Tiles, w.node, 0, w.value, w.length}); break;
-      case WitnessLine::Kind::Part: out.push_back({CheckStep::Kind::Part, w.node, w.index, w.value, w.length}); break;
+      case WitnessLine::Kind::Part:
+        if (w.spelled) out.push_back({CheckStep::Kind::Part, w.node, w.index, w.value, w.length});
+        break;
       case WitnessLine::Kind::NoAlternative: break;
     }
   }

@@ -35,18 +35,32 @@ std::vector<SplitRun> runs_of(const std::vector<MatchedPart>& parts) {
   return out;
 }
 
-// The relative parts of a split whose relative parts, two or more, all
-// draw, nothing using a parameter.
-std::optional<std::vector<std::size_t>> drawn_shares(const Split& s) {
+// The relative parts of a split, two or more of which draw, nothing
+// using a parameter, and the sum of the shares written as numbers among
+// them (0 when all draw).
+struct DrawnShares {
   std::vector<std::size_t> relative;
+  double fixed = 0;
+};
+
+std::optional<DrawnShares> drawn_shares(const Split& s) {
+  DrawnShares out;
+  std::size_t drawing = 0;
   for (std::size_t i = 0; i < s.parts.size(); ++i) {
-    if (s.parts[i].size.value.uses_params()) return std::nullopt;
-    if (s.parts[i].size.relative) relative.push_back(i);
+    const Expr& size = s.parts[i].size.value;
+    if (size.uses_params()) return std::nullopt;
+    if (!s.parts[i].size.relative) continue;
+    out.relative.push_back(i);
+    if (size.draws_random()) {
+      ++drawing;
+    } else if (const auto v = size.literal()) {
+      out.fixed += *v;
+    } else {
+      return std::nullopt;
+    }
   }
-  if (relative.size() < 2) return std::nullopt;
-  for (std::size_t i : relative)
-    if (!s.parts[i].size.value.draws_random()) return std::nullopt;
-  return relative;
+  if (drawing < 2) return std::nullopt;
+  return out;
 }
 
 // Each of columns[0, count) as a constant or a straight line (within
@@ -85,10 +99,15 @@ std::optional<std::vector<Linear>> lines_of_first(const std::vector<std::vector<
 // The shares of one split, as lines in one parameter s1: the first share
 // that varies is s1, the others constants or straight-line functions of
 // it (the two equal insets around a tier: s1 and s1), the last the rest.
+// Where some shares are numbers (`fixed`), those set the scale and no part
+// is the rest: each is a line of s1 or a constant (a bay's two piers
+// drawn once, `~s1 : pier | ~0.84 : window | ~s1 : pier`).
 std::optional<std::vector<Linear>> share_lines(const std::vector<std::vector<double>>& shares, double total,
-                                               double tol) {
+                                               bool fixed, double tol) {
   const std::size_t k = shares.size();
-  auto out = lines_of_first(shares, k - 1, tol, [](const std::vector<double>&) { return true; });
+  const auto any = [](const std::vector<double>&) { return true; };
+  if (fixed) return lines_of_first(shares, k, tol, any);
+  auto out = lines_of_first(shares, k - 1, tol, any);
   if (!out) return std::nullopt;  // nothing varies: no draw to share
   (*out)[k - 1].c0 = total;
   for (std::size_t j = 0; j + 1 < k; ++j) {
@@ -256,6 +275,8 @@ struct Seen {
   std::vector<std::vector<double>> lengths;  // per run: the relative parts' lengths
   std::vector<RunAt> at;                     // per run: where it ran
   bool lined_up = true;
+  double fixed = 0;  // DrawnShares::fixed
+  std::vector<bool> drawing;  // per relative part: whether it draws
 };
 
 // What a split that varies in one way becomes: each relative part's line of
@@ -276,17 +297,20 @@ std::optional<SharePlan> plan_shares(const Seen& s, const ShareOptions& opt) {
   for (const auto& run : s.lengths)
     for (double l : run) total += l / runs;
   total = shortest_decimal(total, total * 0.01);
+  const bool fixed = s.fixed > 0;
   std::vector<std::vector<double>> shares(k);  // per part, per run
   for (const auto& run : s.lengths) {
+    // In the scale of the shares written as numbers, where there are.
     double sum = 0;
-    for (double l : run) sum += l;
-    for (std::size_t j = 0; j < k; ++j) shares[j].push_back(total * run[j] / sum);
+    for (std::size_t j = 0; j < k; ++j) sum += !fixed || !s.drawing[j] ? run[j] : 0;
+    if (!(sum > 0)) return std::nullopt;
+    for (std::size_t j = 0; j < k; ++j) shares[j].push_back((fixed ? s.fixed : total) * run[j] / sum);
   }
   // In metres where the split's length follows its parts, else shares.
   SharePlan plan;
   auto lines = metric_lines(s.lengths, opt.tolerance);
   plan.metric = lines.has_value();
-  if (!plan.metric) lines = share_lines(shares, total, opt.tolerance);
+  if (!plan.metric) lines = share_lines(shares, total, fixed, opt.tolerance);
   if (!lines) return std::nullopt;
   for (std::size_t j = 0; j < k; ++j)
     if ((*lines)[j].coefficient(0) == 1 && (*lines)[j].c0 == 0 && plan.drawn.empty())
@@ -324,7 +348,7 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
   parallel_for(results.size(), opt.threads, [&](std::size_t e) { runs_in[e] = runs_of(results[e].parts); });
   std::unordered_map<NodeId, Seen> seen;
   // Per split: its drawn shares, read once.
-  std::unordered_map<NodeId, std::optional<std::vector<std::size_t>>> shares_of;
+  std::unordered_map<NodeId, std::optional<DrawnShares>> shares_of;
   for (std::size_t e = 0; e < results.size(); ++e) {
     const std::vector<SplitRun>& runs = runs_in[e];
     for (std::size_t order = 0; order < runs.size(); ++order) {
@@ -333,9 +357,13 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
       if (!split) continue;
       auto [known, fresh] = shares_of.try_emplace(run.split);
       if (fresh) known->second = drawn_shares(*split);
-      const auto& relative = known->second;
-      if (!relative) continue;
+      if (!known->second) continue;
+      const std::vector<std::size_t>* relative = &known->second->relative;
       Seen& s = seen[run.split];
+      if (s.drawing.empty()) {
+        s.fixed = known->second->fixed;
+        for (std::size_t i : *relative) s.drawing.push_back(split->parts[i].size.value.draws_random());
+      }
       std::vector<double> lengths(relative->size(), -1);
       for (const MatchedPart* m : run.parts)
         for (std::size_t j = 0; j < relative->size(); ++j)
@@ -374,7 +402,7 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
     SharePlan& plan = *plans[i];
     const std::size_t k = plan.lines.size();
     Split split = std::get<Split>(g.op(id));
-    const std::vector<std::size_t> relative = *drawn_shares(split);
+    const std::vector<std::size_t> relative = drawn_shares(split)->relative;
     for (std::size_t j = 0; j < k; ++j) split.parts[relative[j]].size = Size{linear_expr(plan.lines[j]), !plan.metric};
     const SourceLoc loc = g.node(id).loc;
     const NodeId shared = g.intern({std::move(split), loc});

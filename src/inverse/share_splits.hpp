@@ -11,7 +11,11 @@
 // lengths come from). A split that is a rule's body (not the start's)
 // gives that rule the parameter; any other runs as a new rule named after
 // its primitives. Shares that vary in two ways are left as they are:
-// check() pins down one parameter per split.
+// check() pins down one parameter per split. A split whose drawn shares
+// stand beside shares written as numbers is read in the scale of those
+// numbers, and keeps them: a bay's two piers that every bay shows equal,
+// `~rand(0.8, 1.5) : pier | ~1 : window | ~rand(0.8, 1.5) : pier`, become
+// `~s1 : pier | ~1 : window | ~s1 : pier` (a row's tiles are its runs).
 #pragma once
 
 #include <cstddef>

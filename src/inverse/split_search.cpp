@@ -273,9 +273,12 @@ void SplitSearch::add_witness(double k) {
           mode_ == Mode::Overflow ? (parts_[i].relative ? 0.0 : value[i] / k) : (shares ? value[i] * k : value[i]);
     }
   }
+  // Every part of a split that draws: the parts written as numbers beside
+  // the drawn ones set the scale their shares are read in (share_splits).
+  if (std::ranges::none_of(parts_, &PartInfo::random)) return;
   for (std::size_t i = 0; i < parts_.size(); ++i) {
-    if (!parts_[i].random) continue;
     WitnessLine w = m_.line(WitnessLine::Kind::Part, id_);
+    w.spelled = parts_[i].random;
     w.index = i;
     w.value = value[i];
     w.path = m_.path_.back();
