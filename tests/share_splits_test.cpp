@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "forward/derive.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
@@ -31,11 +34,24 @@ std::vector<Example> examples_of(const Grammar& g) {
   return out;
 }
 
+// Each example checked against g on the plot.
+std::vector<CheckResult> checked(const Grammar& g, const std::vector<Example>& examples) {
+  std::vector<CheckResult> out;
+  for (const Example& e : examples) out.push_back(check_example(g, e.boxes, kPlot));
+  return out;
+}
+
+// share_splits on g, given the examples it derives as they checked.
+std::size_t shared_splits(Grammar& g, const std::vector<Example>& examples) {
+  const std::vector<CheckResult> results = checked(g, examples);
+  for (const CheckResult& r : results) EXPECT_TRUE(r.derivable) << r.mismatch;
+  return share_splits(g, results, {1e-6, false});
+}
+
 TEST(ShareSplits, TwoDrawnSharesBecomeOneDrawAndTheRest) {
   Grammar g = parse_grammar(kColumns, "columns.grm");
   const std::vector<Example> examples = examples_of(g);
-  std::vector<CheckResult> results;
-  for (const Example& e : examples) results.push_back(check_example(g, e.boxes, kPlot));
+  const std::vector<CheckResult> results = checked(g, examples);
   for (const CheckResult& r : results) ASSERT_TRUE(r.derivable) << r.mismatch;
 
   EXPECT_EQ(share_splits(g, results, {1e-6, false}), 1u);
@@ -93,11 +109,7 @@ b --> repeat(x, 4){ split(x){
 TEST(ShareSplits, DrawnSharesBesideNumbersBecomeOneDrawInTheNumbersScale) {
   const std::vector<Example> examples = examples_of(parse_grammar(kPiersOfOneWidth, "source.grm"));
   Grammar g = parse_grammar(kPiersAsMerged, "merged.grm");
-  std::vector<CheckResult> results;
-  for (const Example& e : examples) results.push_back(check_example(g, e.boxes, kPlot));
-  for (const CheckResult& r : results) ASSERT_TRUE(r.derivable) << r.mismatch;
-
-  EXPECT_EQ(share_splits(g, results, {1e-6, false}), 1u);
+  EXPECT_EQ(shared_splits(g, examples), 1u);
   // One rule of one parameter: both piers are s1, the numbers stay.
   const Rule* bay = nullptr;
   for (const Rule& r : g.rules)
@@ -115,9 +127,51 @@ TEST(ShareSplits, DrawnSharesBesideNumbersBecomeOneDrawInTheNumbersScale) {
   }
   // Piers drawn apart in the examples stay apart.
   Grammar apart = parse_grammar(kPiersAsMerged, "merged.grm");
-  results.clear();
-  for (const Example& e : examples_of(apart)) results.push_back(check_example(apart, e.boxes, kPlot));
-  EXPECT_EQ(share_splits(apart, results, {1e-6, false}), 0u) << write_grammar(apart);
+  EXPECT_EQ(share_splits(apart, checked(apart, examples_of(apart)), {1e-6, false}), 0u) << write_grammar(apart);
+}
+
+// A pair of casements and their mullion, 1 to 1.3 m in all, in one
+// proportion, as merging writes a row of them from bays of several
+// widths: three lengths in metres, each drawn apart.
+constexpr const char* kPairOfOneWidth = R"(
+@scope 12, 8, 10
+b --> repeat(x, 3){ split(x){ ~1 : I(wall) | rand(1, 1.3) : pair | ~1 : I(wall) } }
+pair --> split(x){ ~1 : I(casement) | ~0.4 : I(mullion) | ~1 : I(casement) }
+)";
+constexpr const char* kPairAsMerged = R"(
+@scope 12, 8, 10
+b --> repeat(x, 3){ split(x){
+    ~1 : I(wall) | rand(0.4, 0.55) : I(casement) | rand(0.16, 0.22) : I(mullion) | rand(0.4, 0.55) : I(casement) |
+    ~1 : I(wall) } }
+)";
+
+TEST(ShareSplits, LengthsInMetresInOneProportionBecomeOneDraw) {
+  const std::vector<Example> examples = examples_of(parse_grammar(kPairOfOneWidth, "source.grm"));
+  Grammar g = parse_grammar(kPairAsMerged, "merged.grm");
+  EXPECT_EQ(shared_splits(g, examples), 1u);
+  // Over 100 variants, every mullion is 0.4 of its casements, and both
+  // casements of a bay are one width.
+  double worst = 0;
+  std::size_t pairs = 0;
+  for (std::uint64_t seed = 1001; seed <= 1100; ++seed) {
+    DeriveOptions o;
+    o.seed = seed;
+    std::vector<LabelledBox> parts = test::derived_parts(derive(g, o));
+    std::ranges::sort(parts, {}, [](const LabelledBox& b) { return b.min.x; });
+    for (std::size_t i = 0; i + 2 < parts.size(); ++i) {
+      if (parts[i].label != "casement" || parts[i + 1].label != "mullion") continue;
+      const double left = parts[i].max.x - parts[i].min.x, mullion = parts[i + 1].max.x - parts[i + 1].min.x,
+                   right = parts[i + 2].max.x - parts[i + 2].min.x;
+      worst = std::max({worst, std::abs(mullion - 0.4 * left), std::abs(right - left)});
+      ++pairs;
+    }
+  }
+  EXPECT_GE(pairs, 100u);
+  EXPECT_LT(worst, 1e-6) << write_grammar(g);
+  for (const Example& e : examples) {
+    const CheckResult r = check_example(g, e.boxes, kPlot);
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(g);
+  }
 }
 
 }  // namespace

@@ -35,32 +35,42 @@ std::vector<SplitRun> runs_of(const std::vector<MatchedPart>& parts) {
   return out;
 }
 
-// The relative parts of a split, two or more of which draw, nothing
-// using a parameter, and the sum of the shares written as numbers among
-// them (0 when all draw).
+// The parts of a split whose sizes share one draw, where two or more draw
+// and nothing uses a parameter: its relative parts, with the sum of the
+// shares written as numbers among them (0 when all draw); else its
+// lengths in metres that draw (a window pair's casements and mullion
+// drawn apart, `rand(0.42, 0.54) : casement | rand(0.17, 0.22) : wall |
+// ...`, where every bay shows them in one proportion).
 struct DrawnShares {
-  std::vector<std::size_t> relative;
+  std::vector<std::size_t> parts;
   double fixed = 0;
+  bool metres = false;
 };
 
 std::optional<DrawnShares> drawn_shares(const Split& s) {
-  DrawnShares out;
+  DrawnShares shares, metres;
   std::size_t drawing = 0;
+  bool numbers_only = true;
   for (std::size_t i = 0; i < s.parts.size(); ++i) {
     const Expr& size = s.parts[i].size.value;
     if (size.uses_params()) return std::nullopt;
-    if (!s.parts[i].size.relative) continue;
-    out.relative.push_back(i);
+    if (!s.parts[i].size.relative) {
+      if (size.draws_random()) metres.parts.push_back(i);
+      continue;
+    }
+    shares.parts.push_back(i);
     if (size.draws_random()) {
       ++drawing;
     } else if (const auto v = size.literal()) {
-      out.fixed += *v;
+      shares.fixed += *v;
     } else {
-      return std::nullopt;
+      numbers_only = false;
     }
   }
-  if (drawing < 2) return std::nullopt;
-  return out;
+  if (drawing >= 2 && numbers_only) return shares;
+  if (metres.parts.size() < 2) return std::nullopt;
+  metres.metres = true;
+  return metres;
 }
 
 // Each of columns[0, count) as a constant or a straight line (within
@@ -276,7 +286,8 @@ struct Seen {
   std::vector<RunAt> at;                     // per run: where it ran
   bool lined_up = true;
   double fixed = 0;  // DrawnShares::fixed
-  std::vector<bool> drawing;  // per relative part: whether it draws
+  bool metres = false;  // DrawnShares::metres
+  std::vector<bool> drawing;  // per part: whether it draws
 };
 
 // What a split that varies in one way becomes: each relative part's line of
@@ -308,9 +319,17 @@ std::optional<SharePlan> plan_shares(const Seen& s, const ShareOptions& opt) {
   }
   // In metres where the split's length follows its parts, else shares.
   SharePlan plan;
-  auto lines = metric_lines(s.lengths, opt.tolerance);
+  std::optional<std::vector<Linear>> lines;
+  if (s.metres) {
+    std::vector<std::vector<double>> column(k);
+    for (const auto& run : s.lengths)
+      for (std::size_t j = 0; j < k; ++j) column[j].push_back(run[j]);
+    lines = lines_of_first(column, k, opt.tolerance, [](const std::vector<double>&) { return true; });
+  } else {
+    lines = metric_lines(s.lengths, opt.tolerance);
+  }
   plan.metric = lines.has_value();
-  if (!plan.metric) lines = share_lines(shares, total, fixed, opt.tolerance);
+  if (!plan.metric && !s.metres) lines = share_lines(shares, total, fixed, opt.tolerance);
   if (!lines) return std::nullopt;
   for (std::size_t j = 0; j < k; ++j)
     if ((*lines)[j].coefficient(0) == 1 && (*lines)[j].c0 == 0 && plan.drawn.empty())
@@ -358,10 +377,11 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
       auto [known, fresh] = shares_of.try_emplace(run.split);
       if (fresh) known->second = drawn_shares(*split);
       if (!known->second) continue;
-      const std::vector<std::size_t>* relative = &known->second->relative;
+      const std::vector<std::size_t>* relative = &known->second->parts;
       Seen& s = seen[run.split];
       if (s.drawing.empty()) {
         s.fixed = known->second->fixed;
+        s.metres = known->second->metres;
         for (std::size_t i : *relative) s.drawing.push_back(split->parts[i].size.value.draws_random());
       }
       std::vector<double> lengths(relative->size(), -1);
@@ -402,7 +422,7 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
     SharePlan& plan = *plans[i];
     const std::size_t k = plan.lines.size();
     Split split = std::get<Split>(g.op(id));
-    const std::vector<std::size_t> relative = drawn_shares(split)->relative;
+    const std::vector<std::size_t> relative = drawn_shares(split)->parts;
     for (std::size_t j = 0; j < k; ++j) split.parts[relative[j]].size = Size{linear_expr(plan.lines[j]), !plan.metric};
     const SourceLoc loc = g.node(id).loc;
     const NodeId shared = g.intern({std::move(split), loc});

@@ -16,6 +16,9 @@
 // numbers, and keeps them: a bay's two piers that every bay shows equal,
 // `~rand(0.8, 1.5) : pier | ~1 : window | ~rand(0.8, 1.5) : pier`, become
 // `~s1 : pier | ~1 : window | ~s1 : pier` (a row's tiles are its runs).
+// A split whose relative parts do not draw, and two or more of whose
+// lengths in metres do, is read the same way in metres: a window pair
+// seen in one proportion, `s1 : casement | 0.4 * s1 : mullion | s1 : ...`.
 #pragma once
 
 #include <cstddef>
