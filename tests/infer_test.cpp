@@ -353,6 +353,39 @@ TEST(Infer, PartsCutSideBySideThatAreASplitInsideASplitKeepTheirProportions) {
   }
 }
 
+TEST(Infer, AislesBesideATowerOfTiersKeepTheirProportionToIt) {
+  // The tower's tiers become a recursion while merging; the splits above
+  // it keep the lengths each example gave them, so the aisles are drawn
+  // beside the nave, in the proportions the examples show, not in metres
+  // on plots of any width. (A random style, evaluate --random-styles 30
+  // --seed 778, style 14.)
+  const Grammar source = parse_grammar(
+      "@start parcel\n"
+      "@scope rand(9, 12.5), rand(25, 44), rand(22.5, 37.5)\n"
+      "parcel --> split(y){ ~rand(0.6, 1.1) : I(aisle) | ~2.6 : nave | ~rand(0.6, 1.1) : I(aisle) }\n"
+      "nave --> split(z){ 4 : I(plinth) | ~1 : setback(randint(2, 4)) }\n"
+      "setback(n) : n > 1 --> split(z){ ~1 : I(stage) | ~(n - 1) : split(x){ 0.9 : nil | ~1 : split(y){ 0.9 : nil | "
+      "~1 : setback(n - 1) | 0.9 : nil } | 0.9 : nil } }\n"
+      "setback(n) : n <= 1 --> I(roof)\n");
+  const Inference inferred = infer(test::derived_examples(source, 30), {});
+  const std::string text = write_grammar(inferred.grammar);
+  for (std::uint64_t seed = 101; seed <= 140; ++seed) {
+    DeriveOptions o;
+    o.seed = seed;
+    double nave = 0;
+    std::vector<double> aisles;
+    for (const LabelledBox& b : test::derived_parts(derive(inferred.grammar, o))) {
+      if (b.label == "aisle") aisles.push_back(b.max.y - b.min.y);
+      if (b.label == "plinth") nave = b.max.y - b.min.y;
+    }
+    ASSERT_EQ(aisles.size(), 2u) << text;
+    for (const double a : aisles) {
+      EXPECT_GE(a / nave, 0.6 / 2.6 - 1e-3) << "seed " << seed << "\n" << text;
+      EXPECT_LE(a / nave, 1.1 / 2.6 + 1e-3) << "seed " << seed << "\n" << text;
+    }
+  }
+}
+
 TEST(Infer, AGrammarMadeAgainAndPassedIsWritten) {
   // The first grammar does not derive one of these thirty examples; made
   // again within the smallest tolerance it does (joining sizes checks it).

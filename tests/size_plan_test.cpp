@@ -120,5 +120,40 @@ TEST(SizePlan, WholeBaysBeforeADoorAreDrawnInMetres) {
   EXPECT_FALSE((*plan)[4].absolute);  // the rest fills the plot
 }
 
+TEST(SizePlan, AmongSharesThatAllVaryThePartBesideWhichTheyVaryLeastIsTheScale) {
+  // Two aisles of independent widths (0.6 to 1.1) beside a nave of 2.6,
+  // on plots of any width: beside the nave the aisles spread least, so the
+  // nave is the scale and the aisles are drawn as weights beside it.
+  const std::vector<double> left = {0.6, 0.9, 1.1, 0.7, 1.0, 0.8}, right = {1.0, 0.6, 0.8, 1.1, 0.7, 0.9};
+  const std::vector<double> plot = {8, 11, 9, 12, 10, 7};
+  std::vector<std::vector<double>> lengths;
+  for (std::size_t m = 0; m < plot.size(); ++m) lengths.push_back({plot[m] * left[m], plot[m] * 2.6, plot[m] * right[m]});
+  const auto plan = plan_drawn_sizes(lengths, 1e-6);
+  ASSERT_TRUE(plan.has_value());
+  ASSERT_TRUE((*plan)[1].fixed);
+  ASSERT_FALSE((*plan)[0].fixed || (*plan)[2].fixed);
+  for (std::size_t m = 0; m < plot.size(); ++m) {
+    EXPECT_NEAR((*plan)[0].values[m] / (*plan)[1].value, left[m] / 2.6, 1e-12) << m;
+    EXPECT_NEAR((*plan)[2].values[m] / (*plan)[1].value, right[m] / 2.6, 1e-12) << m;
+  }
+}
+
+TEST(SizePlan, LengthsThatFollowOneAnotherAreNoScale) {
+  // A podium u, storeys 1.5 * u + 2.5 m above it and tiers taking the rest
+  // of plots 30 m high: beside the storeys the podium spreads little, but
+  // in metres the storeys follow the podium (joint_sizes draws them from
+  // it), which says less: no part is the others' scale.
+  const std::vector<double> podium = {4, 4.5, 5, 5.5, 6, 4.2};
+  std::vector<std::vector<double>> lengths;
+  for (const double u : podium) lengths.push_back({u, 1.5 * u + 2.5, 30 - 2.5 * u - 2.5});
+  // No plan leaves the merged lengths as they are, as does a plan of
+  // each row's own lengths.
+  const auto plan = plan_drawn_sizes(lengths, 1e-6);
+  for (std::size_t i = 0; plan && i < 3; ++i) {
+    ASSERT_FALSE((*plan)[i].fixed) << i;
+    for (std::size_t m = 0; m < podium.size(); ++m) EXPECT_NEAR((*plan)[i].values[m], lengths[m][i], 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace vern

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "inverse/examples_cost.hpp"
 #include "inverse/fit_distribution.hpp"
+#include "inverse/linear_size.hpp"
 
 namespace vern {
 
@@ -224,25 +226,69 @@ std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::ve
   // drawn as weights beside it (the widest member's scale). Only where it
   // fixes a part: two parts that both vary are left as each row's own
   // lengths, whose shares joint_sizes links as straight lines.
+  //
+  // Where none keeps a ratio to another, one of them may still be the
+  // scale the others are drawn in: two aisles of independent widths beside
+  // a nave of one share are shares of the nave, and drawn as metres, or as
+  // shares of the whole, each would carry the plot's variation too (a
+  // variant's narrow aisle beside a wide nave, in a proportion the style
+  // never shows). The scale is the part, if any, beside which the others'
+  // weights spread least (the sum of log(largest / smallest), which is what
+  // their ranges cost to say at a given precision), against their
+  // lengths in metres.
   if (!ratios_fixed && relative.size() >= 3) {
-    std::size_t best = parts, best_fixed = 0;
+    std::size_t best = parts, best_fixed = 0, scale = parts;
+    auto spread = [&](std::size_t i, std::optional<std::size_t> ref) {
+      double lo = std::numeric_limits<double>::infinity(), hi = 0;
+      for (std::size_t m = 0; m < rows; ++m) {
+        const double w = lengths[m][i] / (ref ? lengths[m][*ref] : 1.0);
+        lo = std::min(lo, w);
+        hi = std::max(hi, w);
+      }
+      return lo > 0 ? std::log(hi / lo) : std::numeric_limits<double>::infinity();
+    };
+    // In metres, a part that is a straight line of an earlier one's length
+    // (a podium and the storeys 1.5 times its height plus 2.5 m, under
+    // tiers taking the rest) costs nothing more to say: joint_sizes draws
+    // it from the other.
+    auto follows = [&](std::size_t i) {
+      if (rows < 4) return false;
+      const std::vector<double> y = column(i);
+      for (std::size_t j : relative) {
+        if (j == i) break;
+        const std::vector<double> x = column(j);
+        if (!shows_a_line(x, tolerance)) continue;
+        const Fit f = line_fit(x, y);
+        if (worst_miss(x, y, f.a, f.b) <= tolerance) return true;
+      }
+      return false;
+    };
+    double least = 0;
+    for (std::size_t i : relative) least += follows(i) ? 0.0 : spread(i, std::nullopt);
     for (std::size_t ref : relative) {
       bool usable = true;
       for (std::size_t m = 0; m < rows && usable; ++m) usable = lengths[m][ref] > tolerance;
       if (!usable) continue;
       std::size_t fixed = 0;
+      double cost = 0;
       for (std::size_t i : relative) {
         if (i == ref) continue;
         const double ratio = lengths[widest][i] / lengths[widest][ref];
         bool same = true;
         for (std::size_t m = 0; m < rows && same; ++m) same = std::abs(ratio * lengths[m][ref] - lengths[m][i]) <= tolerance;
         fixed += same ? 1 : 0;
+        cost += spread(i, ref);
       }
       if (fixed > best_fixed) {
         best_fixed = fixed;
         best = ref;
       }
+      if (cost < least) {
+        least = cost;
+        scale = ref;
+      }
     }
+    if (best == parts) best = scale;
     if (best != parts && best_fixed + 1 < relative.size()) {
       for (std::size_t i : relative) {
         const double ratio = lengths[widest][i] / lengths[widest][best];
