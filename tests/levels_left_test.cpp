@@ -8,11 +8,12 @@
 namespace vern {
 namespace {
 
-// A relative part seen at counts 1..5 with weights w(n).
-LevelPart relative(double (*w)(int)) {
+// A relative part seen at counts 1..counts with weights w(n).
+template <class Weight>
+LevelPart relative(Weight w, int counts = 5) {
   LevelPart p;
   p.relative = true;
-  for (int n = 1; n <= 5; ++n) p.seen.emplace_back(n, w(n));
+  for (int n = 1; n <= counts; ++n) p.seen.emplace_back(n, w(n));
   return p;
 }
 
@@ -64,6 +65,26 @@ TEST(LevelsLeft, ALengthOffAnyLineOrSeenAtTwoCountsIsNone) {
   LevelPart disagreeing;  // two sizes at one count: no function of it
   disagreeing.seen = {{1, 3.0}, {1, 5.0}, {2, 4.0}, {3, 5.0}};
   EXPECT_FALSE(sizes_by_levels_left({{disagreeing}}, 1e-6).has_value());
+}
+
+TEST(LevelsLeft, AWholeRatioAtTwoCountsIsALine) {
+  // Pagodas of two and three tiers: the drum is a half, then a third, of
+  // its tier, n in 1..2. The rest's ratio to the drum is 1, then 2: whole
+  // numbers, which a grammar writes and chance hardly gives.
+  const auto tier = [](double height) {
+    return std::vector<LevelPart>{relative([=](int n) { return height / (n + 1); }, 2),
+                                  relative([=](int n) { return height * n / (n + 1); }, 2)};
+  };
+  const auto sizes = sizes_by_levels_left({tier(17)}, 1e-6);
+  ASSERT_TRUE(sizes.has_value());
+  EXPECT_EQ(text((*sizes)[0][0]), "~1");
+  EXPECT_EQ(text((*sizes)[0][1]), "~n");
+  // Ratios that are not whole numbers at two counts follow no line.
+  LevelPart drum, rest;
+  drum.relative = rest.relative = true;
+  drum.seen = {{1, 4.0}, {2, 3.0}};
+  rest.seen = {{1, 5.2}, {2, 7.5}};
+  EXPECT_FALSE(sizes_by_levels_left({{drum, rest}}, 1e-6).has_value());
 }
 
 }  // namespace

@@ -10,7 +10,11 @@ namespace vern {
 namespace {
 
 // A straight line through as few points says nothing: two counts are
-// always on one.
+// always on one. But for a ratio of weights, whole numbers are what
+// grammars write (`~1 : ~(n - 1)`, a tier's drum one part in n of what is
+// left) and what continuous sizes hardly ever give by chance: a ratio
+// that is one in whole numbers at both counts is that line (pagodas of
+// two and three tiers).
 constexpr std::size_t kFewestCounts = 3;
 
 // The part's one size at each count, if every level at a count agrees.
@@ -44,8 +48,14 @@ std::optional<Linear> line_in_n(const std::map<int, double>& y, const std::map<i
   const double tol = tolerance / largest;
   Fit f = line_fit(xs, ys);
   f.worst = worst_miss(xs, ys, f.a, f.b);
-  if (f.b != 0 && xs.size() < kFewestCounts) return std::nullopt;
-  f = short_line(xs, ys, f, tol);
+  if (f.b != 0 && xs.size() < kFewestCounts) {
+    if (!scale) return std::nullopt;
+    f.a = std::round(f.a);
+    f.b = std::round(f.b);
+    if (f.b == 0) return std::nullopt;
+  } else {
+    f = short_line(xs, ys, f, tol);
+  }
   for (std::size_t i = 0; i < xs.size(); ++i) {
     const double miss = std::abs(f.a + f.b * xs[i] - ys[i]) * (scale ? scale->at(static_cast<int>(xs[i])) : 1.0);
     if (miss > tolerance) return std::nullopt;

@@ -12,7 +12,8 @@
 // level of the context F took at each count n of levels left (n = 1 for
 // the innermost F), each part's size as a function of n: a length in
 // metres on a straight line in n, or relative weights whose ratio to one
-// of them is a straight line in n (`~1 : ~(n - 1)`).
+// of them is a straight line in n (`~1 : ~(n - 1)`): from three counts,
+// or from two where the ratio is a whole number at both.
 #pragma once
 
 #include <optional>
