@@ -54,6 +54,31 @@ TEST(RepeatFolding, AMixedRowIsLeftForMerging) {
   EXPECT_EQ(folded(text), flat(write_grammar(parse_grammar(text))));
 }
 
+TEST(RepeatFolding, StoreysBetweenAGroundFloorAndARoofAreARepeat) {
+  // A ground floor below, a cornice and a roof above: the storeys between
+  // are tiles however many there are, two as well as three, so that houses
+  // of two, three and four storeys share one structure.
+  const std::string storey = "~3.2 : split(x){ ~1 : I(wall) | ~1 : I(window) }";
+  for (const int count : {2, 3, 4}) {
+    std::string row = "a --> split(z){ ~4.6 : I(shop)";
+    for (int i = 0; i < count; ++i) row += " | " + storey;
+    row += " | ~0.7 : I(band) | ~3 : I(roof) }\n";
+    const std::string out = folded(row);
+    const std::string folded_storeys = " : repeat(z, 3.2";
+    const std::size_t at = out.find(folded_storeys);
+    ASSERT_NE(at, std::string::npos) << out;
+    EXPECT_EQ(out.find(folded_storeys, at + 1), std::string::npos) << out;
+    EXPECT_LT(out.find("~4.6 : I(shop) | ~"), at) << out;
+    EXPECT_NE(out.find("} } | ~0.7 : I(band) | ~3 : I(roof) }", at), std::string::npos) << out;
+  }
+  // Two equal halves alone are a pair, not tiles.
+  EXPECT_EQ(folded("a --> split(x){ ~1 : I(rect) | ~1 : I(rect) }\n").find("repeat"), std::string::npos);
+  // Storeys beside one of another kind as long as they are: a mixed row,
+  // left to merging (its storeys may be a repeat of a choice).
+  const std::string mixed = "a --> split(z){ ~0.4 : I(slab) | ~4.5 : I(shop) | ~3 : I(flat) | ~3 : I(flat) | ~3 : I(loggia) }\n";
+  EXPECT_EQ(folded(mixed).find("repeat"), std::string::npos) << folded(mixed);
+}
+
 TEST(RepeatFolding, ARowOfCompoundTilesAroundAnEntranceIsRunsAndTheEntrance) {
   // Shop bays (pier, window, pier) 4 m wide, the entrance bay (wall,
   // door, wall), then bays 3.4 m wide: each run of equal bays a repeat of

@@ -448,6 +448,22 @@ class Folder {
     return joined;
   }
 
+  // A run with at most two parts on each side, none of them a tile of
+  // another kind: the storeys between a ground floor and a cornice and
+  // roof, as many as the height allows. Two copies are a run too beside
+  // other parts (two storeys there are the storeys' zone, as three are),
+  // but not alone: two equal halves of a split are a pair, not tiles. A
+  // part as long as a tile just beside the run (a storey with a balcony
+  // above two without) makes it a mixed row, left to merging.
+  bool between_ends(const std::vector<SplitPart>& parts, const Run& r) const {
+    const std::size_t end = r.start + r.parts();
+    if (r.start > 2 || end + 2 < parts.size() || (r.parts() < 3 && r.parts() == parts.size())) return false;
+    const double tile = length_of(parts, r.start, r.period);
+    const bool before = r.start >= r.period && std::abs(length_of(parts, r.start - r.period, r.period) - tile) <= tol_;
+    const bool after = end + r.period <= parts.size() && std::abs(length_of(parts, end, r.period) - tile) <= tol_;
+    return !before && !after;
+  }
+
   // The split with its parts' children already folded; kNotYet when
   // nothing changes (children_changed false and no run folded).
   NodeId fold_split(Split s, bool children_changed) {
@@ -458,9 +474,10 @@ class Folder {
     if (literal) {
       changed = join_empty_parts(parts) || changed;
       // Only a run of three parts or more that is (almost) the whole split
-      // is folded: the walls or margins at its ends may differ. A run
-      // inside a mixed row (a | a | b) is left to merging, which lines
-      // alike rows up first and finds what combines freely there.
+      // is folded, or one between ends (between_ends): the walls or
+      // margins at its ends may differ. A run inside a mixed row (a | a |
+      // b) is left to merging, which lines alike rows up first and finds
+      // what combines freely there.
       auto replace = [&](std::size_t from, std::size_t to, const SplitPart& folded) {
         parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(from), parts.begin() + static_cast<std::ptrdiff_t>(to));
         parts.insert(parts.begin() + static_cast<std::ptrdiff_t>(from), folded);
@@ -468,7 +485,7 @@ class Folder {
       };
       bool folded = false;
       const auto r = best_run(parts);
-      if (r && r->parts() >= 3 && r->parts() + 2 >= parts.size()) {
+      if (r && ((r->parts() >= 3 && r->parts() + 2 >= parts.size()) || between_ends(parts, *r))) {
         if (const std::optional<SplitPart> part = fold(s.axis, parts, *r)) {
           replace(r->start, r->start + r->parts(), *part);
           folded = true;

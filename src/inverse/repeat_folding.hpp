@@ -8,7 +8,10 @@
 // of k >= 2 copies of a pattern of p <= 4 consecutive parts with the same
 // children and sizes equal within the tolerance; the longest run wins,
 // then the shortest pattern, then the leftmost. Only a run of three parts
-// or more that leaves at most two parts of its split outside (end walls, margins) is folded: a
+// or more that leaves at most two parts of its split outside (end walls,
+// margins) is folded, or a run of two or more with at most two parts on
+// each side, none as long as a tile beside it (the storeys between a
+// ground floor and a cornice and roof, as many as the height allows): a
 // run inside a mixed row is left for merging to line up with other rows
 // (merge.hpp), which finds repeats after unifying. The run's part keeps its
 // length (k tiles) and its relative flag; the tile is the run's length / k,
