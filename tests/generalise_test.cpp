@@ -99,5 +99,48 @@ TEST(Generalise, ALengthThatGoesWithWhatFillsItIsNeverDrawnApartFromIt) {
   for (const char* label : {"door", "shop", "gable", "hip"}) EXPECT_TRUE(seen.count(label)) << label << "\n" << text;
 }
 
+TEST(Generalise, PlacesChosenTogetherStayTogetherBesideAPlaceChosenFreely) {
+  // Houses whose ground floor and storeys come in three kinds that go
+  // together (a door bay's place, kept on every storey), under a roof of
+  // any of three kinds: all nine combinations seen, three times each.
+  // Said freely, a variant would put storeys of one kind on a ground floor
+  // of another; listed, nine alternatives repeat each roof three times.
+  // The roof becomes a choice in each of three houses.
+  // Built interned, as merging leaves the examples' graphs: one node per
+  // distinct part. Each house in its own proportions, as examples on plots
+  // of their own are: alike splits are not one frame, alternatives are.
+  Grammar g;
+  double storeys_share = 2;
+  auto primitive = [&](const std::string& label) { return g.intern({Primitive{g.label_id(label)}, {}}); };
+  Choose houses_seen;
+  for (const char* kind : {"a", "b", "c"})
+    for (const char* roof : {"hip", "gable", "flat"}) {
+      Split house{Expr::axis(Axis::Z), {}};
+      house.parts.push_back({Size{Expr::number(4), false}, primitive(std::string("ground_") + kind)});
+      house.parts.push_back({Size{Expr::number(storeys_share += 0.1), true}, primitive(std::string("storeys_") + kind)});
+      house.parts.push_back({Size{Expr::number(1), true}, primitive(roof)});
+      houses_seen.options.push_back({Expr{}, Expr::number(3), g.intern({std::move(house), {}})});
+    }
+  const NodeId all = g.intern({std::move(houses_seen), {}});
+  bool changed = false;
+  const NodeId root = generalise_free_parts(g, all, MergeOptions{},
+                                            FrameKinds::AlikeAndAlternatives, RowBook{}, changed);
+  ASSERT_TRUE(changed);
+  const auto* houses = std::get_if<Choose>(&g.op(root));
+  ASSERT_NE(houses, nullptr) << write_grammar(g);
+  std::set<NodeId> distinct;
+  for (const auto& o : houses->options) distinct.insert(o.child);
+  ASSERT_EQ(distinct.size(), 3u);
+  for (const NodeId house : distinct) {
+    const auto& split = std::get<Split>(g.op(house));
+    const auto& ground = std::get<Primitive>(g.op(split.parts[0].child));
+    const auto& storeys = std::get<Primitive>(g.op(split.parts[1].child));
+    EXPECT_EQ(g.label(ground.label).substr(7), g.label(storeys.label).substr(8));
+    const auto* roof = std::get_if<Choose>(&g.op(split.parts[2].child));
+    ASSERT_NE(roof, nullptr);
+    EXPECT_EQ(roof->options.size(), 3u);
+  }
+}
+
 }  // namespace
 }  // namespace vern

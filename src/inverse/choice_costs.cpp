@@ -19,15 +19,20 @@ double pick_bits(const std::vector<double>& weights) {
 
 }  // namespace
 
+double mixed_cost(const std::vector<double>& coupled_combinations, std::size_t coupled,
+                  const std::vector<std::vector<double>>& free, std::size_t entries) {
+  const double per_entry = std::log2(1.0 + static_cast<double>(entries));
+  double bits = 0;
+  if (coupled > 0)
+    bits += static_cast<double>(coupled_combinations.size() * coupled) * per_entry + pick_bits(coupled_combinations);
+  for (const auto& p : free) bits += static_cast<double>(p.size()) * per_entry + pick_bits(p);
+  return bits;
+}
+
 ChoiceCosts choice_costs(const std::vector<double>& combinations, const std::vector<std::vector<double>>& places) {
   std::size_t entries = 0;
   for (const auto& p : places) entries += p.size();
-  const double per_entry = std::log2(1.0 + static_cast<double>(entries));
-  ChoiceCosts c;
-  c.coupled = static_cast<double>(combinations.size() * places.size()) * per_entry + pick_bits(combinations);
-  c.independent = static_cast<double>(entries) * per_entry;
-  for (const auto& p : places) c.independent += pick_bits(p);
-  return c;
+  return {mixed_cost(combinations, places.size(), {}, entries), mixed_cost({}, 0, places, entries)};
 }
 
 }  // namespace vern

@@ -7,6 +7,7 @@
 // gable halves or two hip corners, many times each, stays two fillings.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace vern {
@@ -22,5 +23,12 @@ struct ChoiceCosts {
 // combinations: the weight of each combination seen; places: for each
 // place that varies, the weights of its options as seen.
 ChoiceCosts choice_costs(const std::vector<double>& combinations, const std::vector<std::vector<double>>& places);
+
+// The same places said partly each way: the `coupled` ones (count of them)
+// as the combinations of their options seen (weights), the `free` ones
+// each on its own; `entries`: all places' options, which name an entry.
+// choice_costs's two costs are its two ends: all coupled, all free.
+double mixed_cost(const std::vector<double>& coupled_combinations, std::size_t coupled,
+                  const std::vector<std::vector<double>>& free, std::size_t entries);
 
 }  // namespace vern

@@ -51,9 +51,9 @@ class Generaliser {
       if (frame.members.size() < 2) return;
       if (auto merged = generalise(frame)) {
         changed = true;
-        for (NodeId m : frame.members) {
-          replace[m] = *merged;
-          if (joined) joined->emplace_back(m, *merged);
+        for (const auto& [m, split] : *merged) {
+          replace[m] = split;
+          if (joined) joined->emplace_back(m, split);
         }
       }
     };
@@ -197,34 +197,81 @@ class Generaliser {
     return key;
   }
 
-  // Alternatives of one choice: their places vary independently when that
-  // costs no more bits than the combinations seen, counting only the
-  // places that vary. Alternatives that differ at one place only cost the
-  // same either way, and become that place's choice: the same buildings,
-  // one choice lower.
-  bool independent_cheaper(const Frame& frame, const std::vector<std::vector<std::pair<NodeId, double>>>& seen) const {
+  // Alternatives of one choice: which of their places vary independently,
+  // counting only the places that vary. All of them when that costs no
+  // more bits than the combinations seen (alternatives that differ at one
+  // place only cost the same either way, and become that place's choice:
+  // the same buildings, one choice lower). Else, place by place, those
+  // whose options said on their own, beside the combinations of the
+  // others, cost no more (a roof of any kind on houses whose ground floor
+  // and storeys keep one door bay's place together); none when none.
+  std::optional<std::vector<bool>> free_places(const Frame& frame,
+                                               const std::vector<std::vector<std::pair<NodeId, double>>>& seen) const {
     std::vector<std::size_t> varying;
-    std::vector<std::vector<double>> places;
+    std::size_t entries = 0;
     for (std::size_t i = 0; i < seen.size(); ++i)
       if (seen[i].size() > 1) {
         varying.push_back(i);
-        places.emplace_back();
-        for (const auto& [child, w] : seen[i]) places.back().push_back(w);
+        entries += seen[i].size();
       }
-    std::map<std::vector<NodeId>, double> fillings;
-    for (NodeId m : frame.members) {
-      const auto& s = std::get<Split>(g_.op(m));
-      std::vector<NodeId> filling;
-      for (std::size_t i : varying) filling.push_back(s.parts[i].child);
-      fillings[filling] += weight_of(frame, m);
+    std::vector<bool> free(seen.size(), false);
+    auto options = [&](std::size_t i) {
+      std::vector<double> w;
+      for (const auto& [child, weight] : seen[i]) w.push_back(weight);
+      return w;
+    };
+    // The bits to say the places with `free` marking those said alone.
+    auto cost = [&](const std::vector<bool>& alone) {
+      std::map<std::vector<NodeId>, double> fillings;
+      std::size_t coupled = 0;
+      std::vector<std::vector<double>> own;
+      for (std::size_t i : varying) {
+        if (alone[i]) own.push_back(options(i));
+        else ++coupled;
+      }
+      for (NodeId m : frame.members) {
+        const auto& s = std::get<Split>(g_.op(m));
+        std::vector<NodeId> filling;
+        for (std::size_t i : varying)
+          if (!alone[i]) filling.push_back(s.parts[i].child);
+        fillings[filling] += weight_of(frame, m);
+      }
+      std::vector<double> joint;
+      for (const auto& [filling, w] : fillings) joint.push_back(w);
+      return mixed_cost(joint, coupled, own, entries);
+    };
+    std::vector<bool> all = free;
+    for (std::size_t i : varying) all[i] = true;
+    const double coupled = cost(free), independent = cost(all);
+    // Freed one at a time, the place that saves most first, while one
+    // saves anything; kept only where that beats both ends.
+    double best = coupled;
+    for (bool saved = true; saved;) {
+      saved = false;
+      std::optional<std::size_t> pick;
+      for (std::size_t i : varying) {
+        if (free[i]) continue;
+        std::vector<bool> tried = free;
+        tried[i] = true;
+        if (const double c = cost(tried); c < best - 1e-9) {
+          best = c;
+          pick = i;
+        }
+      }
+      if (pick) {
+        free[*pick] = true;
+        saved = true;
+      }
     }
-    std::vector<double> joint;
-    for (const auto& [filling, w] : fillings) joint.push_back(w);
-    const ChoiceCosts costs = choice_costs(joint, places);
-    return costs.independent <= costs.coupled + 1e-9;
+    if (free != all && best < std::min(coupled, independent) - 1e-9) return free;
+    if (independent <= coupled + 1e-9) return all;
+    return std::nullopt;
   }
 
-  std::optional<NodeId> generalise(const Frame& frame) {
+  // The members as splits joined where `free` says: members that hold the
+  // same children at every other place become one split, whose free places
+  // are a choice of what every member held there. Each member's new node.
+  std::optional<std::vector<std::pair<NodeId, NodeId>>> generalise(const Frame& frame) {
     // A copy: interning below may grow the arena and move its nodes.
     const Split first = std::get<Split>(g_.op(frame.members.front()));
     const std::size_t n = first.parts.size();
@@ -245,11 +292,42 @@ class Generaliser {
     }
     for (const auto& at : seen) busiest = std::max(busiest, at.size());
     if (busiest < 2) return std::nullopt;
-    if (frame.alternatives ? runs_of_tiles(first, seen) || lengths_follow_children(frame, seen) ||
-                                 !independent_cheaper(frame, seen)
-                           : frame.members.size() < 2 * busiest)
+    std::vector<bool> free(n, true);
+    if (frame.alternatives) {
+      if (runs_of_tiles(first, seen) || lengths_follow_children(frame, seen)) return std::nullopt;
+      const auto places = free_places(frame, seen);
+      if (!places) return std::nullopt;
+      free = *places;
+    } else if (frame.members.size() < 2 * busiest) {
       return std::nullopt;
+    }
+    // Members by what they hold at the places that stay coupled.
+    std::map<std::vector<NodeId>, std::vector<NodeId>> groups;
+    std::vector<std::vector<NodeId>> order;
+    for (NodeId m : frame.members) {
+      std::vector<NodeId> key;
+      const auto& s = std::get<Split>(g_.op(m));
+      for (std::size_t i = 0; i < n; ++i)
+        if (!free[i]) key.push_back(s.parts[i].child);
+      auto [it, fresh] = groups.try_emplace(key);
+      if (fresh) order.push_back(key);
+      it->second.push_back(m);
+    }
+    std::vector<std::pair<NodeId, NodeId>> out;
+    for (const auto& key : order) {
+      const std::vector<NodeId>& members = groups.at(key);
+      const NodeId joined = joined_split(frame, members, seen, free);
+      for (NodeId m : members) out.emplace_back(m, joined);
+    }
+    return out;
+  }
 
+  // One split for `members`: at a free place a choice of what every member
+  // of the frame held there (seen), elsewhere the members' own child.
+  NodeId joined_split(const Frame& frame, const std::vector<NodeId>& members,
+                      const std::vector<std::vector<std::pair<NodeId, double>>>& seen, const std::vector<bool>& free) {
+    const Split first = std::get<Split>(g_.op(members.front()));
+    const std::size_t n = first.parts.size();
     // The members share their proportions (the frame's key), not their
     // lengths: relative sizes range over each member's own scaled to the
     // first member's relative total, or a front a fifth of every plot's
@@ -266,7 +344,7 @@ class Generaliser {
     for (std::size_t i = 0; i < n; ++i) {
       Range range{0, 0};
       bool has_range = false;
-      for (NodeId m : frame.members) {
+      for (NodeId m : members) {
         const Split& s = std::get<Split>(g_.op(m));
         if (auto r = literal_range(s.parts[i].size.value)) {
           const double total = relative_total(s);
@@ -280,7 +358,7 @@ class Generaliser {
       }
       SplitPart part;
       part.size = {range_expr(range, opt_.tolerance), frame.relative[i]};
-      part.child = weighted_choice(g_, seen[i]);
+      part.child = free[i] ? weighted_choice(g_, seen[i]) : first.parts[i].child;
       merged.parts.push_back(std::move(part));
     }
     return g_.intern({std::move(merged), {}});

@@ -18,7 +18,12 @@
 // tile, a kept option) make every example's top split unique, so without
 // this a style comes back as one alternative per example. Such a frame is
 // joined when saying its varying places independently costs no more bits
-// than listing the combinations seen (choice_costs.hpp); its members' flags
+// than listing the combinations seen (choice_costs.hpp), or in part: where
+// some places said on their own beside the combinations of the others cost
+// fewer bits than either (a roof of any kind on houses whose ground floor
+// and storeys keep one door bay's place together), the members holding the
+// same children at the others become one split each, with a choice at the
+// free places; its members' flags
 // are those of members built from examples unified, an example's own split
 // taking them (its flags say nothing yet). Its weights are the choice's.
 //
