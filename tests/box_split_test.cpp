@@ -228,6 +228,21 @@ TEST(BoxSplit, ARowOfBuildingsIsCutIntoBuildingsBeforeTheAirAboveIt) {
   }
 }
 
+TEST(BoxSplit, AYardBeforeAWholeBuildingIsOneEmptyPart) {
+  // A wing right across the plot's depth beside a house of two storeys
+  // set back 4 m from the street: once the house is cut from the wing,
+  // the yard every storey borders alike is cut off first, one empty part,
+  // not one strip of it beside each storey.
+  const SplitTree t = split({part("wing", {0, 0, 0}, {2, 10, 6}, 0), part("storey", {2, 4, 0}, {8, 10, 3}, 1),
+                             part("storey", {2, 4, 3}, {8, 10, 6}, 2)});
+  ASSERT_TRUE(cut_along(t, 0, 2));
+  const SplitTree& house = t.children[1];
+  ASSERT_TRUE(cut_along(house, 1, 2));
+  EXPECT_EQ(house.children[0].kind, Kind::Empty);
+  ASSERT_TRUE(cut_along(house.children[1], 2, 2));
+  EXPECT_EQ(leaves(house.children[1]), (std::vector<std::uint32_t>{1, 2}));
+}
+
 TEST(BoxSplit, ATieredTowerIsCutAsTiersStandingOnTiers) {
   // Three tiers, each inset in the one below: cut at the lowest tier only,
   // then the air round the rest peeled (x, y), then the next tier, so each

@@ -31,6 +31,24 @@ TEST(TurnedExamples, AQuarterTurnTurnsBoxesCounterclockwise) {
   EXPECT_EQ(turned_example(t, 3).boxes[0].min, e.boxes[0].min);
 }
 
+// Whether some alternative of g's start is a quarter turn about z of a
+// split (reached through the calls inference writes): the turn written.
+bool writes_the_turn(const Grammar& g) {
+  auto through_calls = [&](NodeId n) {
+    while (const auto* call = std::get_if<Call>(&g.op(n))) n = g.rules[call->rule].body;
+    return n;
+  };
+  const auto* start = std::get_if<Choose>(&g.op(g.rules[g.start_rule].body));
+  if (!start) return false;
+  for (const auto& o : start->options) {
+    const auto* turn = std::get_if<Rotate>(&g.op(o.child));
+    if (turn && write_grammar(g).find("R(z, pi / 2){") != std::string::npos &&
+        std::holds_alternative<Split>(g.op(through_calls(turn->child))))
+      return true;
+  }
+  return false;
+}
+
 // common_orientation with each example cut as it is.
 std::vector<int> orientation(const std::vector<Example>& examples) {
   std::vector<SplitTree> trees;
@@ -56,7 +74,7 @@ TEST(TurnedExamples, InferenceWritesTheTurnAndDerivesEveryExample) {
   o.threads = 1;
   const Inference learnt = infer(examples, o);
   const std::string text = write_grammar(learnt.grammar);
-  EXPECT_NE(text.find("--> R(z, pi / 2){ split"), std::string::npos) << text;
+  EXPECT_TRUE(writes_the_turn(learnt.grammar)) << text;
   for (const Example& e : examples) {
     const Example placed = at_origin(e);
     EXPECT_TRUE(check_example(learnt.grammar, placed.boxes, example_size(placed)).derivable) << e.source;
@@ -77,7 +95,7 @@ TEST(TurnedExamples, TheGrammarIsTheSameOnOneThreadAsOnTwo) {
   two.threads = 2;
   const Inference a = infer(examples, one), b = infer(examples, two);
   const std::string text = write_grammar(a.grammar);
-  EXPECT_NE(text.find("--> R(z, pi / 2){ split"), std::string::npos) << text;  // a turn was found
+  EXPECT_TRUE(writes_the_turn(a.grammar)) << text;  // a turn was found
   EXPECT_EQ(text, write_grammar(b.grammar));
   EXPECT_EQ(a.warnings, b.warnings);
 }

@@ -29,7 +29,9 @@
 // container tries: the root x, y, z; a piece of a cut along a the other
 // two, the horizontal one before z (the thesis's global rounds would give
 // a piece of a y-cut z first); and a cut that only peels empty space off a
-// container's ends waits for an axis that divides its parts (see cut).
+// container's ends waits for an axis that divides its parts (see cut),
+// unless every part borders that space alike (uniform_peel: a yard before
+// a whole building).
 // The bounds are sorted by radix sort on their
 // order-preserving bit patterns (11 bits a pass), ties in input order.
 //
@@ -341,6 +343,10 @@ class Splitter {
       const int a = w.axes[static_cast<std::size_t>(i)];
       if (w.lo[static_cast<std::size_t>(a)] == w.hi[static_cast<std::size_t>(a)]) continue;  // flat along a
       if (!find_pieces(w, a)) continue;
+      if (pieces_.size() == 1 && uniform_peel(w, a)) {
+        cut_along(w, a);
+        return;
+      }
       if (pieces_.size() > 1) {
         if (a != 2 && storeys_first(w, a)) {
           cut_along(w, 2);
@@ -362,6 +368,27 @@ class Splitter {
       return;
     }
     unsplittable(w);
+  }
+
+  // Does the one piece of the last sweep along a leave empty space that
+  // every box borders alike: all its boxes start where the piece starts,
+  // if there is space before it, and end where it ends, if there is space
+  // after it? A front yard before a whole building, or air over a flat
+  // row: one empty part, peeled first, where waiting would give every part
+  // of the building its own strip of it (each leaf a split with a nil) and
+  // the examples as many sizes to join as they have parts.
+  bool uniform_peel(const Work& w, int a) const {
+    const auto ax = static_cast<std::size_t>(a);
+    const Span& piece = pieces_[0];
+    const bool before = piece.lo != w.lo[ax], after = piece.hi != w.hi[ax];
+    const Event* events = events_[ax].data();
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const Event e = events[i];
+      const bool is_max = (e & 1u) != 0;
+      if (!is_max && before && rank_of(ax, e) != piece.lo) return false;
+      if (is_max && after && rank_of(ax, e) != piece.hi) return false;
+    }
+    return before || after;
   }
 
   // How much of each piece of the last sweep along a its boxes fill, as a
