@@ -933,7 +933,6 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   const SelfNesting nesting = fold_self_nesting(g, merged, book, options.tolerance);
   if (nesting.rules > 0) {
     carry_notes(nesting.rebuilt, book, tile_counts);
-    carry_rows(nesting.rebuilt, rows);
     merged = Unifier(g, options, book, rows, tile_counts, counts, copied).run(nesting.root);
   }
   // Alternatives that differ only below some of their parts become one

@@ -263,8 +263,17 @@ std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::ve
       }
       return false;
     };
+    // Only the part that spreads least in metres may be the scale: a part
+    // as small as it is variable (a sliver of a tower's podium) would
+    // spread the others' weights as much as the plot does, and read as a
+    // scale by a hair.
     double least = 0;
-    for (std::size_t i : relative) least += follows(i) ? 0.0 : spread(i, std::nullopt);
+    std::optional<std::size_t> steadiest;
+    for (std::size_t i : relative) {
+      const double own = spread(i, std::nullopt);
+      least += follows(i) ? 0.0 : own;
+      if (!steadiest || own < spread(*steadiest, std::nullopt)) steadiest = i;
+    }
     for (std::size_t ref : relative) {
       bool usable = true;
       for (std::size_t m = 0; m < rows && usable; ++m) usable = lengths[m][ref] > tolerance;
@@ -283,7 +292,7 @@ std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::ve
         best_fixed = fixed;
         best = ref;
       }
-      if (cost < least) {
+      if (ref == steadiest && cost < least) {
         least = cost;
         scale = ref;
       }
