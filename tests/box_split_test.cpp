@@ -243,6 +243,23 @@ TEST(BoxSplit, AYardBeforeAWholeBuildingIsOneEmptyPart) {
   EXPECT_EQ(leaves(house.children[1]), (std::vector<std::uint32_t>{1, 2}));
 }
 
+TEST(BoxSplit, AHouseBehindItsYardBetweenTwoWingsIsOnePiece) {
+  // Two wings right across the plot's depth and, between them, a house of
+  // two bays and two storeys set back 4 m: its bays are set back alike,
+  // so the cut along x gives the wings and the house, not the wings and
+  // each bay, and the house's yard is one empty part.
+  std::vector<LabelledBox> boxes{part("wing", {0, 0, 0}, {2, 10, 6}, 0), part("wing", {8, 0, 0}, {10, 10, 6}, 1)};
+  std::uint32_t id = 2;
+  for (const double x : {2.0, 5.0})
+    for (const double z : {0.0, 3.0}) boxes.push_back(part("storey", {x, 4, z}, {x + 3, 10, z + 3}, id++));
+  const SplitTree t = split(boxes);
+  ASSERT_TRUE(cut_along(t, 0, 3));
+  const SplitTree& house = t.children[1];
+  ASSERT_TRUE(cut_along(house, 1, 2));
+  EXPECT_EQ(house.children[0].kind, Kind::Empty);
+  EXPECT_EQ(leaves(house.children[1]), (std::vector<std::uint32_t>{2, 3, 4, 5}));
+}
+
 TEST(BoxSplit, ATieredTowerIsCutAsTiersStandingOnTiers) {
   // Three tiers, each inset in the one below: cut at the lowest tier only,
   // then the air round the rest peeled (x, y), then the next tier, so each

@@ -629,6 +629,7 @@ class Splitter {
       return false;
     }
     group_touching_pieces();
+    group_set_back_pieces(w, a);
     return true;
   }
 
@@ -653,6 +654,56 @@ class Splitter {
       } else {
         pieces_[kept] = pieces_[i];
         compound_[kept] = false;
+        ++kept;
+      }
+      into[i] = static_cast<std::uint32_t>(kept - 1);
+    }
+    pieces_.resize(kept);
+    compound_.resize(kept);
+    for (std::uint32_t& t : target_) t = into[t];
+  }
+
+  // Pieces set back together: a run of neighbouring pieces along a
+  // horizontal axis whose parts all start (or all end) at one place along
+  // the other horizontal axis, inside the container, where their
+  // neighbours reach further (a house behind its front yard between two
+  // wings right across the plot). The run is one piece, cut again later,
+  // along the other axis first: its yard is one empty part, not a strip
+  // beside each of its bays.
+  void group_set_back_pieces(const Work& w, int a) {
+    if (a == 2 || pieces_.size() < 3) return;
+    const auto b = static_cast<std::size_t>(1 - a);
+    const std::size_t n = pieces_.size();
+    std::vector<Rank> lo(n, std::numeric_limits<Rank>::max()), hi(n, 0);
+    const Event* events = events_[static_cast<std::size_t>(a)].data();
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const Event e = events[i];
+      if ((e & 1u) != 0) continue;
+      const std::uint32_t box = e >> 1;
+      const std::uint32_t p = target_[span_of_[box]];
+      lo[p] = std::min(lo[p], lo_[b][box]);
+      hi[p] = std::max(hi[p], hi_[b][box]);
+    }
+    auto set_back = [&](std::size_t p) { return lo[p] > w.lo[b] || hi[p] < w.hi[b]; };
+    // A piece joins the run before it when set back alike and touching it.
+    std::vector<bool> joins(n, false);
+    std::size_t kept = n;
+    for (std::size_t i = 1; i < n; ++i) {
+      joins[i] = set_back(i) && lo[i] == lo[i - 1] && hi[i] == hi[i - 1] && pieces_[i - 1].hi == pieces_[i].lo;
+      kept -= joins[i] ? 1 : 0;
+    }
+    // Nothing joined, or everything (a peel of the whole container, which
+    // uniform_peel takes where it is the only cut).
+    if (kept == n || kept == 1) return;
+    std::vector<std::uint32_t> into(n);
+    kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (joins[i]) {
+        pieces_[kept - 1].absorb(pieces_[i]);
+        compound_[kept - 1] = true;
+      } else {
+        pieces_[kept] = pieces_[i];
+        compound_[kept] = compound_[i];
         ++kept;
       }
       into[i] = static_cast<std::uint32_t>(kept - 1);
