@@ -309,8 +309,9 @@ std::optional<SharePlan> plan_shares(const Seen& s, const ShareOptions& opt) {
     for (double l : run) total += l / runs;
   total = shortest_decimal(total, total * 0.01);
   const bool fixed = s.fixed > 0;
-  std::vector<std::vector<double>> shares(k);  // per part, per run
-  for (const auto& run : s.lengths) {
+  std::vector<std::vector<double>> shares(k);  // per part, per run (lengths in metres need none)
+  for (std::size_t r = 0; r < s.lengths.size() && !s.metres; ++r) {
+    const std::vector<double>& run = s.lengths[r];
     // In the scale of the shares written as numbers, where there are.
     double sum = 0;
     for (std::size_t j = 0; j < k; ++j) sum += !fixed || !s.drawing[j] ? run[j] : 0;

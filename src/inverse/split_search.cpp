@@ -273,10 +273,15 @@ void SplitSearch::add_witness(double k) {
           mode_ == Mode::Overflow ? (parts_[i].relative ? 0.0 : value[i] / k) : (shares ? value[i] * k : value[i]);
     }
   }
-  // Every part of a split that draws: the parts written as numbers beside
-  // the drawn ones set the scale their shares are read in (share_splits).
-  if (std::ranges::none_of(parts_, &PartInfo::random)) return;
+  // The parts that draw; and where two or more do, the parts written as
+  // numbers too: they set the scale the drawn ones are read in
+  // (share_splits, which reads only such splits). A split drawing once
+  // (the common `~rand : x | ~1 : nil`) records its one part only: this
+  // runs for every placement check tries.
+  const auto drawing = std::ranges::count_if(parts_, &PartInfo::random);
+  if (drawing == 0) return;
   for (std::size_t i = 0; i < parts_.size(); ++i) {
+    if (drawing < 2 && !parts_[i].random) continue;
     WitnessLine w = m_.line(WitnessLine::Kind::Part, id_);
     w.spelled = parts_[i].random;
     w.index = i;
