@@ -93,6 +93,68 @@ std::optional<std::vector<PartPlan>> plan_sizes(const std::vector<std::vector<do
 
 namespace {
 
+// Of three or more relative parts that all vary, none in a ratio to
+// another, the one the others are drawn beside, if any: two aisles of
+// independent widths beside a nave of one share are shares of the nave,
+// and drawn as metres, or as shares of the whole, each would carry the
+// plot's variation too (a narrow aisle beside a wide nave, in a proportion
+// the style never shows). Only the part that spreads least in metres may
+// be the scale (a part as small as it is variable, a sliver of a tower's
+// podium, would spread the others as much as the plot does), and only
+// where the others spread less beside it than in metres: spread summed as
+// log(largest / smallest), what a range costs to say at a given precision.
+// In metres, a part on a straight line of an earlier one's length (a
+// podium and the storeys 1.5 times its height plus 2.5 m) costs nothing:
+// joint_sizes draws it from the other.
+std::optional<std::size_t> scale_part(const std::vector<std::vector<double>>& lengths,
+                                      const std::vector<std::size_t>& relative, double tolerance) {
+  const std::size_t rows = lengths.size();
+  auto column = [&](std::size_t i) {
+    std::vector<double> c(rows);
+    for (std::size_t m = 0; m < rows; ++m) c[m] = lengths[m][i];
+    return c;
+  };
+  auto spread = [&](std::size_t i, std::optional<std::size_t> ref) {
+    double lo = std::numeric_limits<double>::infinity(), hi = 0;
+    for (std::size_t m = 0; m < rows; ++m) {
+      const double w = lengths[m][i] / (ref ? lengths[m][*ref] : 1.0);
+      lo = std::min(lo, w);
+      hi = std::max(hi, w);
+    }
+    return lo > 0 ? std::log(hi / lo) : std::numeric_limits<double>::infinity();
+  };
+  auto follows_earlier = [&](std::size_t i) {
+    if (rows < 4) return false;
+    const std::vector<double> y = column(i);
+    for (std::size_t j : relative) {
+      if (j == i) break;
+      const std::vector<double> x = column(j);
+      if (!shows_a_line(x, tolerance)) continue;
+      const Fit f = line_fit(x, y);
+      if (worst_miss(x, y, f.a, f.b) <= tolerance) return true;
+    }
+    return false;
+  };
+  double in_metres = 0, steadiest_spread = std::numeric_limits<double>::infinity();
+  std::optional<std::size_t> steadiest;
+  for (std::size_t i : relative) {
+    const double own = spread(i, std::nullopt);
+    in_metres += follows_earlier(i) ? 0.0 : own;
+    if (own < steadiest_spread) {
+      steadiest_spread = own;
+      steadiest = i;
+    }
+  }
+  if (!steadiest) return std::nullopt;
+  for (std::size_t m = 0; m < rows; ++m)
+    if (!(lengths[m][*steadiest] > tolerance)) return std::nullopt;
+  double beside = 0;
+  for (std::size_t i : relative)
+    if (i != *steadiest) beside += spread(i, steadiest);
+  if (!(beside < in_metres)) return std::nullopt;
+  return steadiest;
+}
+
 // Do the sizes give every row its own cuts, within the tolerance? Absolute
 // drawn parts take the row's own length; relative parts share the rest by
 // their weights (fixed, or the row's own drawn weight).
@@ -226,78 +288,28 @@ std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::ve
   // drawn as weights beside it (the widest member's scale). Only where it
   // fixes a part: two parts that both vary are left as each row's own
   // lengths, whose shares joint_sizes links as straight lines.
-  //
   // Where none keeps a ratio to another, one of them may still be the
-  // scale the others are drawn in: two aisles of independent widths beside
-  // a nave of one share are shares of the nave, and drawn as metres, or as
-  // shares of the whole, each would carry the plot's variation too (a
-  // variant's narrow aisle beside a wide nave, in a proportion the style
-  // never shows). The scale is the part, if any, beside which the others'
-  // weights spread least (the sum of log(largest / smallest), which is what
-  // their ranges cost to say at a given precision), against their
-  // lengths in metres.
+  // scale the others are drawn in (scale_part).
   if (!ratios_fixed && relative.size() >= 3) {
-    std::size_t best = parts, best_fixed = 0, scale = parts;
-    auto spread = [&](std::size_t i, std::optional<std::size_t> ref) {
-      double lo = std::numeric_limits<double>::infinity(), hi = 0;
-      for (std::size_t m = 0; m < rows; ++m) {
-        const double w = lengths[m][i] / (ref ? lengths[m][*ref] : 1.0);
-        lo = std::min(lo, w);
-        hi = std::max(hi, w);
-      }
-      return lo > 0 ? std::log(hi / lo) : std::numeric_limits<double>::infinity();
-    };
-    // In metres, a part that is a straight line of an earlier one's length
-    // (a podium and the storeys 1.5 times its height plus 2.5 m, under
-    // tiers taking the rest) costs nothing more to say: joint_sizes draws
-    // it from the other.
-    auto follows = [&](std::size_t i) {
-      if (rows < 4) return false;
-      const std::vector<double> y = column(i);
-      for (std::size_t j : relative) {
-        if (j == i) break;
-        const std::vector<double> x = column(j);
-        if (!shows_a_line(x, tolerance)) continue;
-        const Fit f = line_fit(x, y);
-        if (worst_miss(x, y, f.a, f.b) <= tolerance) return true;
-      }
-      return false;
-    };
-    // Only the part that spreads least in metres may be the scale: a part
-    // as small as it is variable (a sliver of a tower's podium) would
-    // spread the others' weights as much as the plot does, and read as a
-    // scale by a hair.
-    double least = 0;
-    std::optional<std::size_t> steadiest;
-    for (std::size_t i : relative) {
-      const double own = spread(i, std::nullopt);
-      least += follows(i) ? 0.0 : own;
-      if (!steadiest || own < spread(*steadiest, std::nullopt)) steadiest = i;
-    }
+    std::size_t best = parts, best_fixed = 0;
     for (std::size_t ref : relative) {
       bool usable = true;
       for (std::size_t m = 0; m < rows && usable; ++m) usable = lengths[m][ref] > tolerance;
       if (!usable) continue;
       std::size_t fixed = 0;
-      double cost = 0;
       for (std::size_t i : relative) {
         if (i == ref) continue;
         const double ratio = lengths[widest][i] / lengths[widest][ref];
         bool same = true;
         for (std::size_t m = 0; m < rows && same; ++m) same = std::abs(ratio * lengths[m][ref] - lengths[m][i]) <= tolerance;
         fixed += same ? 1 : 0;
-        cost += spread(i, ref);
       }
       if (fixed > best_fixed) {
         best_fixed = fixed;
         best = ref;
       }
-      if (ref == steadiest && cost < least) {
-        least = cost;
-        scale = ref;
-      }
     }
-    if (best == parts) best = scale;
+    if (best == parts) best = scale_part(lengths, relative, tolerance).value_or(parts);
     if (best != parts && best_fixed + 1 < relative.size()) {
       for (std::size_t i : relative) {
         const double ratio = lengths[widest][i] / lengths[widest][best];
