@@ -345,9 +345,7 @@ TEST(Infer, PartsCutSideBySideThatAreASplitInsideASplitKeepTheirProportions) {
   const Inference inferred = infer(test::derived_examples(source, 10), {});
   const std::string text = write_grammar(inferred.grammar);
   for (std::uint64_t seed = 101; seed <= 120; ++seed) {
-    DeriveOptions o;
-    o.seed = seed;
-    const Example variant = test::example_of(test::derived_parts(derive(inferred.grammar, o)));
+    const Example variant = test::example_of(test::derived_parts(inferred.grammar, seed));
     const CheckResult r = check_example(source, variant.boxes, example_size(variant));
     EXPECT_TRUE(r.derivable) << "seed " << seed << ": " << r.mismatch << "\n" << text;
   }
@@ -367,11 +365,9 @@ TEST(Infer, AislesBesideANaveKeepTheirProportionToIt) {
   const Inference inferred = infer(test::derived_examples(source, 30), {});
   const std::string text = write_grammar(inferred.grammar);
   for (std::uint64_t seed = 101; seed <= 140; ++seed) {
-    DeriveOptions o;
-    o.seed = seed;
     double nave = 0;
     std::vector<double> aisles;
-    for (const LabelledBox& b : test::derived_parts(derive(inferred.grammar, o))) {
+    for (const LabelledBox& b : test::derived_parts(inferred.grammar, seed)) {
       if (b.label == "aisle") aisles.push_back(b.max.y - b.min.y);
       if (b.label == "plinth") nave = b.max.y - b.min.y;
     }

@@ -24,15 +24,7 @@ col --> split(z){ ~rand(1, 9) : I(rect) | ~rand(1, 9) : nil }
 // The plot: the examples' own extent ends at their tallest box.
 constexpr glm::dvec3 kPlot{12, 8, 10};
 
-std::vector<Example> examples_of(const Grammar& g) {
-  std::vector<Example> out;
-  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    DeriveOptions o;
-    o.seed = seed;
-    out.push_back(test::example_of(test::derived_parts(derive(g, o))));
-  }
-  return out;
-}
+std::vector<Example> examples_of(const Grammar& g) { return test::derived_examples(g, 6); }
 
 // Each example checked against g on the plot.
 std::vector<CheckResult> checked(const Grammar& g, const std::vector<Example>& examples) {
@@ -154,9 +146,7 @@ TEST(ShareSplits, LengthsInMetresInOneProportionBecomeOneDraw) {
   double worst = 0;
   std::size_t pairs = 0;
   for (std::uint64_t seed = 1001; seed <= 1100; ++seed) {
-    DeriveOptions o;
-    o.seed = seed;
-    std::vector<LabelledBox> parts = test::derived_parts(derive(g, o));
+    std::vector<LabelledBox> parts = test::derived_parts(g, seed);
     std::ranges::sort(parts, {}, [](const LabelledBox& b) { return b.min.x; });
     for (std::size_t i = 0; i + 2 < parts.size(); ++i) {
       if (parts[i].label != "casement" || parts[i + 1].label != "mullion") continue;

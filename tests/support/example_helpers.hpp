@@ -112,15 +112,18 @@ inline std::vector<vern::LabelledBox> derived_parts(const Derivation& d) {
   return out;
 }
 
+// The parts of the building g derives with this seed (a variant).
+inline std::vector<vern::LabelledBox> derived_parts(const Grammar& g, std::uint64_t seed) {
+  DeriveOptions o;
+  o.seed = seed;
+  return derived_parts(derive(g, o));
+}
+
 // The examples a grammar derives with seeds 1 to k, as inference's
 // round trips take them.
 inline std::vector<Example> derived_examples(const Grammar& g, std::uint64_t k) {
   std::vector<Example> out;
-  for (std::uint64_t seed = 1; seed <= k; ++seed) {
-    DeriveOptions o;
-    o.seed = seed;
-    out.push_back(example_of(derived_parts(derive(g, o))));
-  }
+  for (std::uint64_t seed = 1; seed <= k; ++seed) out.push_back(example_of(derived_parts(g, seed)));
   return out;
 }
 
