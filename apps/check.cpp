@@ -68,6 +68,7 @@ int run(int argc, char** argv) {
   const bool brief = args.has("--brief");
   ExampleLimits limits = example_limits(args);
   const std::vector<std::string> stack = stack_order(args);
+  const BuildingsMode buildings = buildings_mode(args);
   limits.tolerance = options.tolerance;
   // A hand-written grammar's plot can be larger than what it built (the
   // city's towers stop below its 80 m plot): --scope names the plot.
@@ -87,11 +88,12 @@ int run(int argc, char** argv) {
   const Grammar grammar = read_grammar_file(args.positional[0]);
   const std::vector<fs::path> files =
       example_files(std::vector<std::string>(args.positional.begin() + 1, args.positional.end()));
-  std::size_t fits = 0;
-  for (const auto& file : files) {
+  std::size_t fits = 0, examples = 0;
+  auto check_one = [&](const Example& loaded) {
+    ++examples;
+    const std::string& file = loaded.source;
     // Parts set into parts, or painted over one another, as infer takes
     // them: each keeps what is visible of it (layered_parts.hpp).
-    const Example loaded = load_example(file, limits);
     const Example example = visible_parts(loaded, Layering{stack, example_tolerance(loaded, options.tolerance)});
     std::vector<LabelledBox> boxes = example.boxes;
     for (auto& b : boxes) {
@@ -104,24 +106,32 @@ int run(int argc, char** argv) {
     CheckOptions own = options;
     own.tolerance = example_tolerance(example, options.tolerance);
     try {
-      r = naming_out_of_memory(file.string(), "while checking this example", "check it alone, or lower --max-steps",
+      r = naming_out_of_memory(file, "while checking this example", "check it alone, or lower --max-steps",
                                [&] { return check_example(grammar, boxes, scope.value_or(example_size(example)), own); });
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::Limit && e.kind() != ErrorKind::Input) throw;
-      throw Error(e.kind(), naming_input(e.what(), file.string()));
+      throw Error(e.kind(), naming_input(e.what(), file));
     }
     if (r.derivable) {
       ++fits;
-      std::cout << file.string() << ": derivable\n";
+      std::cout << file << ": derivable\n";
       if (!brief)
         for (const auto& line : r.witness) std::cout << "  " << line << "\n";
     } else {
-      std::cout << file.string() << ": NOT derivable: " << r.mismatch << "\n";
+      std::cout << file << ": NOT derivable: " << r.mismatch << "\n";
     }
+  };
+  // A file of several buildings is as many examples (scene_buildings.hpp).
+  std::vector<std::string> notes;
+  for (const auto& path : files) {
+    std::vector<Example> file;
+    file.push_back(load_example(path, limits));
+    for (const Example& e : examples_of_files(std::move(file), buildings, options.tolerance, notes)) check_one(e);
   }
-  std::cout << fits << " of " << files.size() << " example" << (files.size() == 1 ? "" : "s") << " derivable from "
+  print_notes("check", notes);
+  std::cout << fits << " of " << examples << " example" << (examples == 1 ? "" : "s") << " derivable from "
             << args.positional[0] << "\n";
-  return fits == files.size() ? 0 : kNotDerivable;
+  return fits == examples ? 0 : kNotDerivable;
 }
 
 }  // namespace

@@ -127,6 +127,7 @@ int run(int argc, char** argv) {
   }
   ExampleLimits limits = example_limits(args);
   limits.tolerance = options.tolerance;
+  const BuildingsMode buildings = buildings_mode(args);
   const std::uint64_t seed =
       args.has("--seed") ? static_cast<std::uint64_t>(CommandLine::integer(args, "--seed", 0, 1LL << 53)) : 1;
 
@@ -156,6 +157,10 @@ int run(int argc, char** argv) {
           std::fprintf(stderr, "\rreading examples %zu/%zu", done, files.size());
       });
   if (show_progress) std::fprintf(stderr, "\n");
+  // A file of several buildings is as many examples (scene_buildings.hpp).
+  std::vector<std::string> notes;
+  examples = examples_of_files(std::move(examples), buildings, options.tolerance, notes);
+  if (!quiet) print_notes("infer", notes);
   PrimitiveLibrary library = PrimitiveLibrary::builtin();
   if (args.has("--primitives")) library.load(args.value("--primitives"));
   options.primitives = &library;

@@ -14,6 +14,7 @@
 #include "inverse/box_split.hpp"
 #include "inverse/example.hpp"
 #include "inverse/infer.hpp"
+#include "inverse/scene_buildings.hpp"
 #include "inverse/merge.hpp"
 #include "inverse/split_graph.hpp"
 #include "table_row.hpp"
@@ -118,6 +119,27 @@ void BM_LoadObj(benchmark::State& state) {
   report_row(state, static_cast<double>(n), "parts", peak_heap_of(state.range(0), run));
 }
 BENCHMARK(BM_LoadObj)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Looking for buildings standing apart among a file's parts (what infer
+// and check do to every file read), each part a group of its own as in a
+// Blender export: the layout is one building, so this is the whole cost.
+void BM_SceneBuildings(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const Example e = layout_example(n);
+  const double tolerance = default_tolerance(e);
+  for (auto _ : state) {
+    state.PauseTiming();
+    Example file = e;  // the file as read, which the command hands over
+    state.ResumeTiming();
+    const SceneBuildings s = scene_buildings(std::move(file), BuildingsMode::Parts, tolerance);
+    benchmark::DoNotOptimize(s.buildings.data());
+  }
+  Example file = e;
+  reset_peak_heap();
+  { const SceneBuildings s = scene_buildings(std::move(file), BuildingsMode::Parts, tolerance); }
+  report_row(state, static_cast<double>(n), "parts", static_cast<double>(peak_heap_since_reset()));
+}
+BENCHMARK(BM_SceneBuildings)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_LoadCity(benchmark::State& state) {
   const auto files = city_files();

@@ -72,7 +72,7 @@ TEST(GenerateCli, OneFileLaysVariantsOutWithoutOverlap) {
   TempFolder dir;
   ASSERT_EQ(run_program("generate", {kGrammars + "garage.grm", "-n", "4", "--spacing", "2", "-o", "row.obj", "-q"}, dir.path()).exit_code, 0);
   const std::string obj = read_file(dir / "row.obj");
-  for (const char* name : {"# variant_000", "# variant_003"}) EXPECT_NE(obj.find(name), std::string::npos) << name;
+  for (const char* name : {"\ng variant_000\n", "\ng variant_003\n"}) EXPECT_NE(obj.find(name), std::string::npos) << name;
   // Four 12 x 8 plots on a 2 x 2 grid, 2 m apart: x reaches 12 + 2 + 12 = 26.
   EXPECT_NE(obj.find("\nv 26 "), std::string::npos);
   EXPECT_EQ(obj.find("\nv 27"), std::string::npos);

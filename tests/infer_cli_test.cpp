@@ -281,6 +281,16 @@ std::string blender_gltf(const std::vector<std::pair<std::string, std::pair<glm:
   "nodes": [)" + nodes + R"(], "scenes": [{"nodes": [)" + roots + R"(]}], "scene": 0})";
 }
 
+// A grammar's text without its comments and its @primitives line, which
+// name the files.
+std::string grammar_body(const fs::path& file) {
+  std::string text;
+  std::istringstream in(read_file(file));
+  for (std::string line; std::getline(in, line);)
+    if (!line.starts_with("#") && !line.starts_with("@primitives")) text += line + "\n";
+  return text;
+}
+
 // One Blender scene of houses exported as OBJ (six decimals) and as glTF
 // (32-bit floats written as doubles) gives one grammar: the floats' noise
 // (15.600000381469727, and sizes computed from it) comes out as the
@@ -310,11 +320,7 @@ TEST(InferCli, AnObjAndAGltfOfOneBlenderSceneGiveOneGrammar) {
     files.insert(files.end(), {"-o", out, "-q"});
     const auto r = run_program("infer", files, dir.path());
     EXPECT_EQ(r.exit_code, 0) << r.err;
-    std::string text;  // without the comments, which name the files
-    std::istringstream in(read_file(dir / out));
-    for (std::string line; std::getline(in, line);)
-      if (!line.starts_with("#") && !line.starts_with("@primitives")) text += line + "\n";
-    return text;
+    return grammar_body(dir / out);
   };
   const std::string from_obj = grammar_of(objs, "obj.grm");
   const std::string from_gltf = grammar_of(gltfs, "gltf.grm");
@@ -327,6 +333,79 @@ TEST(InferCli, AnObjAndAGltfOfOneBlenderSceneGiveOneGrammar) {
     const auto r = run_program("check", args, dir.path());
     EXPECT_EQ(r.exit_code, 0) << grammar << "\n" << r.out << r.err;
   }
+}
+
+// A Blender scene of three houses, each a wall with windows set into it
+// and a roof, standing apart, exported with default settings (an object
+// each, no groups; glTF: a root node each): each house is an example, as
+// it would be in a file of its own, and the OBJ and the glTF give one
+// grammar. Read whole (--buildings file), the scene is one example.
+TEST(InferCli, ABlenderSceneOfHousesIsAnExampleForEachHouse) {
+  TempFolder dir;
+  fs::create_directories(dir / "one");
+  std::vector<std::pair<std::string, std::pair<glm::dvec3, glm::dvec3>>> scene;
+  std::vector<std::string> own;
+  double x = 0;
+  for (const int bays : {2, 3, 4}) {
+    const double width = 2.4 * bays;
+    std::vector<std::pair<std::string, std::pair<glm::dvec3, glm::dvec3>>> house = {
+        {"wall", {{x, 0, 0}, {x + width, 5, 3}}}, {"roof", {{x, 0, 3}, {x + width, 5, 4.5}}}};
+    for (int i = 0; i < bays; ++i)
+      house.push_back({"window", {{x + 2.4 * i + 0.7, 0, 1}, {x + 2.4 * i + 1.7, 0.2, 2.2}}});
+    own.push_back("one/house" + std::to_string(bays) + ".gltf");
+    write_text(dir / own.back(), blender_gltf(house));
+    scene.insert(scene.end(), house.begin(), house.end());
+    x += width + 3;
+  }
+  write_text(dir / "scene.gltf", blender_gltf(scene));
+  int base = 1;
+  std::string obj = "# Blender 3.4.1\n# www.blender.org\nmtllib scene.mtl\n";
+  for (const auto& [name, box] : scene) obj += blender_box(name, box.first, box.second, base);
+  write_text(dir / "scene.obj", obj);
+
+  auto r = run_program("infer", {"one", "-o", "one.grm", "-q"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const std::string file : {"scene.obj", "scene.gltf"}) {
+    r = run_program("infer", {file, "-o", file + ".grm"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("note: " + file + " holds 3 buildings standing apart"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("infer: 3 examples -> "), std::string::npos) << r.err;
+    EXPECT_EQ(grammar_body(dir / (file + ".grm")), grammar_body(dir / "one.grm")) << file;
+    r = run_program("check", {"one.grm", file}, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find(file + " (building 2 of 3): derivable"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("3 of 3 examples derivable"), std::string::npos) << r.out;
+    r = run_program("check", {"one.grm", file, "--buildings", "file"}, dir.path());
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("0 of 1 example derivable"), std::string::npos) << r.out;
+  }
+  r = run_program("infer", {"scene.obj", "--buildings", "file", "-o", "whole.grm"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("infer: 1 example -> "), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("note:"), std::string::npos) << r.err;
+}
+
+// generate's files of several buildings (a glTF node and an OBJ group per
+// building) read back as those buildings: the same grammar as from a file
+// per building; a city, one building of the grammar, stays one example.
+TEST(InferCli, AFileOfSeveralBuildingsGenerateWroteIsAnExampleForEach) {
+  TempFolder dir;
+  ASSERT_EQ(run_program("generate", {kGrammars + "garage.grm", "-n", "4", "-o", "one/", "-q"}, dir.path()).exit_code, 0);
+  ASSERT_EQ(run_program("infer", {"one", "-o", "one.grm", "-q"}, dir.path()).exit_code, 0);
+  for (const std::string file : {"street.glb", "street.obj"}) {
+    ASSERT_EQ(run_program("generate", {kGrammars + "garage.grm", "-n", "4", "-o", file, "-q"}, dir.path()).exit_code, 0);
+    auto r = run_program("infer", {file, "-o", file + ".grm"}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("infer: 4 examples -> "), std::string::npos) << r.err;
+    EXPECT_EQ(grammar_body(dir / (file + ".grm")), grammar_body(dir / "one.grm")) << file;
+    r = run_program("check", {kGrammars + "garage.grm", file}, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("4 of 4 examples derivable"), std::string::npos) << r.out;
+  }
+  auto r = run_program("infer", {kExamples + "skyscraper_city/variant_000.glb", "-o", "city.grm"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("infer: 1 example -> "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("variant_000.glb looks like 72 buildings standing apart"), std::string::npos) << r.err;
 }
 
 // The OBJ objects a file names, sorted: its labels as written.
@@ -543,6 +622,13 @@ TEST(InferCli, UsageErrors) {
   r = run_program("infer", {"--help"});
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("usage: infer EXAMPLES"), std::string::npos);
+  // An option's help of several lines keeps to its column.
+  EXPECT_NE(r.out.find("examples: apart (default), each\n                            building standing apart"),
+            std::string::npos)
+      << r.out;
+  r = run_program("infer", {"x.obj", "-o", "x.grm", "--buildings", "streets"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--buildings"), std::string::npos) << r.err;
   r = run_program("check", {"only.grm"});
   EXPECT_EQ(r.exit_code, 2);
 }

@@ -135,6 +135,24 @@ TEST(ObjReader, GroupsNameObjectsOnlyInFilesWithoutO) {
   EXPECT_EQ(objects[0].mesh.face_sizes.size(), 2u);
 }
 
+// Objects say which group they start in: how many `g` statements came
+// before their `o` (generate writes a group per building; an object
+// before any group is in none, 0). Without `o`, each group is its own.
+TEST(ObjReader, ObjectsCarryTheGroupTheyStartIn) {
+  const std::string geometry = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const auto objects = parse(geometry + "o door\nf 1 2 3\ng variant_000\no wall\nf 1 2 3\nusemtl red\no roof\nf 1 2 3\n"
+                                        "g variant_001\no wall\nf 1 2 3\n");
+  ASSERT_EQ(objects.size(), 4u);
+  EXPECT_EQ(objects[0].group, 0u);
+  EXPECT_EQ(objects[1].group, 1u);
+  EXPECT_EQ(objects[2].group, 1u);
+  EXPECT_EQ(objects[3].group, 2u);
+  const auto grouped = parse(geometry + "g roof\nf 1 2 3\ng wall\nf 3 2 1\n");
+  ASSERT_EQ(grouped.size(), 2u);
+  EXPECT_EQ(grouped[0].group, 1u);
+  EXPECT_EQ(grouped[1].group, 2u);
+}
+
 TEST(ObjReader, FacesBeforeAnyNameFormAnUnnamedObject) {
   const auto objects = parse("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 3\no door\nf 1 3 2\n");
   ASSERT_EQ(objects.size(), 2u);

@@ -74,7 +74,7 @@ TEST(ObjWriter, OneObjectPerTerminalWithItsMaterial) {
   }
   EXPECT_EQ(statements, (std::vector<std::string>{
                             "# Written by Vernacular: one object per terminal, named by its label.",
-                            "# up y", "mtllib house.mtl", "# variant_000", "o rect", "usemtl rect", "o window",
+                            "# up y", "mtllib house.mtl", "g variant_000", "o rect", "usemtl rect", "o window",
                             "usemtl window"}));
 }
 
@@ -228,8 +228,8 @@ TEST(ObjWriter, VariantOffsetsUnknownLabelsAndColours) {
 
   const PrimitiveLibrary lib = PrimitiveLibrary::builtin();
   const std::string text = obj_text(scene, lib, "x.mtl");
-  EXPECT_NE(text.find("# variant_000\no balcony\nusemtl balcony\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("# variant_001\no rect\nusemtl colour_ff0000\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("g variant_000\no balcony\nusemtl balcony\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("g variant_001\no rect\nusemtl colour_ff0000\n"), std::string::npos) << text;
   const auto objects = read_back(text);
   ASSERT_EQ(objects.size(), 3u);
   EXPECT_EQ(objects[0].mesh.positions.size(), lib.box().positions.size());  // unknown: a box

@@ -98,7 +98,11 @@ std::string CommandLine::help() const {
     if (!s.value_names.empty()) left += " " + s.value_names;
     if (left.size() < 28) left.resize(28, ' ');
     else left += "\n" + std::string(28, ' ');
-    text += left + s.help + "\n";
+    // A help of several lines keeps to its column.
+    std::string help = s.help;
+    for (std::size_t at = help.find('\n'); at != std::string::npos; at = help.find('\n', at + 1))
+      help.insert(at + 1, std::string(28, ' '));
+    text += left + help + "\n";
   }
   if (!epilog_.empty()) text += "\n" + epilog_;
   return text;

@@ -1,6 +1,7 @@
 #include "support/example_options.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "graph/error.hpp"
 
@@ -24,6 +25,11 @@ void add_example_options(CommandLine& cl) {
   cl.add({"--stack", "", 1, "LABEL,LABEL,...",
           "the order overlapping parts are painted in, bottom to top: each keeps what is visible of\n"
           "it (annotations: --stack facade,window,sill). A part inside another needs no order"});
+  cl.add({"--buildings", "", 1, "apart|parts|groups|file",
+          "how a file of several buildings becomes examples: apart (default), each\n"
+          "building standing apart from the others, never dividing a top-level glTF\n"
+          "node or OBJ `g` group; parts, the same, dividing groups too; groups, each\n"
+          "group; file, the whole file one example"});
 }
 
 ExampleLimits example_limits(const ParsedCommandLine& args) {
@@ -61,6 +67,35 @@ std::vector<std::string> stack_order(const ParsedCommandLine& args) {
     from = comma + 1;
   }
   return labels;
+}
+
+BuildingsMode buildings_mode(const ParsedCommandLine& args) {
+  if (!args.has("--buildings")) return BuildingsMode::Apart;
+  const std::string mode = CommandLine::one_of(args, "--buildings", {"apart", "parts", "groups", "file"});
+  return mode == "parts"    ? BuildingsMode::Parts
+         : mode == "groups" ? BuildingsMode::Groups
+         : mode == "file"   ? BuildingsMode::File
+                            : BuildingsMode::Apart;
+}
+
+std::vector<Example> examples_of_files(std::vector<Example> files, BuildingsMode mode, double tolerance,
+                                       std::vector<std::string>& notes) {
+  std::vector<Example> out;
+  out.reserve(files.size());
+  for (Example& file : files) {
+    const double own = example_tolerance(file, tolerance);
+    SceneBuildings scene = scene_buildings(std::move(file), mode, own);
+    if (!scene.note.empty()) notes.push_back(std::move(scene.note));
+    for (Example& b : scene.buildings) out.push_back(std::move(b));
+  }
+  return out;
+}
+
+void print_notes(const std::string& program, const std::vector<std::string>& notes) {
+  constexpr std::size_t kShown = 3;
+  for (std::size_t k = 0; k < notes.size() && k < kShown; ++k) std::fprintf(stderr, "%s: %s\n", program.c_str(), notes[k].c_str());
+  if (notes.size() > kShown)
+    std::fprintf(stderr, "%s: note: %zu more files alike\n", program.c_str(), notes.size() - kShown);
 }
 
 }  // namespace vern

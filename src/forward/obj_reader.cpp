@@ -69,6 +69,7 @@ std::string_view rest_of_line(std::string_view line, const Token& keyword) {
 struct Segment {
   std::string name;
   std::uint32_t line = 0;
+  std::uint32_t group = 0;  // ObjObject::group
 };
 
 // Reads statements and hands each object to `each_` as soon as it is
@@ -119,8 +120,9 @@ class Reader {
     } else if (key == "g") {
       // Once a file names parts with `o`, its groups (materials, smoothing)
       // no longer matter.
-      if (!any_object_) groups_.push_back({name_after(line, tokens_[0]), number});
       ++groups_seen_;
+      if (!any_object_)
+        groups_.push_back({name_after(line, tokens_[0]), number, static_cast<std::uint32_t>(groups_seen_)});
     } else if (!is_ignored(key)) {
       if (!recognised_) {
         // Not quoted: a file that is not OBJ may be anything (a grammar's
@@ -173,7 +175,7 @@ class Reader {
     clear_faces();
     groups_.clear();
     any_object_ = true;
-    object_ = {std::move(name), number};
+    object_ = {std::move(name), number, static_cast<std::uint32_t>(groups_seen_)};
     object_has_faces_ = false;
     part_faces_ = 0;
   }
@@ -184,6 +186,7 @@ class Reader {
     if (begin == end) return;
     object_out_.name = segment.name;
     object_out_.line = segment.line != 0 ? segment.line : face_line_[begin];
+    object_out_.group = segment.group;
     Mesh& mesh = object_out_.mesh;
     mesh.positions.clear();
     mesh.normals.clear();

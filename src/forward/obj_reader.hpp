@@ -43,6 +43,12 @@ struct ObjObject {
   // The line of the `o`/`g` statement, or of the first face of an unnamed
   // object: for messages that point at the object.
   std::uint32_t line = 0;
+  // In a file that names parts with `o`: how many `g` statements came
+  // before the object's `o`. Exporters that group objects write one `g`
+  // per group (a building of a scene: inverse/scene_buildings.hpp), so
+  // objects of one group share this number. Without `o`, each `g` is a
+  // part and its own group.
+  std::uint32_t group = 0;
   // Only the vertices, normals and texture coordinates this object's faces
   // use, re-indexed from 0 in order of first use.
   Mesh mesh;

@@ -93,7 +93,9 @@ ObjStream::ObjStream(std::vector<std::string> labels, const PrimitiveLibrary& li
 
 void ObjStream::add(const Variant& variant) {
   std::string& out = out_;
-  out += "# " + variant.name + "\n";
+  // A group per variant: a file of several buildings reads back as its
+  // buildings (inverse/scene_buildings.hpp), as its glTF does.
+  out += "g " + variant.name + "\n";
   for (const Terminal& t : variant.terminals) {
     const std::uint32_t material = materials_.intern(t, labels_);  // also checks the label
     const Mesh& mesh = *meshes_[t.label];

@@ -5,7 +5,8 @@
 // as "#x", is written as graph/label.hpp says, and reads back the same).
 // Each terminal's primitive mesh is placed
 // by its scope (to_world) and moved by its variant's offset; indices are
-// absolute and 1-based. A `# <variant name>` comment starts each variant.
+// absolute and 1-based. A `g <variant name>` group holds each variant's
+// objects, so that a file of several buildings reads back as its buildings.
 // Materials: one per distinct colour for coloured terminals, one per label
 // otherwise (see palette.hpp). Coordinates are turned to the up axis asked
 // for (up_axis.hpp; y by default, as Blender imports OBJ), which a `# up y`

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <span>
@@ -88,17 +89,20 @@ class PartAdder {
   // part (its name in the file). `whole`: the mesh is known to be one loose
   // piece (a glTF mesh whole in its own coordinates, LocalMesh), so there
   // are no pieces to look for.
+  // `group`: LabelledBox::group.
   void add(const std::string& label, std::uint32_t line, const Mesh& mesh, const std::string& object,
-           bool whole = false) {
+           std::uint32_t group, bool whole = false) {
     const std::vector<Mesh> pieces = whole ? std::vector<Mesh>{} : loose_pieces(mesh);
     if (!pieces.empty() && pieces_apart(pieces, default_tolerance(mesh.min_corner(), mesh.max_corner()))) {
       for (std::size_t k = 0; k < pieces.size(); ++k) {
         add_one(label, line, pieces[k],
-                object + " (loose part " + std::to_string(k + 1) + " of " + std::to_string(pieces.size()) + ")");
+                object + " (loose part " + std::to_string(k + 1) + " of " + std::to_string(pieces.size()) + ")")
+            .group = group;
       }
     } else {
-      add_one(label, line, mesh, object).loose_pieces =
-          static_cast<std::uint32_t>(std::max<std::size_t>(1, pieces.size()));
+      LabelledBox& b = add_one(label, line, mesh, object);
+      b.loose_pieces = static_cast<std::uint32_t>(std::max<std::size_t>(1, pieces.size()));
+      b.group = group;
     }
   }
 
@@ -136,14 +140,19 @@ Example load_obj_example(const fs::path& path, const ExampleLimits& limits, bool
   // Objects arrive while the file is read: an unnamed one is reported once
   // the whole file has been read, so that errors further on come first.
   std::optional<std::uint32_t> unnamed;
+  constexpr std::uint32_t kUngrouped = 1u << 31;
+  std::uint32_t ungrouped = 0;
   const ObjLimits obj_limits{limits.max_parts, too_many_parts_hint(limits), limits.max_faces, too_many_faces_hint(limits),
                              limits.obj_up};
   read_obj_file(path, obj_limits, [&](const ObjObject& o) {
     if (o.name.empty()) {
       if (!unnamed) unnamed = o.line;
     } else if (!unnamed) {
+      // An object before any `g` is a group of its own (Blender writes no
+      // groups by default): numbered past any count of `g` statements.
+      const std::uint32_t group = o.group != 0 ? o.group : kUngrouped + ungrouped++;
       adder.add(read_label(o.name, NameOf::Part, ex.source, {o.line, 1}, "the object name"), o.line, o.mesh,
-                shown_name(o.name));
+                shown_name(o.name), group);
     }
   }, read_ahead);
   if (unnamed) {
@@ -859,14 +868,27 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
   // three.js's exporter makes each node name unique with a copy number of
   // its own ("rect_1"), as Blender does with ".001".
   const bool made_by_three_js = model.asset.generator.rfind("THREE.GLTFExporter", 0) == 0;
-  std::vector<std::pair<int, glm::dmat4>> stack;
+  // Each part's group (LabelledBox::group): the top-level node it lies
+  // under (generate writes a node per building; Blender, one per object
+  // that has no parent).
+  constexpr std::uint32_t kNotTop = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> group_of(model.nodes.size(), kNotTop);
+  for (std::size_t k = 0; k < roots.size(); ++k)
+    if (roots[k] >= 0 && static_cast<std::size_t>(roots[k]) < model.nodes.size())
+      group_of[static_cast<std::size_t>(roots[k])] = static_cast<std::uint32_t>(k);
+  struct Pending {
+    int index;
+    glm::dmat4 parent;
+    std::uint32_t group;
+  };
+  std::vector<Pending> stack;
   // glTF is y-up: the roots are turned z-up, exactly (a permutation with
   // one sign), so a file `generate` wrote gives back its grammar's numbers.
   glm::dmat4 z_up(1.0);
   for (int c = 0; c < 3; ++c) z_up[c] = glm::dvec4(y_up_to_z_up(glm::dvec3(glm::dmat3(1.0)[c])), 0.0);
-  for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, z_up);
+  for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, z_up, 0});
   while (!stack.empty()) {
-    const auto [index, parent] = stack.back();
+    const auto [index, parent, above] = stack.back();
     stack.pop_back();
     if (index < 0 || static_cast<std::size_t>(index) >= model.nodes.size()) continue;
     const tinygltf::Node& node = model.nodes[static_cast<std::size_t>(index)];
@@ -880,7 +902,10 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
     }
     visited[static_cast<std::size_t>(index)] = true;
     const glm::dmat4 world = parent * local_matrix(node);
-    for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.emplace_back(*it, world);
+    // A top-level node starts its group; any other node is in its parent's.
+    const std::uint32_t top = group_of[static_cast<std::size_t>(index)];
+    const std::uint32_t group = top != kNotTop ? top : above;
+    for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world, group});
     if (node.mesh < 0) continue;  // else one the file has (check_gltf_file_rules)
     if (node.name.empty()) {
       fail(ErrorKind::Input, ex.source, {},
@@ -913,7 +938,7 @@ Example load_gltf_example(const fs::path& path, bool binary, const ExampleLimits
              "export the file again with geometry for every named part");
       }
       const std::string object = shown_name(node.name) + (instances ? " (instance " + std::to_string(i) + ")" : "");
-      adder.add(label, 0, mesh, object, whole);
+      adder.add(label, 0, mesh, object, group, whole);
     }
   }
   if (ex.boxes.empty()) {

@@ -44,6 +44,11 @@ struct LabelledBox {
   // Loose pieces the object is made of, kept as this one part because
   // their boxes meet (loose_parts.hpp); pieces apart are parts of their own.
   std::uint32_t loose_pieces = 1;
+  // The file's own grouping of its parts: the top-level glTF node the part
+  // lies under, or the OBJ `g` group its object starts in (obj_reader.hpp;
+  // an object before any `g` is a group of its own). Parts of one group
+  // always belong to one building of a scene (scene_buildings.hpp).
+  std::uint32_t group = 0;
 };
 
 struct Example {
