@@ -6,11 +6,13 @@
 #include <string>
 
 #include "graph/atomic_file.hpp"
+#include "graph/number_format.hpp"
 #include "graph/out_of_memory.hpp"
 #include "graph/parser.hpp"
 #include "inverse/check.hpp"
 #include "inverse/example.hpp"
 #include "inverse/layered_parts.hpp"
+#include "inverse/snapped_coordinates.hpp"
 #include "support/command_line.hpp"
 #include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
@@ -88,29 +90,58 @@ int run(int argc, char** argv) {
   const Grammar grammar = read_grammar_file(args.positional[0]);
   const std::vector<fs::path> files =
       example_files(std::vector<std::string>(args.positional.begin() + 1, args.positional.end()));
-  std::size_t fits = 0, examples = 0;
-  auto check_one = [&](const Example& loaded) {
-    ++examples;
+  // One example's verdict, its coordinates snapped to the noise level
+  // first or as read (layered_parts.hpp: parts set into parts, or painted
+  // over one another, each keep what is visible of them, as infer takes
+  // them).
+  auto verdict = [&](const Example& loaded, bool snap) {
     const std::string& file = loaded.source;
-    // Parts set into parts, or painted over one another, as infer takes
-    // them: each keeps what is visible of it (layered_parts.hpp).
-    const Example example = visible_parts(loaded, Layering{stack, example_tolerance(loaded, options.tolerance)});
+    // Snapped (snapped_coordinates.hpp), coordinates apart are places
+    // apart, cut within float noise; sizes fit within the noise level.
+    const Example example = snap ? visible_parts(snapped_coordinates(loaded, options.tolerance),
+                                                 Layering{stack, default_tolerance(loaded)})
+                                 : visible_parts(loaded, Layering{stack, example_tolerance(loaded, options.tolerance)});
     std::vector<LabelledBox> boxes = example.boxes;
     for (auto& b : boxes) {
       b.min -= example.min;
       b.max -= example.min;
     }
-    CheckResult r;
     // The example's own tolerance, as infer takes it: from where the file
     // put it, before it was moved to the origin.
     CheckOptions own = options;
     own.tolerance = example_tolerance(example, options.tolerance);
+    if (snap) own.cut_tolerance = default_tolerance(loaded);
     try {
-      r = naming_out_of_memory(file, "while checking this example", "check it alone, or lower --max-steps",
-                               [&] { return check_example(grammar, boxes, scope.value_or(example_size(example)), own); });
+      return naming_out_of_memory(file, "while checking this example", "check it alone, or lower --max-steps", [&] {
+        return check_example(grammar, boxes, scope.value_or(example_size(example)), own);
+      });
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::Limit && e.kind() != ErrorKind::Input) throw;
       throw Error(e.kind(), naming_input(e.what(), file));
+    }
+  };
+  std::size_t fits = 0, examples = 0;
+  auto check_one = [&](const Example& loaded) {
+    ++examples;
+    const std::string& file = loaded.source;
+    // Given a noise level (--tolerance), the example is taken as infer
+    // takes it, snapped; a grammar infer made from it as read (where the
+    // snapped coordinates gave none) derives it as read.
+    const bool snap = options.tolerance > 0;
+    CheckResult r = verdict(loaded, snap);
+    bool snapped = snap && r.derivable;
+    if (snap && !r.derivable) {
+      CheckResult as_read = verdict(loaded, false);
+      if (as_read.derivable) r = std::move(as_read);
+    }
+    if (snapped) {
+      const double moved = largest_move(loaded, snapped_coordinates(loaded, options.tolerance));
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", moved);
+      if (moved > 0)
+        r.witness.insert(r.witness.begin(), "coordinates moved by up to " + std::string(text) +
+                                                " m onto places within the noise level " +
+                                                format_number(options.tolerance) + " m");
     }
     if (r.derivable) {
       ++fits;

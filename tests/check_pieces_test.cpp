@@ -30,7 +30,7 @@ LabelledBox box(const char* label, double x0, double x1) {
 Cuts cuts(const std::vector<LabelledBox>& boxes, double length, AxisMap am = AxisMap{0, 1, 0}) {
   BoxList all;
   for (std::uint32_t k = 0; k < boxes.size(); ++k) all.push_back(k);
-  return make_cuts(boxes, all, am, length, 1e-6);
+  return make_cuts(boxes, all, am, length, 1e-6, 1e-6);
 }
 
 TEST(CheckCuts, AreTheFacesNoBoxCrosses) {
@@ -54,6 +54,21 @@ TEST(CheckCuts, SnapFacesWithinTheTolerance) {
   const std::vector<LabelledBox> boxes = {box("a", 0, 2), box("b", 2.0000004, 5.9999996)};
   const Cuts c = cuts(boxes, 6);
   EXPECT_EQ(c.at, (std::vector<double>{0, 2, 6}));
+}
+
+// Snapped to a noise level of 0.05 (Example::snapped), faces apart are
+// cuts apart however close (a window edge 0.03 from a wall's), while faces
+// within the level of the scope's ends are the ends: the grammar placed
+// the scope, within the level.
+TEST(CheckCuts, FacesApartAreCutsApartWithACutToleranceAndTheEndsTakeTheLevel) {
+  BoxList all{0, 1, 2};
+  const std::vector<LabelledBox> boxes = {box("wall", -0.02, 0.97), box("window", 0.97, 1.0), box("wall", 1.0, 6.04)};
+  const Cuts c = make_cuts(boxes, all, AxisMap{0, 1, 0}, 6, 0.05, 1e-6);
+  EXPECT_EQ(c.at, (std::vector<double>{0, 0.97, 1.0, 6}));
+  EXPECT_TRUE(c.outside.empty());
+  // With one tolerance for both, the window's faces are one cut: it is
+  // flat there, as thin as nothing.
+  EXPECT_EQ(make_cuts(boxes, all, AxisMap{0, 1, 0}, 6, 0.05, 0.05).at, (std::vector<double>{0, 0.97, 0.97, 6}));
 }
 
 TEST(CheckCuts, GiveAFlatBoxAZeroLengthSegment) {

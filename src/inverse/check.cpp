@@ -28,11 +28,12 @@ struct ConstantChoice {
 
 class Checker {
  public:
-  Checker(const Grammar& g, const std::vector<LabelledBox>& boxes, double tol, Budget& budget, const Scope& start,
-          bool text, bool learned_order, bool answer_only)
+  Checker(const Grammar& g, const std::vector<LabelledBox>& boxes, double tol, double cut_tol, Budget& budget,
+          const Scope& start, bool text, bool learned_order, bool answer_only)
       : g_(g),
         boxes_(boxes),
         tol_(tol),
+        cut_tol_(cut_tol),
         budget_(budget),
         deterministic_(g),
         start_(start),
@@ -120,7 +121,7 @@ class Checker {
   }
 
   void attempt(const ConstantChoice& c) {
-    Matcher m(g_, boxes_, tol_, budget_, deterministic_, c.slots, c.unknowns, floating_, learned_order_,
+    Matcher m(g_, boxes_, tol_, cut_tol_, budget_, deterministic_, c.slots, c.unknowns, floating_, learned_order_,
               answer_only_);
     if (m.run(start_, all_)) {
       found_ = true;
@@ -151,6 +152,7 @@ class Checker {
   const Grammar& g_;
   const std::vector<LabelledBox>& boxes_;
   double tol_;
+  double cut_tol_;  // CheckOptions::cut_tolerance
   Budget& budget_;
   DeterministicSubtrees deterministic_;
   Scope start_;
@@ -191,7 +193,8 @@ CheckResult check_example(const Grammar& grammar, const std::vector<LabelledBox>
     return r;
   }
   Budget budget(options.max_steps);
-  return Checker(grammar, boxes, tol, budget, start, options.witness && !options.answer_only, options.learned_order,
+  const double cut_tol = options.cut_tolerance > 0 ? std::min(options.cut_tolerance, tol) : tol;
+  return Checker(grammar, boxes, tol, cut_tol, budget, start, options.witness && !options.answer_only, options.learned_order,
                  options.answer_only)
       .run();
 }

@@ -81,6 +81,11 @@ struct CheckOptions {
   // Absolute, in metres: two coordinates this close are the same. 0 means
   // 1e-6 times the example's largest extent or coordinate (default_tolerance).
   double tolerance = 0;
+  // Where the example's coordinates are snapped to a noise level (the
+  // tolerance; snapped_coordinates.hpp), places still apart are cuts apart
+  // however close: faces closer than this are one cut (0: the tolerance),
+  // while sizes fit within the tolerance.
+  double cut_tolerance = 0;
   // Matching steps (operations tried, placements considered) before giving
   // up with a vern::Error (Limit).
   std::uint64_t max_steps = 10'000'000;

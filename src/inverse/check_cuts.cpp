@@ -39,14 +39,14 @@ std::optional<AxisMap> axis_map(const Scope& s, Axis a) {
 }
 
 Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, const AxisMap& am, double length,
-               double tol) {
+               double tol, double cut_tol) {
   Cuts c;
-  make_cuts(boxes, inside, am, length, tol, c);
+  make_cuts(boxes, inside, am, length, tol, cut_tol, c);
   return c;
 }
 
 void make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, const AxisMap& am, double length,
-               double tol, Cuts& c) {
+               double tol, double cut_tol, Cuts& c) {
   c.at.clear();
   c.in_order.clear();
   c.prefix.clear();
@@ -85,7 +85,14 @@ void make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
     std::size_t j = i;
     double rep = faces[i].t;
     bool has_start = false, has_end = false;
-    while (j < faces.size() && faces[j].t - faces[i].t <= tol) {
+    // Faces within the cut tolerance are one; within the tolerance of a
+    // scope's end, they are that end (a box may reach past a scope the
+    // grammar placed by so much).
+    const auto near = [&](double a, double b) { return std::abs(a - b) <= tol; };
+    const bool at_start = cut_tol < tol && near(faces[i].t, 0.0), at_end = cut_tol < tol && near(faces[i].t, length);
+    while (j < faces.size() &&
+           (faces[j].t - faces[i].t <= cut_tol || (at_start && near(faces[j].t, 0.0)) ||
+            (at_end && near(faces[j].t, length)))) {
       has_start = has_start || faces[j].tag == -1;
       has_end = has_end || faces[j].tag == -2;
       ++j;
@@ -177,7 +184,7 @@ std::shared_ptr<const Cuts> CutsCache::of(const BoxList& inside, const AxisMap& 
   Entry& e = *slot;
   // A split still matching may hold the old cuts: then they stay its own.
   if (!e.cuts || e.cuts.use_count() > 1) e.cuts = std::make_shared<Cuts>();
-  make_cuts(boxes_, inside, am, length, tol_, *e.cuts);
+  make_cuts(boxes_, inside, am, length, tol_, cut_tol_, *e.cuts);
   e.boxes.assign(inside.begin(), inside.end());
   e.world = am.world;
   e.sign = am.sign;

@@ -59,13 +59,14 @@ struct Cuts {
 };
 
 // The cuts of `inside` (indices into `boxes`) along am, on a scope of
-// `length` along it; coordinates within tol are one. Boxes beyond the
-// scope's ends are collected in Cuts::outside.
+// `length` along it; coordinates within cut_tol (<= tol) are one, and
+// within tol of a scope's end, that end. Boxes beyond the scope's ends by
+// more than tol are collected in Cuts::outside.
 Cuts make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, const AxisMap& am, double length,
-               double tol);
+               double tol, double cut_tol);
 // The same into c, whose lists keep their room (CutsCache reuses them).
 void make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, const AxisMap& am, double length,
-               double tol, Cuts& c);
+               double tol, double cut_tol, Cuts& c);
 
 // The cuts of the same boxes along the same axis, kept for a while: the
 // alternatives of a choice each split the same boxes, mostly along the
@@ -75,7 +76,8 @@ void make_cuts(const std::vector<LabelledBox>& boxes, const BoxList& inside, con
 // more than cutting one or two boxes.
 class CutsCache {
  public:
-  CutsCache(const std::vector<LabelledBox>& boxes, double tol) : boxes_(boxes), tol_(tol) {}
+  CutsCache(const std::vector<LabelledBox>& boxes, double tol, double cut_tol)
+      : boxes_(boxes), tol_(tol), cut_tol_(cut_tol) {}
   std::shared_ptr<const Cuts> of(const BoxList& inside, const AxisMap& am, double length);
 
  private:
@@ -86,7 +88,7 @@ class CutsCache {
     std::shared_ptr<Cuts> cuts;
   };
   const std::vector<LabelledBox>& boxes_;
-  double tol_;
+  double tol_, cut_tol_;
   std::vector<Entry> entries_;
   std::size_t next_ = 0;
 };

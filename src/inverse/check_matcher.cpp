@@ -18,7 +18,8 @@
 
 namespace vern::check_detail {
 
-Matcher::Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double tolerance, Budget& budget,
+Matcher::Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double tolerance, double cut_tolerance,
+                 Budget& budget,
                  DeterministicSubtrees& deterministic, std::vector<Slot> constants, std::vector<Unknown> unknowns,
                  bool floating, bool learned_order, bool answer_only)
     : g_(g),
@@ -27,7 +28,7 @@ Matcher::Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double
       budget_(budget),
       deterministic_(deterministic),
       vars_(std::move(constants), std::move(unknowns)),
-      cuts_(boxes, tolerance),
+      cuts_(boxes, tolerance, cut_tolerance),
       empty_(g, lookup_),
       floating_(floating),
       learned_order_(learned_order),

@@ -94,8 +94,11 @@ class Matcher {
  public:
   // floating: whether a part may end inside empty space (a boundary no box
   // face marks); a first attempt without is far cheaper and settles every
-  // example whose boundaries all lie on box faces.
-  Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double tolerance, Budget& budget,
+  // example whose boundaries all lie on box faces. Sizes fit within
+  // `tolerance`; faces within `cut_tolerance` are one cut
+  // (CheckOptions::cut_tolerance).
+  Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double tolerance, double cut_tolerance,
+          Budget& budget,
           DeterministicSubtrees& deterministic, std::vector<Slot> constants, std::vector<Unknown> unknowns,
           bool floating, bool learned_order = false, bool answer_only = false);
 

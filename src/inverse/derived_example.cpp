@@ -26,6 +26,7 @@ Example boxes_at_origin(const Example& example) {
   boxes.boxes = example.boxes;
   boxes.min = example.min;
   boxes.max = example.max;
+  boxes.snapped = example.snapped;
   return at_origin(std::move(boxes));
 }
 

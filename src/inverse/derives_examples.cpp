@@ -17,7 +17,9 @@ namespace {
 // written one, so the answer is never "no" where the written order says "yes".
 CheckResult check_placed(const Grammar& g, const Example& placed, const CheckOptions& check,
                          bool limits_throw = false) {
-  auto once = [&](const CheckOptions& options) {
+  auto once = [&](CheckOptions options) {
+    // Snapped coordinates apart are places apart (Example::snapped).
+    if (placed.snapped > 0 && options.cut_tolerance <= 0) options.cut_tolerance = default_tolerance(placed);
     try {
       return check_example(g, placed.boxes, example_size(placed), options);
     } catch (const Error& e) {

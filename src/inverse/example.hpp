@@ -57,6 +57,10 @@ struct Example {
   std::vector<Mesh> meshes;        // world-space mesh of each label's first box, in file order
   PartPositions positions;         // world-space vertex positions of each box, same order (empty: none known)
   glm::dvec3 min{0.0}, max{0.0};   // bounds of all boxes
+  // The noise level its coordinates were snapped to (snapped_coordinates.hpp),
+  // 0 as read: snapped, coordinates apart are places apart, cut within
+  // float noise however close (CheckOptions::cut_tolerance).
+  double snapped = 0;
 };
 
 struct ExampleLimits {

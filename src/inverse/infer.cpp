@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "graph/alongside.hpp"
+#include "graph/number_format.hpp"
 #include "graph/parallel_for.hpp"
 #include "inverse/box_split.hpp"
 #include "inverse/derives_examples.hpp"
@@ -16,6 +17,7 @@
 #include "inverse/progressions.hpp"
 #include "inverse/rule_naming.hpp"
 #include "inverse/shared_frames.hpp"
+#include "inverse/snapped_coordinates.hpp"
 #include "inverse/split_graph.hpp"
 #include "inverse/tidy_numbers.hpp"
 #include "inverse/turned_examples.hpp"
@@ -30,7 +32,13 @@ constexpr std::size_t kJoinedPartsLimit = 200'000;
 
 // infer(), once overlapping parts are known to be resolved (`layered`:
 // each example's overlaps are still to be found while splitting it).
-Inference infer_laid_out(const std::vector<Example>& examples, const InferOptions& options, bool layered) {
+// `snapped`: the examples' coordinates are snapped to the noise level
+// options.tolerance (snapped_coordinates.hpp), so that coordinates apart
+// are places apart: they are cut within float noise (two places 0.04 m
+// apart at a level of 0.05 m are two cuts), and the level holds for sizes
+// merged and for the grammar's check.
+Inference infer_laid_out(const std::vector<Example>& examples, const InferOptions& options, bool layered,
+                         bool snapped) {
   Inference out;
   out.tolerance = options.tolerance;
   if (out.tolerance <= 0)
@@ -39,6 +47,8 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
   for (const auto& e : examples) parts += e.boxes.size();
   // Each example is cut within its own tolerance, the one check gives it.
   auto own = [&](const Example& e) { return example_tolerance(e, options.tolerance); };
+  // Where parts are cut: within float noise once coordinates are snapped.
+  auto cut = [&](const Example& e) { return snapped ? default_tolerance(e) : own(e); };
 
   // Parts whose mesh is their label's turned become R(...){ I(label) }.
   // Orienting and splitting only read the examples, so one runs beside the
@@ -57,7 +67,7 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
         parallel_for(
             examples.size(), options.threads,
             [&](std::size_t i) {
-              trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{own(examples[i])}, examples[i].source,
+              trees[i] = split_boxes(examples[i].boxes, BoxSplitOptions{cut(examples[i])}, examples[i].source,
                                      layered ? &overlaps[i] : nullptr);
             },
             [&](std::size_t done) {
@@ -72,14 +82,14 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     std::string errors;
     for (std::size_t i = 0; i < examples.size(); ++i) {
       try {
-        visible[i] = visible_parts(examples[i], overlaps[i], Layering{options.stack, own(examples[i])});
+        visible[i] = visible_parts(examples[i], overlaps[i], Layering{options.stack, cut(examples[i])});
       } catch (const Error& e) {
         if (e.kind() != ErrorKind::Input) throw;
         errors += (errors.empty() ? "" : "\n") + std::string(e.what());
       }
     }
     if (!errors.empty()) throw Error(ErrorKind::Input, errors);
-    return infer_laid_out(visible, options, false);
+    return infer_laid_out(visible, options, false, snapped);
   }
   // Rounding may move a number by a quarter of the smallest example's
   // tolerance: every example then still matches within its own tolerance
@@ -101,7 +111,7 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     placed.clear();
     for (std::size_t i = 0; i < examples.size(); ++i) {
       roots.push_back(split_graph(graph, trees[i], laid_out[i].boxes, laid_out[i].source, oriented.turns[i],
-                                  {own(examples[i]), &out.warnings, &placed}));
+                                  {cut(examples[i]), &out.warnings, &placed}));
       // Turned back to be laid out: turned again where it is derived.
       if (quarters[i] != 0) roots.back() = turned_node(graph, roots.back(), {{Axis::Z, (4 - quarters[i]) % 4}});
       if (drop_trees) trees[i] = {};
@@ -158,7 +168,7 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     }
     for (std::size_t i = 0; i < examples.size(); ++i) {
       turned.push_back(turned_example(examples[i], quarters[i]));
-      if (quarters[i] != 0) trees[i] = split_boxes(turned[i].boxes, BoxSplitOptions{own(examples[i])}, turned[i].source);
+      if (quarters[i] != 0) trees[i] = split_boxes(turned[i].boxes, BoxSplitOptions{cut(examples[i])}, turned[i].source);
     }
     oriented = orient_parts(turned, library, out.tolerance);
     build_graphs(turned, quarters, true);
@@ -266,7 +276,29 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
 
 Inference infer(const std::vector<Example>& examples, const InferOptions& options) {
   if (examples.empty()) throw Error(ErrorKind::Usage, "infer: error: no examples given");
-  return infer_laid_out(examples, options, true);
+  if (options.tolerance <= 0) return infer_laid_out(examples, options, true, false);
+  // A noise level given: coordinates that measure one place become one,
+  // before parts painted over others are cut (no slivers of a wall
+  // between windows a pixel apart). Float noise, the default, needs none.
+  std::vector<Example> snapped;
+  snapped.reserve(examples.size());
+  for (const Example& e : examples) snapped.push_back(snapped_coordinates(e, options.tolerance));
+  try {
+    return infer_laid_out(snapped, options, true, true);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::Internal) throw;
+    // No grammar of the snapped examples derives them (a place the noise
+    // level cannot settle): the examples as read, as without a level, and
+    // said; check takes either.
+    Inference out = infer_laid_out(examples, options, true, false);
+    const std::string why = e.what();
+    out.warnings.insert(out.warnings.begin(),
+                        "infer: warning: with coordinates snapped to the noise level " +
+                            format_number(options.tolerance) + " m no grammar derived the examples (" +
+                            why.substr(0, why.find('\n')) + "): inferred from the coordinates as read" +
+                            "\n  hint: a smaller --tolerance may let the examples' rows and columns line up");
+    return out;
+  }
 }
 
 }  // namespace vern

@@ -22,6 +22,9 @@ namespace vern {
 struct InferOptions {
   // Coordinates closer than this (metres) are the same coordinate; 0 means
   // 1e-6 of the largest example's extent or coordinate (see default_tolerance).
+  // Given (> 0), it is the examples' noise level: each example's
+  // coordinates are snapped to one within it first (snapped_coordinates.hpp),
+  // as check snaps them.
   double tolerance = 0;
   std::string start = "building";
   // `--distributions uniform`: varying sizes as rand(min, max), the

@@ -248,6 +248,7 @@ Example visible_parts(const Example& example, const std::vector<OverlapPair>& ov
   Example out;
   out.source = example.source;
   out.meshes = example.meshes;
+  out.snapped = example.snapped;
   const bool positions = example.positions.size() == n;
   std::unordered_map<std::string, std::uint32_t> mesh_of;
   for (const LabelledBox& b : boxes)
