@@ -100,7 +100,7 @@ int run(int argc, char** argv) {
     // apart, cut within float noise; sizes fit within the noise level.
     const Example example = snap ? visible_parts(snapped_coordinates(loaded, options.tolerance),
                                                  Layering{stack, default_tolerance(loaded)})
-                                 : visible_parts(loaded, Layering{stack, example_tolerance(loaded, options.tolerance)});
+                                 : visible_parts(loaded, Layering{stack, default_tolerance(loaded)});
     std::vector<LabelledBox> boxes = example.boxes;
     for (auto& b : boxes) {
       b.min -= example.min;
@@ -108,8 +108,9 @@ int run(int argc, char** argv) {
     }
     // The example's own tolerance, as infer takes it: from where the file
     // put it, before it was moved to the origin.
+    // As read, within its float noise, as infer took it without a level.
     CheckOptions own = options;
-    own.tolerance = example_tolerance(example, options.tolerance);
+    own.tolerance = snap ? options.tolerance : default_tolerance(loaded);
     if (snap) own.cut_tolerance = default_tolerance(loaded);
     try {
       return naming_out_of_memory(file, "while checking this example", "check it alone, or lower --max-steps", [&] {

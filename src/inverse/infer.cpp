@@ -286,15 +286,19 @@ Inference infer(const std::vector<Example>& examples, const InferOptions& option
   try {
     return infer_laid_out(snapped, options, true, true);
   } catch (const Error& e) {
-    if (e.kind() != ErrorKind::Internal) throw;
+    if (e.kind() != ErrorKind::Internal && e.kind() != ErrorKind::Limit) throw;
     // No grammar of the snapped examples derives them (a place the noise
-    // level cannot settle): the examples as read, as without a level, and
-    // said; check takes either.
-    Inference out = infer_laid_out(examples, options, true, false);
+    // level cannot settle), or checking one ran past its steps (sizes
+    // that fit within the level many ways): the examples as read, as
+    // without a level (each within its float noise), and said; check
+    // takes either.
+    InferOptions as_read = options;
+    as_read.tolerance = 0;
+    Inference out = infer_laid_out(examples, as_read, true, false);
     const std::string why = e.what();
     out.warnings.insert(out.warnings.begin(),
                         "infer: warning: with coordinates snapped to the noise level " +
-                            format_number(options.tolerance) + " m no grammar derived the examples (" +
+                            format_number(options.tolerance) + " m no grammar was found to derive the examples (" +
                             why.substr(0, why.find('\n')) + "): inferred from the coordinates as read" +
                             "\n  hint: a smaller --tolerance may let the examples' rows and columns line up");
     return out;
