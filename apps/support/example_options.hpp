@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "inverse/building_angle.hpp"
 #include "inverse/example.hpp"
 #include "inverse/scene_buildings.hpp"
 #include "support/command_line.hpp"
@@ -27,9 +28,10 @@ std::vector<std::string> stack_order(const ParsedCommandLine& args);
 BuildingsMode buildings_mode(const ParsedCommandLine& args);
 
 // The examples of the loaded `files` once each is divided as `mode` says
-// (scene_buildings.hpp), in order; each file's tolerance as
+// (scene_buildings.hpp), in order, each building standing at an angle
+// turned back (building_angle.hpp); each file's tolerance as
 // example_tolerance(file, tolerance) gives it. A note for each file
-// divided goes to `notes`.
+// divided and each building turned back goes to `notes`.
 std::vector<Example> examples_of_files(std::vector<Example> files, BuildingsMode mode, double tolerance,
                                        std::vector<std::string>& notes);
 

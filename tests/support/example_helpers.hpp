@@ -85,16 +85,21 @@ inline std::vector<vern::LabelledBox> nested_pinwheel(int levels, double size, d
 }
 
 // Boxes as an OBJ file's text, z up, every coordinate to the last bit:
-// one object per box, named by its label.
-inline std::string boxes_obj(const std::vector<vern::LabelledBox>& boxes) {
+// one object per box, named by its label; the whole turned by `angle`
+// radians about the z axis when it is not 0 (a house standing at an angle).
+inline std::string boxes_obj(const std::vector<vern::LabelledBox>& boxes, double angle = 0) {
   std::ostringstream text;
   text.precision(17);
   text << "# up z\n";
+  const double c = std::cos(angle), s = std::sin(angle);
   for (const vern::LabelledBox& b : boxes) {
     text << "o " << b.label << "\n";
-    for (int i = 0; i < 8; ++i)
-      text << "v " << ((i & 1) ? b.max.x : b.min.x) << " " << ((i & 2) ? b.max.y : b.min.y) << " "
-           << ((i & 4) ? b.max.z : b.min.z) << "\n";
+    for (int i = 0; i < 8; ++i) {
+      const double x = (i & 1) ? b.max.x : b.min.x, y = (i & 2) ? b.max.y : b.min.y;
+      if (angle == 0) text << "v " << x << " " << y << " ";
+      else text << "v " << c * x - s * y << " " << s * x + c * y << " ";
+      text << ((i & 4) ? b.max.z : b.min.z) << "\n";
+    }
     // Corners -8..-1 are the vertices just written.
     text << "f -8 -6 -5 -7\nf -4 -3 -1 -2\nf -8 -7 -3 -4\nf -6 -2 -1 -5\nf -8 -4 -2 -6\nf -7 -5 -1 -3\n";
   }
