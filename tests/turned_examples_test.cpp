@@ -66,6 +66,32 @@ TEST(TurnedExamples, TheOddOneTurnedAQuarterIsTurnedBack) {
   EXPECT_EQ(orientation({l_house(12, 10, "a"), l_house(15, 9, "b")}), (std::vector<int>{0, 0}));
 }
 
+// A house of `bays` bays along x, each a pier, a column of wall, window
+// and wall, and a pier, in front of its body; the roof on top.
+Example bay_house(int bays, std::string source) {
+  std::vector<LabelledBox> boxes = {part("wall", {0, 0.2, 0}, {2.4 * bays, 5, 3}),
+                                    part("roof", {0, 0, 3}, {2.4 * bays, 5, 4.5})};
+  for (int i = 0; i < bays; ++i) {
+    const double x = 2.4 * i;
+    boxes.push_back(part("wall", {x, 0, 0}, {x + 0.7, 0.2, 3}));
+    boxes.push_back(part("wall", {x + 0.7, 0, 0}, {x + 1.7, 0.2, 1}));
+    boxes.push_back(part("window", {x + 0.7, 0, 1}, {x + 1.7, 0.2, 2.2}));
+    boxes.push_back(part("wall", {x + 0.7, 0, 2.2}, {x + 1.7, 0.2, 3}));
+    boxes.push_back(part("wall", {x + 1.7, 0, 0}, {x + 2.4, 0.2, 3}));
+  }
+  return test::example_of(test::numbered(boxes), std::move(source));
+}
+
+// Houses of 2, 3 and 4 bays, two of them turned a quarter: their rows of
+// bays are one layout whatever their count, so the odd one is turned to
+// the others'. Bays of pier, window and pier, each row a run of groups of
+// three pieces, were three layouts, and nothing was turned.
+TEST(TurnedExamples, RowsOfBaysOfAnyCountAreOneLayout) {
+  const std::vector<Example> examples{bay_house(2, "a.obj"), turned_example(bay_house(3, "b.obj"), 1),
+                                      turned_example(bay_house(4, "c.obj"), 1)};
+  EXPECT_EQ(orientation(examples), (std::vector<int>{1, 0, 0}));
+}
+
 TEST(TurnedExamples, InferenceWritesTheTurnAndDerivesEveryExample) {
   // Houses modelled facing either way (the style's own R(z, pi / 2)).
   const Grammar source = read_grammar_file(std::string(VERN_SOURCE_DIR) + "/data/styles/dev/turned_houses.grm");

@@ -4,6 +4,8 @@
 #include <array>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "graph/parallel_for.hpp"
 
@@ -17,9 +19,43 @@ glm::dvec3 turn(glm::dvec3 p, int q) {
   return p;
 }
 
+// A run of alike groups of pieces as one, the children of one split
+// (`written`: where each is in `out`, from `first`, each followed by '|'):
+// bays of a pier, a window and a pier, two or three of them, are one bay.
+// Children that repeat the one before are already one; only where a group
+// of two or more repeats is the text written again.
+void fold_runs(std::string& out, std::size_t first, const std::vector<std::pair<std::size_t, std::size_t>>& written) {
+  const auto same = [&](std::size_t a, std::size_t b) {
+    return written[a].second == written[b].second &&
+           out.compare(written[a].first, written[a].second, out, written[b].first, written[b].second) == 0;
+  };
+  const std::size_t n = written.size();
+  bool any = false;
+  for (std::size_t p = 2; 2 * p <= n && !any; ++p)
+    for (std::size_t i = 0; i + 2 * p <= n && !any; ++i) {
+      bool repeats = true;
+      for (std::size_t k = 0; k < p && repeats; ++k) repeats = same(i + k, i + p + k);
+      any = repeats;
+    }
+  if (!any) return;
+  std::vector<std::string> children;
+  for (const auto& [start, size] : written) children.push_back(out.substr(start, size));
+  for (bool folded = true; folded;) {
+    folded = false;
+    for (std::size_t p = 1; 2 * p <= children.size() && !folded; ++p)
+      for (std::size_t i = 0; i + 2 * p <= children.size() && !folded; ++i)
+        if (std::equal(children.begin() + i, children.begin() + i + p, children.begin() + i + p)) {
+          children.erase(children.begin() + i + p, children.begin() + i + 2 * p);
+          folded = true;
+        }
+  }
+  out.resize(first);
+  for (const std::string& c : children) out += c + '|';
+}
+
 // What the splitting makes of an example, without sizes: axes, order,
-// labels, and a run of alike pieces as one (rows of 3 and of 5 windows
-// are one layout).
+// labels, and a run of alike pieces, or of alike groups of pieces, as one
+// (rows of 3 and of 5 windows are one layout, and so are 2 and 4 bays).
 void layout(const SplitTree& t, const std::vector<LabelledBox>& boxes, std::string& out) {
   switch (t.kind) {
     case SplitTree::Kind::Leaf: out += boxes[t.box].label; return;
@@ -37,8 +73,10 @@ void layout(const SplitTree& t, const std::vector<LabelledBox>& boxes, std::stri
   }
   out += static_cast<char>('x' + t.axis);
   out += '(';
+  const std::size_t first = out.size();
   // Each child is written in place and taken back when it repeats the one
   // before: no string per child (each level copied all below it).
+  std::vector<std::pair<std::size_t, std::size_t>> written;  // (start, size) of each child kept
   std::size_t previous = std::string::npos, previous_size = 0;
   for (const SplitTree& c : t.children) {
     const std::size_t start = out.size();
@@ -50,9 +88,11 @@ void layout(const SplitTree& t, const std::vector<LabelledBox>& boxes, std::stri
       continue;
     }
     out += '|';
+    written.emplace_back(start, size);
     previous = start;
     previous_size = size;
   }
+  fold_runs(out, first, written);
   out += ')';
 }
 
