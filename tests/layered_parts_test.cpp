@@ -68,6 +68,30 @@ TEST(LayeredParts, AWallKeepsBandsAndPiersAroundTheWindowsSetIntoIt) {
   EXPECT_EQ(v.boxes[6].max, e.boxes[2].max);
 }
 
+// A deep wall with windows set into its face, and the same wall turned a
+// quarter (its face along y): after the bands, each is cut first along
+// its row of windows, not its depth, so the turned wall's pieces are the
+// wall's turned. Cut x before y whichever way the wall faced, the turned
+// wall was a slab at its face and one behind, and no layout matched.
+TEST(LayeredParts, AWallAndTheSameWallTurnedAQuarterKeepPiecesAlike) {
+  const std::vector<LabelledBox> wall = {part("wall", {0, 0, 0}, {10, 5, 3}, 1),
+                                         part("window", {2, 0, 1}, {3, 0.2, 2}, 2),
+                                         part("window", {6, 0, 1}, {7, 0.2, 2}, 3)};
+  std::vector<LabelledBox> turned = wall;
+  for (LabelledBox& b : turned) {  // (x, y) -> (-y, x)
+    const glm::dvec3 lo = b.min, hi = b.max;
+    b.min = {-hi.y, lo.x, lo.z};
+    b.max = {-lo.y, hi.x, hi.z};
+  }
+  const Example v = visible_parts(example_of(wall), Layering{{}, 1e-9});
+  const Example t = visible_parts(example_of(turned), Layering{{}, 1e-9});
+  ASSERT_EQ(v.boxes.size(), t.boxes.size());
+  for (std::size_t i = 0; i < v.boxes.size(); ++i) {
+    EXPECT_EQ(t.boxes[i].min, glm::dvec3(-v.boxes[i].max.y, v.boxes[i].min.x, v.boxes[i].min.z)) << i;
+    EXPECT_EQ(t.boxes[i].max, glm::dvec3(-v.boxes[i].min.y, v.boxes[i].max.x, v.boxes[i].max.z)) << i;
+  }
+}
+
 TEST(LayeredParts, NoOverlapsNoChange) {
   const Example e = example_of({part("wall", {0, 0, 0}, {2, 1, 3}, 1), part("door", {2, 0, 0}, {3, 1, 2}, 2)});
   const Example v = visible_parts(e, Layering{{}, 1e-9});

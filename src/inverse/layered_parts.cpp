@@ -96,24 +96,36 @@ void tile_by_grid(const Box& region, const std::vector<Box>& holes, double tol, 
     }
 }
 
+// The positions along `axis` inside the region where the holes end and
+// no hole crosses.
+std::vector<double> clean_cuts(const Box& region, const std::vector<Box>& holes, int axis, double tol) {
+  std::vector<double> cuts, clean;
+  if (flat(region, axis, tol)) return clean;
+  for (const Box& h : holes)
+    for (const double x : {h.min[axis], h.max[axis]})
+      if (x > region.min[axis] + tol && x < region.max[axis] - tol) cuts.push_back(x);
+  for (const double c : distinct(std::move(cuts), tol))
+    if (std::none_of(holes.begin(), holes.end(),
+                     [&](const Box& h) { return h.min[axis] < c - tol && h.max[axis] > c + tol; }))
+      clean.push_back(c);
+  return clean;
+}
+
 // The region minus the holes (clipped to it, not overlapping each other),
-// as boxes: cut on z, then x, then y, at every position no hole crosses.
+// as boxes: cut on z, then along the horizontal axis with more places to
+// cut (the row of windows, not the wall's depth behind them, whichever
+// way the wall faces: a house and the same house turned a quarter keep
+// pieces alike), then the other, at every position no hole crosses.
 void tile(const Box& region, const std::vector<Box>& holes, double tol, std::vector<Box>& out) {
   if (holes.empty()) {
     out.push_back(region);
     return;
   }
-  for (const int axis : {2, 0, 1}) {
-    if (flat(region, axis, tol)) continue;
-    std::vector<double> cuts;
-    for (const Box& h : holes)
-      for (const double x : {h.min[axis], h.max[axis]})
-        if (x > region.min[axis] + tol && x < region.max[axis] - tol) cuts.push_back(x);
-    std::vector<double> clean;
-    for (const double c : distinct(std::move(cuts), tol))
-      if (std::none_of(holes.begin(), holes.end(),
-                       [&](const Box& h) { return h.min[axis] < c - tol && h.max[axis] > c + tol; }))
-        clean.push_back(c);
+  std::vector<double> along[3];
+  for (int axis = 0; axis < 3; ++axis) along[axis] = clean_cuts(region, holes, axis, tol);
+  const int first_horizontal = along[1].size() > along[0].size() ? 1 : 0;
+  for (const int axis : {2, first_horizontal, 1 - first_horizontal}) {
+    std::vector<double>& clean = along[axis];
     if (clean.empty()) continue;
     clean.push_back(region.max[axis]);
     double from = region.min[axis];

@@ -17,8 +17,9 @@
 //   4. otherwise no one can say, and the pair is an error that names both
 //      parts and how to give the order.
 // A part wholly covered is gone. The visible region is tiled by straight
-// cuts where they cut nothing painted over it, on z first, then x, then y
-// (storeys, then bays), at every such cut at once; where none cuts
+// cuts where they cut nothing painted over it, on z first, then along the
+// horizontal axis with more such cuts, then the other (storeys, then bays,
+// whichever way the wall faces), at every such cut at once; where none cuts
 // cleanly (a pinwheel of parts painted over it), by the grid of their
 // bounds. So a wall holding a row of windows becomes bands below and
 // above the row and piers between the windows, the pieces a split grammar
