@@ -108,6 +108,7 @@ Example turned_back(const Example& example, double angle) {
   Example out;
   out.source = example.source;
   out.snapped = example.snapped;
+  out.file_tolerance = example.file_tolerance;
   const glm::dvec3 centre = (example.min + example.max) / 2.0;
   const double c = std::cos(-angle), s = std::sin(-angle);
   const bool positions = example.positions.size() == example.boxes.size();

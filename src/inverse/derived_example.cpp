@@ -27,6 +27,7 @@ Example boxes_at_origin(const Example& example) {
   boxes.min = example.min;
   boxes.max = example.max;
   boxes.snapped = example.snapped;
+  boxes.file_tolerance = example.file_tolerance;
   return at_origin(std::move(boxes));
 }
 

@@ -965,7 +965,9 @@ void update_bounds(Example& example) {
 
 glm::dvec3 example_size(const Example& example) { return example.max - example.min; }
 
-double default_tolerance(const Example& example) { return default_tolerance(example.min, example.max); }
+double default_tolerance(const Example& example) {
+  return std::max(default_tolerance(example.min, example.max), example.file_tolerance);
+}
 
 double default_tolerance(glm::dvec3 min, glm::dvec3 max) {
   const glm::dvec3 size = max - min;

@@ -61,6 +61,11 @@ struct Example {
   // 0 as read: snapped, coordinates apart are places apart, cut within
   // float noise however close (CheckOptions::cut_tolerance).
   double snapped = 0;
+  // For a building cut from a file of several (scene_buildings.hpp): the
+  // file's default_tolerance. An exporter writes the whole file at one
+  // precision, so a building's float noise is the file's, however near
+  // the origin it stands (default_tolerance takes the larger).
+  double file_tolerance = 0;
 };
 
 struct ExampleLimits {
@@ -126,8 +131,8 @@ void update_bounds(Example& example);
 glm::dvec3 example_size(const Example& example);
 
 // 1e-6 times the example's largest extent, or its largest coordinate if
-// that is larger: the distance below which two box bounds count as the
-// same. Exporters write coordinates as 32-bit floats, about 1e-7 noise
+// that is larger (or its file's, Example::file_tolerance): the distance
+// below which two box bounds count as the same. Exporters write coordinates as 32-bit floats, about 1e-7 noise
 // relative to the coordinate (a house modelled 2 km from the origin is
 // noisy to 0.1 mm, however small it is); real gaps are far larger (1e-6
 // keeps a 1 mm gap on a 100 m building).

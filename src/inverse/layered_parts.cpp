@@ -261,6 +261,7 @@ Example visible_parts(const Example& example, const std::vector<OverlapPair>& ov
   out.source = example.source;
   out.meshes = example.meshes;
   out.snapped = example.snapped;
+  out.file_tolerance = example.file_tolerance;
   const bool positions = example.positions.size() == n;
   std::unordered_map<std::string, std::uint32_t> mesh_of;
   for (const LabelledBox& b : boxes)

@@ -98,6 +98,7 @@ Example building_of(const Example& file, const std::vector<std::uint32_t>& boxes
   Example out;
   out.source = std::move(source);
   out.meshes = file.meshes;
+  out.file_tolerance = default_tolerance(file);
   const bool positions = file.positions.size() == file.boxes.size();
   std::vector<glm::dvec3> at;
   std::unordered_map<std::string, bool> seen;

@@ -60,6 +60,7 @@ Example snapped_coordinates(const Example& example, double tolerance) {
   out.meshes = example.meshes;
   out.boxes = example.boxes;
   out.snapped = tolerance;
+  out.file_tolerance = example.file_tolerance;
   std::vector<double> bound[3];
   for (int axis = 0; axis < 3; ++axis) bound[axis] = snapped_axis(example.boxes, axis, tolerance);
   const bool positions = example.positions.size() == example.boxes.size();

@@ -10,6 +10,9 @@
 #   (how a modeller makes boxes), and exports each with the default
 #   settings of Blender's OBJ and glTF exporters: FOLDER/house_6.obj,
 #   FOLDER/house_6.glb, FOLDER/house_8.obj, FOLDER/house_8.glb.
+# scene FOLDER: models a street of three houses standing apart, windows set
+#   into their walls, the last turned 30 degrees, and exports the scene as
+#   FOLDER/street.obj and FOLDER/street.glb with the default settings.
 import math
 import re
 import sys
@@ -71,6 +74,7 @@ def add_box(name, lo, hi):
     ob = bpy.context.active_object
     ob.name = name
     ob.data.name = name
+    return ob
 
 
 def build(folder):
@@ -82,6 +86,34 @@ def build(folder):
         bpy.ops.wm.obj_export(filepath=stem + ".obj")
         bpy.ops.export_scene.gltf(filepath=stem + ".glb")
         print("exported " + stem + ".obj and .glb")
+
+
+def scene(folder):
+    # Three houses of 2, 3 and 4 bays standing apart in one scene, each a
+    # wall with its windows set into its face (boxes inside the wall, as
+    # a modeller places them) and a roof; the third turned 30 degrees
+    # about z, as placed in a street. Exported once, default settings.
+    empty_scene()
+    x = 0.0
+    for bays in (2, 3, 4):
+        width = 2.4 * bays
+        parts = [add_box("wall", (x, 0, 0), (x + width, 5, 3)), add_box("roof", (x, 0, 3), (x + width, 5, 4.5))]
+        for i in range(bays):
+            left = x + 2.4 * i + 0.7
+            parts.append(add_box("window", (left, 0, 1), (left + 1, 0.2, 2.2)))
+        if bays == 4:
+            centre = (x + width / 2, 2.5)
+            turn = math.radians(30)
+            for ob in parts:
+                dx, dy = ob.location.x - centre[0], ob.location.y - centre[1]
+                ob.location.x = centre[0] + math.cos(turn) * dx - math.sin(turn) * dy
+                ob.location.y = centre[1] + math.sin(turn) * dx + math.cos(turn) * dy
+                ob.rotation_euler[2] = turn
+        x += width + 4
+    stem = folder + "/street"
+    bpy.ops.wm.obj_export(filepath=stem + ".obj")
+    bpy.ops.export_scene.gltf(filepath=stem + ".glb")
+    print("exported " + stem + ".obj and .glb")
 
 
 try:
@@ -102,6 +134,8 @@ if args[0] == "import":
     import_file(args[1], [float(a) for a in args[2:5]], args[5].split(","))
 elif args[0] == "build":
     build(args[1])
+elif args[0] == "scene":
+    scene(args[1])
 else:
     fail("unknown mode " + args[0])
 print("blender roundtrip: ok")

@@ -6,6 +6,9 @@
 #  - Houses modelled in Blender and exported as OBJ and GLB give `infer`
 #    their height on z and exact numbers (2.7 to 1.2 is 9 to 4, not 2.7000000476837 to 1.2000000476837),
 #    the same grammar from either format, and `check` derives them.
+#  - A scene of three houses, windows set into their walls, one turned 30
+#    degrees, exported whole: an example per house, the turned one in its
+#    own frame, one grammar from the OBJ and the GLB, `check` derives all.
 # Blender is large: where it is not installed the test is skipped (exit 77);
 # scripts/blender-roundtrip installs it and runs this test.
 #   roundtrip.sh GENERATE INFER CHECK SOURCE_DIR
@@ -56,4 +59,20 @@ for format in obj glb; do
 done
 diff <(grammar_body "$out/obj.grm") <(grammar_body "$out/glb.grm") ||
   { echo "FAIL: Blender's OBJ and GLB of the same houses give different grammars"; exit 1; }
+
+# A scene of three houses standing apart, windows set into their walls,
+# one turned 30 degrees: each house is an example, the turned one read in
+# its own frame, from the OBJ and the GLB alike.
+mkdir "$out/scene"
+run_blender scene "$out/scene"
+for format in obj glb; do
+  "$infer" "$out/scene/street.$format" -o "$out/scene_$format.grm" 2> "$out/infer.log" || { cat "$out/infer.log"; exit 1; }
+  cat "$out/infer.log"
+  grep -q "holds 3 buildings standing apart" "$out/infer.log" || { echo "FAIL: $format: not read as 3 houses"; exit 1; }
+  grep -q "stands turned 30 degrees" "$out/infer.log" || { echo "FAIL: $format: the turned house not found"; exit 1; }
+  "$check" "$out/scene_$format.grm" "$out/scene/street.$format" | tail -1 | grep -q "3 of 3 examples derivable" ||
+    { echo "FAIL: $format: check does not derive the 3 houses"; exit 1; }
+done
+diff <(grammar_body "$out/scene_obj.grm") <(grammar_body "$out/scene_glb.grm") ||
+  { echo "FAIL: Blender's OBJ and GLB of one scene give different grammars"; exit 1; }
 echo "blender roundtrip: all passed"
