@@ -49,6 +49,12 @@ Example file_of(std::vector<LabelledBox> boxes) {
   return e;
 }
 
+// The building as a file of its own would give it.
+Example b_alone(Example e) {
+  e.file_tolerance = 0;
+  return e;
+}
+
 std::vector<LabelledBox> joined(std::vector<LabelledBox> a, const std::vector<LabelledBox>& b) {
   a.insert(a.end(), b.begin(), b.end());
   return a;
@@ -77,6 +83,10 @@ TEST(SceneBuildings, HousesStandingApartAreAnExampleEach) {
       EXPECT_EQ(b.meshes.at(b.boxes[k].mesh).positions.front(), s.buildings[0].boxes[k].min) << b.source;
     }
   }
+  // Each keeps the file's float noise: the exporter wrote them together.
+  const double file_noise = default_tolerance(file_of(parts));
+  for (const Example& b : s.buildings) EXPECT_EQ(default_tolerance(b), file_noise) << b.source;
+  EXPECT_LT(default_tolerance(b_alone(s.buildings[0])), file_noise);
   EXPECT_NE(s.note.find("street.obj holds 3 buildings standing apart"), std::string::npos) << s.note;
   EXPECT_NE(s.note.find("--buildings file"), std::string::npos) << s.note;
 }
