@@ -26,10 +26,16 @@ struct TestBuildingsOptions {
   std::size_t example_parts = 0;  // the largest example's parts, for the warning
 };
 
-// Derives `count` buildings, counting their terminals without keeping them.
-// Returns the warnings: at most one, for the first building that reached a
-// limit (the others would say the same). Throws vern::Error for any other
-// failure of derive().
+// Examples of more parts than this: the test buildings are counted, not
+// judged (a city of a million parts).
+inline constexpr std::size_t kJudgedParts = 100'000;
+
+// Derives `count` buildings and, where the examples have no more than
+// kJudgedParts parts, judges their layouts (layout_faults.hpp: parts
+// sharing volume, parts outside the plot). Returns the warnings: at most
+// one, for the first building that reached a limit (the others would say
+// the same), or else one saying how many buildings were broken and the
+// first fault. Throws vern::Error for any other failure of derive().
 std::vector<std::string> derive_test_buildings(const Grammar& grammar, const TestBuildingsOptions& options);
 
 }  // namespace vern
