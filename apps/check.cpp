@@ -51,8 +51,8 @@ CommandLine make_command_line() {
 int run(int argc, char** argv) {
   const CommandLine cl = make_command_line();
   const ParsedCommandLine args = cl.parse(argc, argv);
-  if (args.has("--help")) {
-    std::cout << cl.help();
+  if (const std::optional<std::string> text = cl.requested_text(args)) {
+    std::cout << *text;
     return 0;
   }
   if (args.positional.size() < 2)

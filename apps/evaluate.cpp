@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -306,8 +307,8 @@ int run_precision_recall(const ParsedCommandLine& args, unsigned threads, bool q
 int run(int argc, char** argv) {
   const CommandLine cl = make_command_line();
   const ParsedCommandLine args = cl.parse(argc, argv);
-  if (args.has("--help")) {
-    std::cout << cl.help();
+  if (const std::optional<std::string> text = cl.requested_text(args)) {
+    std::cout << *text;
     return 0;
   }
   const std::vector<RandomStyle> styles = random_styles(args);

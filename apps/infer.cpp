@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "forward/obj_writer.hpp"
 #include "forward/variants.hpp"
@@ -94,8 +95,8 @@ std::string path_from(const fs::path& grammar, const fs::path& file) {
 int run(int argc, char** argv) {
   const CommandLine cl = make_command_line();
   const ParsedCommandLine args = cl.parse(argc, argv);
-  if (args.has("--help")) {
-    std::cout << cl.help();
+  if (const std::optional<std::string> text = cl.requested_text(args)) {
+    std::cout << *text;
     return 0;
   }
   if (!args.has("--output")) usage("no output grammar given", "add -o STYLE.grm");

@@ -718,6 +718,18 @@ TEST(InferCli, UsageErrors) {
   EXPECT_EQ(r.exit_code, 2);
 }
 
+// Every command says its version, the one the build's project() gives,
+// and does nothing else.
+TEST(InferCli, EveryCommandSaysItsVersion) {
+  for (const std::string command : {"infer", "check", "generate", "evaluate"}) {
+    const auto r = run_program(command, {"--version"});
+    EXPECT_EQ(r.exit_code, 0) << command << r.err;
+    EXPECT_TRUE(std::regex_match(r.out, std::regex(command + " \\(Vernacular\\) [0-9]+\\.[0-9]+\\.[0-9]+\n")))
+        << command << ": " << r.out;
+    EXPECT_EQ(r.err, "") << command;
+  }
+}
+
 TEST(InferCli, BadExamplesAreRefusedAndNothingIsWritten) {
   TempFolder dir;
   write_text(dir / "empty.obj", "");

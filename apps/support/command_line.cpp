@@ -23,6 +23,7 @@ void CommandLine::add(OptionSpec spec) { specs_.push_back(std::move(spec)); }
 void CommandLine::add_standard_options(bool quiet) {
   if (quiet) add({"--quiet", "-q", 0, "", "print errors only"});
   add({"--help", "-h", 0, "", "show this help"});
+  add({"--version", "", 0, "", "show the version and exit"});
 }
 
 const OptionSpec* CommandLine::find(const std::string& arg) const {
@@ -89,6 +90,14 @@ ParsedCommandLine CommandLine::parse(int argc, const char* const* argv) const {
                     "give " + spec->name + " " + spec->value_names + " (an unset shell variable gives '')");
   }
   return out;
+}
+
+std::string CommandLine::version() const { return program_ + " (Vernacular) " VERN_VERSION "\n"; }
+
+std::optional<std::string> CommandLine::requested_text(const ParsedCommandLine& args) const {
+  if (args.has("--help")) return help();
+  if (args.has("--version")) return version();
+  return std::nullopt;
 }
 
 std::string CommandLine::help() const {

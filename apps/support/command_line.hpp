@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,8 @@ class CommandLine {
  public:
   CommandLine(std::string program, std::string usage, std::string description);
   void add(OptionSpec spec);
-  // --help, and --quiet where the command prints progress: every command's.
+  // --help, --version, and --quiet where the command prints progress:
+  // every command's.
   void add_standard_options(bool quiet = true);
   // Free text printed after the options in --help (examples, exit codes).
   void set_epilog(std::string text) { epilog_ = std::move(text); }
@@ -39,6 +41,11 @@ class CommandLine {
   // is close.
   ParsedCommandLine parse(int argc, const char* const* argv) const;
   std::string help() const;
+  // "infer (Vernacular) 0.1.0": the version project() gives the build.
+  std::string version() const;
+  // What --help or --version asks to print instead of running (help
+  // first when both), or nothing.
+  std::optional<std::string> requested_text(const ParsedCommandLine& args) const;
 
   // Typed values, with Usage errors that name the option.
   static double number(const ParsedCommandLine& cl, const std::string& name, std::size_t i = 0);
