@@ -1,4 +1,4 @@
-// Errors that stop a derivation (GRAMMAR.md "Derivation"): each names
+// Errors that stop a derivation (docs/grammar.md, "Errors and warnings"): each names
 // file:line:col and the chain of rules, and has the right kind.
 #include <gtest/gtest.h>
 

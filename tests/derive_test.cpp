@@ -1,4 +1,4 @@
-// Derivation semantics (GRAMMAR.md "Sizes", "Derivation") checked on the
+// Derivation semantics (docs/grammar.md: split, "Derivation and randomness") checked on the
 // facts a user can compute by hand.
 #include "forward/derive.hpp"
 

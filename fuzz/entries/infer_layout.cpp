@@ -1,6 +1,6 @@
 // Example layouts in: inference either refuses them with an Input error
 // that names the example, or writes a grammar that reads back the same and
-// derives every example exactly (check_example), the oracle DESIGN.md sets
+// derives every example exactly (check_example), the oracle docs/inference.md sets
 // for inference. A layout of cuts has no overlaps, so inference must not
 // refuse it.
 #include <sstream>

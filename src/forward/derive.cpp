@@ -224,7 +224,7 @@ class Deriver {
     }
   }
 
-  // A size that cannot be negative or NaN: GRAMMAR.md gives them no meaning.
+  // A size that cannot be negative or NaN: docs/grammar.md gives them no meaning.
   double size_value(const CompiledExpr& e, RandomStream& rng, const char* what) {
     const double v = number(e, rng, what);
     if (v < 0) negative_size(e, v, what);
@@ -322,7 +322,7 @@ class Deriver {
     if (!(absolute + relative < std::numeric_limits<double>::infinity())) sum_overflows(id, "the sizes of this split");
     // Absolute parts take what they ask for; relative parts share the rest.
     // When the absolute parts alone exceed the scope, they shrink in
-    // proportion and the relative parts get nothing (GRAMMAR.md, Sizes).
+    // proportion and the relative parts get nothing (docs/grammar.md, split).
     const double abs_scale = absolute > length ? length / absolute : 1.0;
     const double rel_unit = (absolute < length && relative > 0) ? (length - absolute) / relative : 0.0;
     double from = 0;

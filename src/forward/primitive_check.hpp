@@ -1,6 +1,6 @@
 // Which primitives a grammar inserts that the library does not have.
 //
-// GRAMMAR.md: an unknown primitive inserts a box labelled with its name and
+// docs/grammar.md, I(name): an unknown primitive inserts a box labelled with its name and
 // warns once, naming the known primitives. The check runs before deriving,
 // from the graph, so the warning points at the first I(name) in the file.
 #pragma once

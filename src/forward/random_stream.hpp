@@ -1,7 +1,7 @@
 // Path-keyed random numbers.
 //
 // A draw depends on the seed and on the path from the start rule to the
-// node that draws, never on evaluation order (GRAMMAR.md). Each node
+// node that draws, never on evaluation order (docs/grammar.md, "Derivation and randomness"). Each node
 // invocation owns a 64-bit key: the start key comes from the seed, a child's
 // key mixes its parent's key with the child's slot (split part, repeat tile,
 // chosen option, face). Draws within one node are numbered. So editing one

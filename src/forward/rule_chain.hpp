@@ -2,7 +2,7 @@
 // "plot > house(3) > floors(2)".
 //
 // derive() and check stop a runaway grammar with the same kind of message
-// (GRAMMAR.md: errors name file:line:column and the chain of rules), so the
+// (docs/grammar.md, "Errors and warnings": errors name file:line:column and the chain of rules), so the
 // chain is spelled here for both. Past twelve rules the middle is left out
 // ("plot > a > b > c > ... (990 more) ... > x > y"): a recursion a thousand
 // calls deep still gives a message a person can read.

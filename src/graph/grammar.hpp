@@ -1,6 +1,6 @@
 // The operation graph: rules, constants and the node arena they share.
 //
-// Both directions meet here (DESIGN.md). The reader builds a Grammar from
+// Both directions meet here (docs/inference.md). The reader builds a Grammar from
 // text, inference builds one from examples, derivation runs one, and the
 // writer prints one. A rule is a label, its parameter names and one body
 // node; several alternatives of a label are one Choose body.

@@ -1,4 +1,4 @@
-// The grammar language, as this parser reads it (GRAMMAR.md is the contract):
+// The grammar language, as this parser reads it (docs/grammar.md says it for users):
 //
 //   file      := { line }
 //   line      := NEWLINE | directive NEWLINE | constant NEWLINE | rule NEWLINE

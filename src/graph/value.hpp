@@ -1,7 +1,7 @@
 // The values a grammar computes with: numbers and axes.
 //
 // Booleans are numbers (0 is false). An axis is x, y or z; where an axis is
-// expected, the numbers 0, 1 and 2 are accepted too (GRAMMAR.md).
+// expected, the numbers 0, 1 and 2 are accepted too (docs/grammar.md).
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 // The grammar writer: an operation graph back to grammar text.
 //
-// The contract (GRAMMAR.md, "Written grammars"): for every grammar g that
+// The contract (tests/writer_test.cpp holds it to it): for every grammar g that
 // write_grammar accepts, parse_grammar(write_grammar(g)) is structurally
 // equal to g (equal_grammars), and the text reads like a person wrote it:
 // one rule per line, infix expressions with no more parentheses than the

@@ -1,7 +1,7 @@
 // Checking: does this grammar derive this example exactly, and how?
 //
 // The test oracle of inference (every example must be derivable from the
-// grammar inferred from it, DESIGN.md) and a tool in its own right: "does
+// grammar inferred from it, docs/inference.md) and a tool in its own right: "does
 // this building fit the style?".
 //
 // The grammar derives the example when some sequence of choices (options
@@ -18,7 +18,7 @@
 // within the tolerance) and accepts a placement when the part lengths can
 // come from the part sizes: absolute lengths within their size's support,
 // relative lengths with one common scale k (len_i = k * r_i), or the
-// overflow rule of GRAMMAR.md when the absolute parts alone exceed the
+// overflow rule of docs/grammar.md when the absolute parts alone exceed the
 // scope. Consecutive parts that receive no box form one stretch of empty
 // space whose inner boundaries may lie anywhere. A part may also end inside
 // the empty space after its last box (a skyscraper plot above its towers):

@@ -4,7 +4,7 @@
 // A split's relative parts get k * r_i metres for one common scale k
 // (Fill); when the absolute parts alone exceed the scope they shrink by a
 // common factor 1/c and the relative parts get nothing (Overflow,
-// GRAMMAR.md "Sizes"). Each part placed on the example's cuts narrows the
+// docs/grammar.md, split). Each part placed on the example's cuts narrows the
 // scales still possible; a fixed length that misses its size adds to a
 // penalty instead, so a search for a random value can see how far off a
 // placement is, not only that it is.

@@ -1,7 +1,7 @@
 // Matching a split (check_matcher.hpp): its axis, the cuts of the boxes
 // along it and the sizes of its parts; the placements are searched by
 // SplitSearch (split_search.hpp), once for every sizing of few-valued
-// random values, in three modes (GRAMMAR.md "Sizes").
+// random values, in three modes (docs/grammar.md, split).
 #include "inverse/check_matcher.hpp"
 
 #include <algorithm>

@@ -220,7 +220,7 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
   // example to less than check does; and numbers are rounded, shares of
   // the largest containers included, which small parts deep inside (a
   // pinwheel nested in pinwheels) feel most. infer never writes what
-  // check refuses (DESIGN.md): the grammar must pass check on the examples
+  // check refuses (docs/inference.md): the grammar must pass check on the examples
   // as they are, and where it does not it is made again, merging within
   // the smallest tolerance, where every example is held to its own, then
   // ten and a hundred times finer. Joining sizes has checked every example

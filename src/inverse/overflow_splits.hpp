@@ -1,4 +1,4 @@
-// A split and its overflow are one split (issue 15). GRAMMAR.md: where the
+// A split and its overflow are one split (issue 15). docs/grammar.md (split): where the
 // absolute parts of a split alone exceed its scope, they shrink in
 // proportion and the relative parts get nothing. So a storey
 // `split(z){ 0.9 : I(rect) | 1.5 : I(window) | ~1 : I(rect) }` in a repeat

@@ -1,4 +1,4 @@
-// Numbers a person would write (GRAMMAR.md, "Written grammars"), without
+// Numbers a person would write (graph/writer.hpp), without
 // losing exactness: every example must still derive within tolerance.
 //
 //   - A split whose relative parts are all literals writes them as small
