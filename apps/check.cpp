@@ -90,25 +90,23 @@ int run(int argc, char** argv) {
   const Grammar grammar = read_grammar_file(args.positional[0]);
   const std::vector<fs::path> files =
       example_files(std::vector<std::string>(args.positional.begin() + 1, args.positional.end()));
-  // One example's verdict, its coordinates snapped to the noise level
-  // first or as read (layered_parts.hpp: parts set into parts, or painted
-  // over one another, each keep what is visible of them, as infer takes
-  // them).
-  auto verdict = [&](const Example& loaded, bool snap) {
+  // One example's verdict, `taken` being the example as read or its
+  // coordinates snapped to the noise level (layered_parts.hpp: parts set
+  // into parts, or painted over one another, each keep what is visible of
+  // them, as infer takes them).
+  auto verdict = [&](const Example& loaded, const Example& taken) {
     const std::string& file = loaded.source;
     // Snapped (snapped_coordinates.hpp), coordinates apart are places
     // apart, cut within float noise; sizes fit within the noise level.
-    const Example example = snap ? visible_parts(snapped_coordinates(loaded, options.tolerance),
-                                                 Layering{stack, default_tolerance(loaded)})
-                                 : visible_parts(loaded, Layering{stack, default_tolerance(loaded)});
+    const bool snap = taken.snapped > 0;
+    const Example example = visible_parts(taken, Layering{stack, default_tolerance(loaded)});
     std::vector<LabelledBox> boxes = example.boxes;
     for (auto& b : boxes) {
       b.min -= example.min;
       b.max -= example.min;
     }
-    // The example's own tolerance, as infer takes it: from where the file
-    // put it, before it was moved to the origin.
-    // As read, within its float noise, as infer took it without a level.
+    // As read, within its float noise (from where the file put it, before
+    // it was moved to the origin), as infer took it without a level.
     CheckOptions own = options;
     own.tolerance = snap ? options.tolerance : default_tolerance(loaded);
     if (snap) own.cut_tolerance = default_tolerance(loaded);
@@ -128,15 +126,16 @@ int run(int argc, char** argv) {
     // Given a noise level (--tolerance), the example is taken as infer
     // takes it, snapped; a grammar infer made from it as read (where the
     // snapped coordinates gave none) derives it as read.
-    const bool snap = options.tolerance > 0;
-    CheckResult r = verdict(loaded, snap);
-    bool snapped = snap && r.derivable;
-    if (snap && !r.derivable) {
-      CheckResult as_read = verdict(loaded, false);
+    const std::optional<Example> snapped =
+        options.tolerance > 0 ? std::optional<Example>(snapped_coordinates(loaded, options.tolerance)) : std::nullopt;
+    CheckResult r = verdict(loaded, snapped ? *snapped : loaded);
+    const bool derived_snapped = snapped && r.derivable;
+    if (snapped && !r.derivable) {
+      CheckResult as_read = verdict(loaded, loaded);
       if (as_read.derivable) r = std::move(as_read);
     }
-    if (snapped) {
-      const double moved = largest_move(loaded, snapped_coordinates(loaded, options.tolerance));
+    if (derived_snapped) {
+      const double moved = largest_move(loaded, *snapped);
       char text[32];
       std::snprintf(text, sizeof text, "%.3g", moved);
       if (moved > 0)
