@@ -932,7 +932,11 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   // frames unify again.
   const SelfNesting nesting = fold_self_nesting(g, merged, book, options.tolerance);
   if (nesting.rules > 0) {
+    // The splits rebuilt above a recursion keep their examples' lengths:
+    // without them sizing reads a front beside a wing as sizes drawn
+    // anew (drawn_sizes.hpp, nested_split.hpp).
     carry_notes(nesting.rebuilt, book, tile_counts);
+    carry_rows(nesting.rebuilt, rows);
     merged = Unifier(g, options, book, rows, tile_counts, counts, copied).run(nesting.root);
   }
   // Alternatives that differ only below some of their parts become one
