@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "forward/derive.hpp"
+#include "graph/writer.hpp"
+#include "inverse/check.hpp"
 #include "inverse/example.hpp"
 
 namespace vern::test {
@@ -130,6 +132,20 @@ inline std::vector<Example> derived_examples(const Grammar& g, std::uint64_t k) 
   std::vector<Example> out;
   for (std::uint64_t seed = 1; seed <= k; ++seed) out.push_back(example_of(derived_parts(g, seed)));
   return out;
+}
+
+// Precision, asserted: every variant the inferred grammar derives with the
+// seeds first..last is a building the source derives on its extent. The
+// first that is not is named with check's reason and the inferred grammar.
+inline ::testing::AssertionResult source_derives_variants(const Grammar& source, const Grammar& inferred,
+                                                          std::uint64_t first, std::uint64_t last) {
+  for (std::uint64_t seed = first; seed <= last; ++seed) {
+    const Example variant = example_of(derived_parts(inferred, seed));
+    const CheckResult r = check_example(source, variant.boxes, example_size(variant));
+    if (!r.derivable)
+      return ::testing::AssertionFailure() << "seed " << seed << ": " << r.mismatch << "\n" << write_grammar(inferred);
+  }
+  return ::testing::AssertionSuccess();
 }
 
 inline std::vector<vern::LabelledBox> translated(std::vector<vern::LabelledBox> boxes, glm::dvec3 by) {
