@@ -63,5 +63,27 @@ TEST(NestedSplit, TheShortestRunWins) {
   EXPECT_EQ(run->last, 3u);
 }
 
+TEST(NestedSplit, ALodgeOfAnyWidthBesideTheFrontLeavesOnlyItsWidthDrawn) {
+  // The second lodge drawn anew in each building: the outer split draws
+  // that one share, and the front still keeps its columns and mass
+  // (drawn as one split, the mass and both lodges would each be drawn).
+  std::vector<std::vector<double>> lengths;
+  const double widths[] = {21.5, 25, 29.5, 23, 27};
+  const double lodges[] = {0.8, 1.3, 1.0, 1.4, 0.9};
+  for (int i = 0; i < 5; ++i) {
+    const double k = widths[i] / (1.2 + lodges[i] + 2.9);
+    lengths.push_back({1.2 * k, lodges[i] * k, 1, 2.9 * k - 2, 1});
+  }
+  const auto run = find_nested_run(lengths, plan_sizes(lengths, 1e-6), 1e-6);
+  ASSERT_TRUE(run.has_value());
+  EXPECT_EQ(run->first, 2u);
+  EXPECT_EQ(run->last, 4u);
+  EXPECT_EQ(draws_of(run->inner), 0u);
+  EXPECT_EQ(draws_of(run->outer), 1u);
+  ASSERT_EQ(run->outer.size(), 3u);
+  EXPECT_FALSE(run->outer[1].fixed);
+  EXPECT_TRUE(run->outer[0].fixed && run->outer[2].fixed);
+}
+
 }  // namespace
 }  // namespace vern

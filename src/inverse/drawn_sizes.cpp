@@ -13,28 +13,53 @@ namespace vern {
 
 namespace {
 
-// The split as a split of fixed sizes holding a split of fixed sizes
-// (nested_split.hpp), when its rows are two splits and not one.
-std::optional<Split> nested_split(Grammar& g, const Split& split, const std::vector<std::vector<double>>& lengths,
-                                  const std::optional<std::vector<PartPlan>>& whole, double tolerance) {
+// A split with its sizes from a plan, and the values each drawn part
+// takes in each row (for fitting).
+struct DrawnSplit {
+  Split split;
+  std::vector<std::vector<Observation>> values;
+};
+
+DrawnSplit drawn_split(Split split, const std::vector<PartSizes>& plan, const std::vector<LengthRow>& rows,
+                       double tolerance) {
+  std::vector<std::vector<Observation>> values(split.parts.size());
+  for (std::size_t i = 0; i < split.parts.size(); ++i) {
+    const PartSizes& p = plan[i];
+    if (p.fixed) {
+      split.parts[i].size = {Expr::number(p.value), !p.absolute};
+      continue;
+    }
+    const auto [lo, hi] = std::minmax_element(p.values.begin(), p.values.end());
+    split.parts[i].size = {range_expr({*lo, *hi}, tolerance), !p.absolute};
+    for (std::size_t m = 0; m < p.values.size(); ++m) values[i].push_back({p.values[m], rows[m].weight, rows[m].example});
+  }
+  return {std::move(split), std::move(values)};
+}
+
+// The split as a split holding a split (nested_split.hpp), when its rows
+// are two splits and not one: the inner split is interned (its drawn
+// values booked), the outer returned.
+std::optional<DrawnSplit> nested_split(Grammar& g, const Split& split, const std::vector<LengthRow>& rows,
+                                       const std::vector<std::vector<double>>& lengths,
+                                       const std::optional<std::vector<PartPlan>>& whole, SampleBook& book,
+                                       double tolerance) {
   const auto run = find_nested_run(lengths, whole, tolerance);
   if (!run) return std::nullopt;
-  auto size = [](const PartPlan& p) { return Size{Expr::number(p.value), !p.absolute}; };
-  Split nested{split.axis, {}};
-  for (std::size_t i = run->first; i <= run->last; ++i)
-    nested.parts.push_back({size(run->inner[i - run->first]), split.parts[i].child});
-  const NodeId child = g.intern({std::move(nested), {}});
-  Split out{split.axis, {}};
-  for (std::size_t i = 0, k = 0; i < split.parts.size(); ++k) {
+  Split inner{split.axis, {}};
+  for (std::size_t i = run->first; i <= run->last; ++i) inner.parts.push_back(split.parts[i]);
+  DrawnSplit drawn_inner = drawn_split(std::move(inner), run->inner, rows, tolerance);
+  const NodeId child = g.intern({std::move(drawn_inner.split), {}});
+  if (draws_of(run->inner) > 0) book[child] = std::move(drawn_inner.values);
+  Split outer{split.axis, {}};
+  for (std::size_t i = 0; i < split.parts.size(); ++i) {
     if (i == run->first) {
-      out.parts.push_back({size(run->outer[k]), child});
-      i = run->last + 1;
+      outer.parts.push_back({{}, child});
+      i = run->last;
     } else {
-      out.parts.push_back({size(run->outer[k]), split.parts[i].child});
-      ++i;
+      outer.parts.push_back(split.parts[i]);
     }
   }
-  return out;
+  return drawn_split(std::move(outer), run->outer, rows, tolerance);
 }
 
 }  // namespace
@@ -58,30 +83,17 @@ NodeId draw_sizes(Grammar& g, NodeId root, const RowBook& rows, SampleBook& book
     if (lengths[0].size() != split->parts.size()) continue;
     // One plan of the row as one split, for both questions below.
     const auto whole = plan_sizes(lengths, tolerance);
-    if (const auto nested = nested_split(g, *split, lengths, whole, tolerance)) {
-      const NodeId out = g.intern({std::move(*nested), g.node(id).loc});
-      if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
-      replace[id] = out;
-      any = true;
-      continue;
+    // A copy: interning the nested split's child may move g's nodes.
+    const Split original = *split;
+    std::optional<DrawnSplit> drawn = nested_split(g, original, known->second, lengths, whole, book, tolerance);
+    if (!drawn) {
+      const auto plan = plan_drawn_sizes(lengths, whole, tolerance);
+      if (!plan) continue;
+      drawn = drawn_split(original, *plan, known->second, tolerance);
     }
-    const auto plan = plan_drawn_sizes(lengths, whole, tolerance);
-    if (!plan) continue;
-    Split drawn = *split;
-    std::vector<std::vector<Observation>> values(drawn.parts.size());
-    for (std::size_t i = 0; i < drawn.parts.size(); ++i) {
-      const PartSizes& p = (*plan)[i];
-      if (p.fixed) {
-        drawn.parts[i].size = {Expr::number(p.value), !p.absolute};
-        continue;
-      }
-      const auto [lo, hi] = std::minmax_element(p.values.begin(), p.values.end());
-      drawn.parts[i].size = {range_expr({*lo, *hi}, tolerance), !p.absolute};
-      for (std::size_t m = 0; m < p.values.size(); ++m) values[i].push_back({p.values[m], known->second[m].weight, known->second[m].example});
-    }
-    const NodeId out = g.intern({std::move(drawn), g.node(id).loc});
+    const NodeId out = g.intern({std::move(drawn->split), g.node(id).loc});
     if (out == id) continue;
-    book[out] = std::move(values);
+    book[out] = std::move(drawn->values);
     if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
     replace[id] = out;
     any = true;

@@ -12,16 +12,43 @@ namespace {
 // search, cubic in the parts, is not tried.
 constexpr std::size_t kFewestRows = 3, kMostParts = 32;
 
-// One split's plan for the rows, if it fixes every size. plan_sizes has
-// none when the rows' totals agree: such a run keeps its parts' lengths
-// and is no nesting.
-std::optional<std::vector<PartPlan>> fixed_plan(const std::vector<std::vector<double>>& lengths, double tolerance) {
-  auto plan = plan_sizes(lengths, tolerance);
-  if (!plan || !std::all_of(plan->begin(), plan->end(), [](const PartPlan& p) { return p.fixed; })) return std::nullopt;
-  return plan;
+// The sizes one split of these rows writes, if it can be written: fixed
+// where plan_sizes fixes every part, else as plan_drawn_sizes draws them.
+// plan_sizes has none when the rows' totals agree: such a run keeps its
+// parts' lengths and is no nesting.
+std::optional<std::vector<PartSizes>> planned(const std::vector<std::vector<double>>& lengths, double tolerance) {
+  const auto base = plan_sizes(lengths, tolerance);
+  if (!base) return std::nullopt;
+  if (std::all_of(base->begin(), base->end(), [](const PartPlan& p) { return p.fixed; })) {
+    std::vector<PartSizes> out;
+    for (const PartPlan& p : *base) out.push_back({p.absolute, true, p.value, {}});
+    return out;
+  }
+  return plan_drawn_sizes(lengths, base, tolerance);
+}
+
+// What the row as one split draws: its drawn plan's draws, else every
+// part plan_sizes leaves unfixed (the split keeps their ranges).
+std::size_t draws_of_whole(const std::vector<std::vector<double>>& lengths, const std::vector<PartPlan>& whole,
+                           double tolerance) {
+  if (const auto drawn = plan_drawn_sizes(lengths, whole, tolerance)) return draws_of(*drawn);
+  return static_cast<std::size_t>(std::count_if(whole.begin(), whole.end(), [](const PartPlan& p) { return !p.fixed; }));
 }
 
 }  // namespace
+
+std::size_t draws_of(const std::vector<PartSizes>& sizes) {
+  std::size_t absolute = 0, relative = 0, relative_drawn = 0;
+  for (const PartSizes& p : sizes) {
+    if (p.absolute) {
+      absolute += p.fixed ? 0 : 1;
+    } else {
+      ++relative;
+      relative_drawn += p.fixed ? 0 : 1;
+    }
+  }
+  return absolute + (relative > 0 && relative_drawn == relative ? relative_drawn - 1 : relative_drawn);
+}
 
 std::vector<std::vector<double>> outer_lengths(const std::vector<std::vector<double>>& lengths, NestedRun run) {
   std::vector<std::vector<double>> out;
@@ -57,19 +84,22 @@ std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>&
   // varies in its totals (plan_sizes has a plan) and keeps a part unfixed.
   if (!whole || std::all_of(whole->begin(), whole->end(), [](const PartPlan& p) { return p.fixed; }))
     return std::nullopt;
-  for (std::size_t length = 2; length < parts; ++length) {
-    for (std::size_t first = 0; first + length <= parts; ++first) {
+  std::size_t fewest = draws_of_whole(lengths, *whole, tolerance);
+  std::optional<NestedRun> best;
+  for (std::size_t length = 2; length < parts && fewest > 0; ++length) {
+    for (std::size_t first = 0; first + length <= parts && fewest > 0; ++first) {
       NestedRun run{first, first + length - 1, {}, {}};
-      auto outer = fixed_plan(outer_lengths(lengths, run), tolerance);
-      if (!outer) continue;
-      auto inner = fixed_plan(inner_lengths(lengths, run), tolerance);
-      if (!inner) continue;
+      auto inner = planned(inner_lengths(lengths, run), tolerance);
+      if (!inner || draws_of(*inner) >= fewest) continue;
+      auto outer = planned(outer_lengths(lengths, run), tolerance);
+      if (!outer || draws_of(*inner) + draws_of(*outer) >= fewest) continue;
+      fewest = draws_of(*inner) + draws_of(*outer);
       run.outer = std::move(*outer);
       run.inner = std::move(*inner);
-      return run;
+      best = std::move(run);
     }
   }
-  return std::nullopt;
+  return best;
 }
 
 }  // namespace vern

@@ -11,10 +11,13 @@
 //
 // From the lengths each example's split gave each part (one row per
 // example), find_nested_run looks for a run of neighbouring parts that,
-// taken as one part, leaves an outer split whose every size is fixed (a
-// length in metres, or a share in a ratio every row keeps), and whose own
-// parts are such a split too. It is tried only where the row as one split
-// needs sizes that vary (plan_sizes leaves a part unfixed).
+// taken as one part, leaves an outer split and an inner one (the run's
+// own parts) that together draw fewer sizes than the row as one split:
+// each a length in metres, a share in a ratio every row keeps, or drawn
+// (plan_drawn_sizes). The lodges may vary themselves (a second lodge of
+// any width beside the first and the front, kept in their ratio): the
+// front still nests, and only that width is drawn. It is tried only where
+// the row as one split draws a size.
 #pragma once
 
 #include <cstddef>
@@ -26,16 +29,22 @@
 namespace vern {
 
 // The parts [first, last] (first < last, not all parts) that become one,
-// with the fixed sizes of the split round them (the run one part) and of
-// the split they make.
+// with the sizes of the split round them (the run one part) and of the
+// split they make: fixed, or drawn with each row's value.
 struct NestedRun {
   std::size_t first = 0, last = 0;
-  std::vector<PartPlan> outer, inner;
+  std::vector<PartSizes> outer, inner;
 };
 
-// The shortest such run, the leftmost of equal length; none when `whole`
-// (plan_sizes of the rows) fixes every part or is none, or there are too
-// few rows (three) or too many parts (32) to tell.
+// How many sizes a split of these sizes draws: each drawn part, but where
+// every relative part is drawn one of them is only the scale of the
+// others' weights (three shares of any proportion are two choices).
+std::size_t draws_of(const std::vector<PartSizes>& sizes);
+
+// The run whose two splits draw the fewest sizes, fewer than `whole`
+// (plan_sizes of the rows) does; the shortest, then the leftmost, of
+// equal draws. None when `whole` fixes every part or is none, or there
+// are too few rows (three) or too many parts (32) to tell.
 std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>& lengths,
                                          const std::optional<std::vector<PartPlan>>& whole, double tolerance);
 

@@ -135,17 +135,26 @@ inline std::vector<Example> derived_examples(const Grammar& g, std::uint64_t k) 
 }
 
 // Precision, asserted: every variant the inferred grammar derives with the
-// seeds first..last is a building the source derives on its extent. The
-// first that is not is named with check's reason and the inferred grammar.
+// seeds first..last, but at most `misses`, is a building the source
+// derives on its extent. Where more are not, the first is named with
+// check's reason, and the inferred grammar is shown. (A size drawn from a
+// range widens the range its examples show, as an estimate of the
+// source's: a variant at its edge may reach past the source's own.)
 inline ::testing::AssertionResult source_derives_variants(const Grammar& source, const Grammar& inferred,
-                                                          std::uint64_t first, std::uint64_t last) {
+                                                          std::uint64_t first, std::uint64_t last,
+                                                          std::size_t misses = 0) {
+  std::size_t missed = 0;
+  std::string first_miss;
   for (std::uint64_t seed = first; seed <= last; ++seed) {
     const Example variant = example_of(derived_parts(inferred, seed));
     const CheckResult r = check_example(source, variant.boxes, example_size(variant));
-    if (!r.derivable)
-      return ::testing::AssertionFailure() << "seed " << seed << ": " << r.mismatch << "\n" << write_grammar(inferred);
+    if (r.derivable) continue;
+    if (missed++ == 0) first_miss = "seed " + std::to_string(seed) + ": " + r.mismatch;
   }
-  return ::testing::AssertionSuccess();
+  if (missed <= misses) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << missed << " of " << (last - first + 1)
+                                       << " variants are not the source's; " << first_miss << "\n"
+                                       << write_grammar(inferred);
 }
 
 inline std::vector<vern::LabelledBox> translated(std::vector<vern::LabelledBox> boxes, glm::dvec3 by) {
