@@ -930,7 +930,7 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   generalise(FrameKinds::Alike);
   // Towers of every tier count become one recursive rule, so their
   // frames unify again.
-  const SelfNesting nesting = fold_self_nesting(g, merged, book, options.tolerance);
+  const SelfNesting nesting = fold_self_nesting(g, merged, book, options.tolerance, rows);
   if (nesting.rules > 0) {
     // The splits rebuilt above a recursion keep their examples' lengths:
     // without them sizing reads a front beside a wing as sizes drawn

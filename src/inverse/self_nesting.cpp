@@ -37,8 +37,8 @@ struct Key {
 
 class Nester {
  public:
-  Nester(Grammar& g, SampleBook& book, double tolerance)
-      : g_(g), book_(book), tol_(tolerance), read_(g.node_count(), false), readings_(g.node_count()) {}
+  Nester(Grammar& g, SampleBook& book, double tolerance, const RowBook& rows)
+      : g_(g), book_(book), tol_(tolerance), rows_(rows), read_(g.node_count(), false), readings_(g.node_count()) {}
 
   SelfNesting run(NodeId root) {
     read_all(root);
@@ -48,25 +48,28 @@ class Nester {
     for (const auto& node_readings : readings_)
       for (const Reading& r : node_readings) nests[r.key] = nests[r.key] || r.k >= 2;
     prefer_one_phase(nests);
+    const std::vector<std::vector<std::size_t>> groups = groups_of_contexts(nests);
     std::vector<bool> placed(g_.node_count(), false);
     place(root, nests, placed);
     SelfNesting out;
     std::vector<NodeId> replace(g_.node_count(), kNoReplacement);
-    for (std::size_t key = 0; key < keys_.size(); ++key) {
-      if (occurrences_[key].empty()) continue;
-      const std::optional<Nest> nest = recursive_rule(key);
+    for (const std::vector<std::size_t>& group : groups) {
+      std::vector<std::pair<NodeId, std::size_t>> chains;  // every chain of the group, with its base's key
+      for (std::size_t key : group)
+        for (const auto& [top, k] : occurrences_[key]) chains.emplace_back(top, key);
+      if (chains.empty()) continue;
+      const std::optional<Nest> nest = recursive_rule(group);
       if (!nest) continue;
       ++out.rules;
       std::vector<Expr> args;
-      if (nest->counted) args.push_back(count_drawn(key));
+      if (nest->counted) args.push_back(count_drawn(group));
       const NodeId call = g_.intern({Call{nest->rule, std::move(args)}, {}});
-      for (const auto& [top, k] : occurrences_[key]) replace[top] = call;
+      for (const auto& [top, key] : chains) replace[top] = call;
     }
     out.root = out.rules ? substitute(g_, root, replace, &out.rebuilt) : root;
     return out;
   }
 
- private:
   // The part of a split where its spine goes on: its one child that is a
   // split, else its one child that is not empty space (the innermost
   // tier's box, inset in its air), else none.
@@ -101,13 +104,39 @@ class Nester {
     return s;
   }
 
-  // The node and the spine below it: spine.size() == shapes.size() + 1.
-  void spine_of(NodeId id, std::vector<NodeId>& spine, std::vector<Operation>& shapes) const {
+  // One example's split, never unified: its relative flags say nothing
+  // (self_nesting.hpp).
+  bool lone(NodeId id) const {
+    if (rows_.count(id)) return false;
+    for (const SplitPart& p : std::get<Split>(g_.op(id)).parts) {
+      const auto r = literal_range(p.size.value);
+      if (!r || r->lo != r->hi) return false;
+    }
+    return true;
+  }
+
+  // Is level b (a shape) a level of context level a: the same, or the
+  // same but for relative flags where b is lone?
+  static bool fits(const Operation& a, const Operation& b, bool b_lone) {
+    if (a == b) return true;
+    if (!b_lone) return false;
+    Split flagged = std::get<Split>(b);
+    const Split& with = std::get<Split>(a);
+    if (flagged.parts.size() != with.parts.size()) return false;
+    for (std::size_t i = 0; i < flagged.parts.size(); ++i) flagged.parts[i].size.relative = with.parts[i].size.relative;
+    return Operation{std::move(flagged)} == a;
+  }
+
+  // The node and the spine below it: spine.size() == shapes.size() + 1;
+  // loose[i]: level i is lone.
+  void spine_of(NodeId id, std::vector<NodeId>& spine, std::vector<Operation>& shapes, std::vector<bool>& loose) const {
     spine.assign(1, id);
     shapes.clear();
+    loose.clear();
     while (shapes.size() < kMaxSpine) {
       const auto part = spine_part(spine.back());
       if (!part) break;
+      loose.push_back(lone(spine.back()));
       shapes.push_back(shape(spine.back(), *part));
       spine.push_back(std::get<Split>(g_.op(spine.back())).parts[*part].child);
     }
@@ -129,21 +158,38 @@ class Nester {
   // first p levels, k how often they repeat, B the spine node after them.
   void read_all(NodeId root) {
     std::vector<NodeId> stack{root}, spine;
-    std::vector<Operation> shapes;
+    std::vector<Operation> shapes, context;
+    std::vector<bool> loose;
     while (!stack.empty()) {
       const NodeId id = stack.back();
       stack.pop_back();
       if (read_[id]) continue;
       read_[id] = true;
       for_each_child(g_.op(id), [&](NodeId c) { stack.push_back(c); });
-      spine_of(id, spine, shapes);
+      spine_of(id, spine, shapes, loose);
       for (std::size_t p = 1; p <= kMaxPeriod && p <= shapes.size(); ++p) {
+        // The context is the first p levels, each replaced by the first
+        // settled level a whole number of periods below it while it is
+        // lone: a lone top tier reads as the levels under it.
+        context.assign(shapes.begin(), shapes.begin() + static_cast<std::ptrdiff_t>(p));
+        std::vector<bool> settled(p);
+        for (std::size_t j = 0; j < p; ++j) settled[j] = !loose[j];
         std::size_t k = 1;
-        while ((k + 1) * p <= shapes.size() &&
-               std::equal(shapes.begin(), shapes.begin() + static_cast<std::ptrdiff_t>(p),
-                          shapes.begin() + static_cast<std::ptrdiff_t>(k * p)))
+        while ((k + 1) * p <= shapes.size()) {
+          bool same = true;
+          for (std::size_t j = 0; j < p && same; ++j) {
+            const std::size_t at = k * p + j;
+            same = settled[j] ? fits(context[j], shapes[at], loose[at]) : fits(shapes[at], context[j], true);
+          }
+          if (!same) break;
+          for (std::size_t j = 0; j < p; ++j)
+            if (!settled[j] && !loose[k * p + j]) {
+              context[j] = shapes[k * p + j];
+              settled[j] = true;
+            }
           ++k;
-        Key key{{shapes.begin(), shapes.begin() + static_cast<std::ptrdiff_t>(p)}, spine[k * p]};
+        }
+        Key key{context, spine[k * p]};
         readings_[id].push_back({key_id(std::move(key)), k});
       }
     }
@@ -164,12 +210,53 @@ class Nester {
     for (std::size_t k : nesting) size[k] = subgraph_size(keys_[k].base);
     for (std::size_t a : nesting)
       for (std::size_t b : nesting) {
-        if (a == b || !turned(keys_[a].context, keys_[b].context)) continue;
+        if (a == b || keys_[a].context == keys_[b].context || !turned(keys_[a].context, keys_[b].context)) continue;
         if (size[b] < size[a] || (size[b] == size[a] && b < a)) nests[a] = false;
       }
   }
 
-  // Is b's context a's turned by some number of levels?
+  // The keys that fold into one rule: those of one context, whatever the
+  // base each chain ends at (tiers capped by a roof, a hip or a pyramid
+  // are one recursion whose last step chooses the cap). A key that does
+  // not nest joins its context's group where its base is no larger than
+  // one the group's nesting chains end at (a two-tier tower under the
+  // cap only it has), and folds with it. Groups in the order of their
+  // first key.
+  std::vector<std::vector<std::size_t>> groups_of_contexts(std::vector<bool>& nests) const {
+    std::unordered_map<std::size_t, std::vector<std::size_t>> by_context;  // by the context's hash
+    auto hash_of = [&](std::size_t k) {
+      std::size_t h = 0;
+      for (const Operation& f : keys_[k].context) h = h * 1000003u ^ shallow_hash(f);
+      return h;
+    };
+    for (std::size_t k = 0; k < keys_.size(); ++k) by_context[hash_of(k)].push_back(k);
+    std::vector<std::vector<std::size_t>> groups;
+    std::vector<bool> grouped(keys_.size(), false);
+    for (std::size_t a = 0; a < keys_.size(); ++a) {
+      if (grouped[a] || !nests[a]) continue;
+      std::vector<std::size_t> alike;  // the keys of a's context, a first
+      for (std::size_t b : by_context.at(hash_of(a)))
+        if (!grouped[b] && keys_[b].context == keys_[a].context) alike.push_back(b);
+      std::vector<std::size_t> group;
+      std::size_t largest = 0;
+      for (std::size_t b : alike)
+        if (nests[b]) {
+          group.push_back(b);
+          grouped[b] = true;
+          largest = std::max(largest, subgraph_size(keys_[b].base));
+        }
+      for (std::size_t b : alike)
+        if (!nests[b] && subgraph_size(keys_[b].base) <= largest) {
+          group.push_back(b);
+          grouped[b] = true;
+          nests[b] = true;
+        }
+      groups.push_back(std::move(group));
+    }
+    return groups;
+  }
+
+  // Is b's context a's turned by some number of levels (or the same)?
   static bool turned(const std::vector<Operation>& a, const std::vector<Operation>& b) {
     const std::size_t p = a.size();
     if (b.size() != p) return false;
@@ -229,9 +316,10 @@ class Nester {
   // called: the counts its chains showed, as randint(lo, hi) where they
   // run without a gap (the counts between are as likely as those seen),
   // else choice(...) of them, or the one count.
-  Expr count_drawn(std::size_t key) const {
+  Expr count_drawn(const std::vector<std::size_t>& group) const {
     std::vector<double> counts;
-    for (const auto& [top, k] : occurrences_[key]) counts.push_back(static_cast<double>(k));
+    for (std::size_t key : group)
+      for (const auto& [top, k] : occurrences_[key]) counts.push_back(static_cast<double>(k));
     std::sort(counts.begin(), counts.end());
     counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
     if (counts.size() == 1) return Expr::number(counts[0]);
@@ -249,11 +337,24 @@ class Nester {
     bool counted = false;
   };
 
-  // The rule for one key: nest --> B | F[nest], or its counted form; nullopt
-  // when some level's sizes are not ranges to widen.
-  std::optional<Nest> recursive_rule(std::size_t key_index) {
-    const Key& key = keys_[key_index];
-    const std::size_t p = key.context.size();
+  // Where a group's chains stop: their one base, or a choice of the bases
+  // weighted by how many chains stopped at each.
+  NodeId base_of(const std::vector<std::size_t>& group) {
+    Choose bases;
+    for (std::size_t key : group)
+      if (!occurrences_[key].empty())
+        bases.options.push_back(
+            {Expr{}, Expr::number(static_cast<double>(occurrences_[key].size())), keys_[key].base});
+    if (bases.options.size() == 1) return bases.options[0].child;
+    return g_.intern({std::move(bases), {}});
+  }
+
+  // The rule for one group of keys: nest --> B | F[nest], or its counted
+  // form, B the choice of their bases; nullopt when some level's sizes are
+  // not ranges to widen.
+  std::optional<Nest> recursive_rule(const std::vector<std::size_t>& group) {
+    const std::vector<Operation>& context = keys_[group.front()].context;
+    const std::size_t p = context.size();
     // Each level of F: every node at that level in every chain.
     std::vector<std::vector<NodeId>> members(p);
     double went_on = 0, stopped = 0;
@@ -261,17 +362,19 @@ class Nester {
     // is its subtree): one node seen at two counts has none.
     std::unordered_map<NodeId, int> left;
     bool counted = true;
-    for (const auto& [top, k] : occurrences_[key_index]) {
-      NodeId level = top;
-      for (std::size_t j = 0; j < k * p; ++j) {
-        members[j % p].push_back(level);
-        const int n = static_cast<int>(k - j / p);
-        const auto [at, added] = left.emplace(level, n);
-        counted = counted && (added || at->second == n);
-        level = std::get<Split>(g_.op(level)).parts[hole_of(key.context[j % p])].child;
+    for (std::size_t key : group) {
+      for (const auto& [top, k] : occurrences_[key]) {
+        NodeId level = top;
+        for (std::size_t j = 0; j < k * p; ++j) {
+          members[j % p].push_back(level);
+          const int n = static_cast<int>(k - j / p);
+          const auto [at, added] = left.emplace(level, n);
+          counted = counted && (added || at->second == n);
+          level = std::get<Split>(g_.op(level)).parts[hole_of(context[j % p])].child;
+        }
+        went_on += static_cast<double>(k);
+        stopped += 1;
       }
-      went_on += static_cast<double>(k);
-      stopped += 1;
     }
     // A chain inside another (a four-tier tower's upper three tiers, also
     // seen as a three-tier tower) brings its levels once.
@@ -283,7 +386,10 @@ class Nester {
     std::vector<Split> levels;
     std::vector<std::vector<std::vector<Observation>>> kept(p);
     for (std::size_t i = 0; i < p; ++i) {
+      // The context's flags: a lone level's say nothing.
       Split s = std::get<Split>(g_.op(members[i][0]));
+      const Split& flags = std::get<Split>(context[i]);
+      for (std::size_t q = 0; q < s.parts.size(); ++q) s.parts[q].size.relative = flags.parts[q].size.relative;
       kept[i].resize(s.parts.size());
       for (std::size_t q = 0; q < s.parts.size(); ++q) {
         std::optional<Range> all;
@@ -311,8 +417,9 @@ class Nester {
       }
       levels.push_back(std::move(s));
     }
+    const NodeId base = base_of(group);
     if (counted) {
-      if (const auto rule = counted_rule(key_index, members, left, levels, kept)) return Nest{*rule, true};
+      if (const auto rule = counted_rule(context, base, members, left, levels, kept)) return Nest{*rule, true};
     }
     // The rule first, so that F's innermost level can call it.
     const auto rule = static_cast<RuleId>(g_.rules.size());
@@ -321,12 +428,12 @@ class Nester {
     NodeId inner = call;
     for (std::size_t i = p; i-- > 0;) {
       Split s = levels[i];
-      s.parts[hole_of(key.context[i])].child = inner;
+      s.parts[hole_of(context[i])].child = inner;
       inner = g_.intern({std::move(s), {}});
       book_[inner] = kept[i];
     }
     Choose nest;
-    nest.options.push_back({Expr{}, Expr::number(stopped), key.base});
+    nest.options.push_back({Expr{}, Expr::number(stopped), base});
     nest.options.push_back({Expr{}, Expr::number(went_on), inner});
     g_.rules[rule].body = g_.intern({std::move(nest), {}});
     return Nest{rule, false};
@@ -336,23 +443,36 @@ class Nester {
   // sizes in n where they follow the count of levels left
   // (levels_left.hpp), and each chain a call nest(k): none when no size
   // follows the count.
-  std::optional<RuleId> counted_rule(std::size_t key_index, const std::vector<std::vector<NodeId>>& members,
+  std::optional<RuleId> counted_rule(const std::vector<Operation>& context, NodeId base,
+                                     const std::vector<std::vector<NodeId>>& members,
                                      const std::unordered_map<NodeId, int>& left, const std::vector<Split>& ranged,
                                      const std::vector<std::vector<std::vector<Observation>>>& kept) {
-    const Key& key = keys_[key_index];
-    const std::size_t p = key.context.size();
+    const std::size_t p = context.size();
     std::vector<std::vector<LevelPart>> levels(p);
     for (std::size_t i = 0; i < p; ++i) {
       const std::size_t parts = std::get<Split>(g_.op(members[i][0])).parts.size();
       levels[i].resize(parts);
-      for (NodeId m : members[i]) {
+      // Relative weights are compared as shares of each member's relative
+      // total, on the scale of the largest: members merged apart (tiers
+      // under a roof and tiers under a hip) write one share in weights of
+      // different scales.
+      const Split& flags = std::get<Split>(context[i]);  // a lone level's own say nothing
+      std::vector<double> totals;
+      for (NodeId m : members[i]) totals.push_back(relative_total(std::get<Split>(g_.op(m)), flags));
+      const double scale = *std::max_element(totals.begin(), totals.end());
+      for (std::size_t k = 0; k < members[i].size(); ++k) {
+        const NodeId m = members[i][k];
         const Split& s = std::get<Split>(g_.op(m));
         for (std::size_t q = 0; q < parts; ++q) {
           LevelPart& part = levels[i][q];
-          part.relative = s.parts[q].size.relative;
+          part.relative = flags.parts[q].size.relative;
           const auto r = literal_range(s.parts[q].size.value);
-          if (r && r->hi - r->lo <= tol_) part.seen.emplace_back(left.at(m), (r->lo + r->hi) / 2);
-          else part.ranged = true;
+          if (!r || r->hi - r->lo > tol_) {
+            part.ranged = true;
+            continue;
+          }
+          const double v = (r->lo + r->hi) / 2;
+          part.seen.emplace_back(left.at(m), part.relative && totals[k] > 0 ? v / totals[k] * scale : v);
         }
       }
     }
@@ -370,15 +490,25 @@ class Nester {
         s.parts[q].size = *(*sizes)[i][q];
         values[q].clear();  // a size in n, not a range of values
       }
-      s.parts[hole_of(key.context[i])].child = inner;
+      s.parts[hole_of(context[i])].child = inner;
       inner = g_.intern({std::move(s), {}});
       book_[inner] = std::move(values);
     }
     Choose nest;
-    nest.options.push_back({Expr::binary(BinaryOp::Le, n, Expr::number(0)), Expr::number(1), key.base});
+    nest.options.push_back({Expr::binary(BinaryOp::Le, n, Expr::number(0)), Expr::number(1), base});
     nest.options.push_back({Expr::binary(BinaryOp::Gt, n, Expr::number(0)), Expr::number(1), inner});
     g_.rules[rule].body = g_.intern({std::move(nest), {}});
     return rule;
+  }
+
+  // The sum of a split's weights (the middles of ranges) at the parts
+  // relative in `flags`.
+  static double relative_total(const Split& s, const Split& flags) {
+    double total = 0;
+    for (std::size_t q = 0; q < s.parts.size(); ++q)
+      if (const auto r = literal_range(s.parts[q].size.value); r && flags.parts[q].size.relative)
+        total += (r->lo + r->hi) / 2;
+    return total;
   }
 
   static std::size_t hole_of(const Operation& shaped) {
@@ -391,6 +521,7 @@ class Nester {
   Grammar& g_;
   SampleBook& book_;
   double tol_;
+  const RowBook& rows_;
   std::vector<bool> read_;
   std::vector<std::vector<Reading>> readings_;  // by node id
   std::vector<Key> keys_;
@@ -400,8 +531,8 @@ class Nester {
 
 }  // namespace
 
-SelfNesting fold_self_nesting(Grammar& g, NodeId root, SampleBook& book, double tolerance) {
-  return Nester(g, book, tolerance).run(root);
+SelfNesting fold_self_nesting(Grammar& g, NodeId root, SampleBook& book, double tolerance, const RowBook& rows) {
+  return Nester(g, book, tolerance, rows).run(root);
 }
 
 }  // namespace vern

@@ -32,6 +32,11 @@ struct SelfNesting {
 
 // Adds each recursive rule to g.rules (its body a choose; the graph calls
 // it with Call nodes) and books the values behind F's ranges in book.
-SelfNesting fold_self_nesting(Grammar& g, NodeId root, SampleBook& book, double tolerance);
+// `rows` tells the splits unified from examples (merge.cpp): one that is
+// not, all of whose sizes are one example's lengths, has relative flags
+// that say nothing yet (every part a weight in metres), and is read as a
+// level of any context it fits but for them: the tallest tower, seen
+// once, has a top tier no other example shares.
+SelfNesting fold_self_nesting(Grammar& g, NodeId root, SampleBook& book, double tolerance, const RowBook& rows);
 
 }  // namespace vern
