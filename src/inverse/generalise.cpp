@@ -145,16 +145,7 @@ class Generaliser {
     return it != frame.weights.end() ? it->second : references_[m];
   }
 
-  // One example's split, never unified: its sizes are that example's
-  // lengths, and which of them are relative says nothing yet.
-  bool lone(NodeId id) const {
-    if (rows_.count(id)) return false;
-    for (const auto& p : std::get<Split>(g_.op(id)).parts) {
-      const auto r = literal_range(p.size.value);
-      if (!r || r->lo != r->hi) return false;
-    }
-    return true;
-  }
+  bool lone(NodeId id) const { return lone_split(g_, id, rows_); }
 
   static std::vector<bool> flags_of(const Split& s) {
     std::vector<bool> relative;

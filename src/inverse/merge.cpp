@@ -42,6 +42,15 @@ std::optional<Range> literal_range(const Expr& e) {
   return Range{std::min(a.number, b.number), std::max(a.number, b.number)};
 }
 
+bool lone_split(const Grammar& g, NodeId id, const RowBook& rows) {
+  if (rows.count(id)) return false;
+  for (const auto& p : std::get<Split>(g.op(id)).parts) {
+    const auto r = literal_range(p.size.value);
+    if (!r || r->lo != r->hi) return false;
+  }
+  return true;
+}
+
 Expr range_expr(Range r, double tolerance) {
   if (r.hi - r.lo <= tolerance) return Expr::number(r.lo);
   return Expr::call(Function::Rand, {Expr::number(r.lo), Expr::number(r.hi)});

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "graph/grammar.hpp"
+#include "inverse/sample_book.hpp"
 
 namespace vern {
 
@@ -77,5 +78,10 @@ std::optional<Range> literal_range(const Expr& e);
 
 // A literal for a range narrower than tolerance, else rand(lo, hi).
 Expr range_expr(Range r, double tolerance);
+
+// One example's split, never unified (`rows` knows the splits that were):
+// its sizes are that example's lengths, and which of them are relative
+// says nothing yet.
+bool lone_split(const Grammar& g, NodeId id, const RowBook& rows);
 
 }  // namespace vern

@@ -106,14 +106,7 @@ class Nester {
 
   // One example's split, never unified: its relative flags say nothing
   // (self_nesting.hpp).
-  bool lone(NodeId id) const {
-    if (rows_.count(id)) return false;
-    for (const SplitPart& p : std::get<Split>(g_.op(id)).parts) {
-      const auto r = literal_range(p.size.value);
-      if (!r || r->lo != r->hi) return false;
-    }
-    return true;
-  }
+  bool lone(NodeId id) const { return lone_split(g_, id, rows_); }
 
   // Is level b (a shape) a level of context level a: the same, or the
   // same but for relative flags where b is lone?
