@@ -216,5 +216,31 @@ cap --> I(pyramid) : 1
   EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130));
 }
 
+TEST(SelfNesting, ATowerWhoseEveryTierIsLoneJoinsTheRecursion) {
+  // The tallest tower here is seen once and its tiers' sizes are unlike
+  // the others' (merging keeps them apart): none of its levels is unified,
+  // so none says which of its sizes are metres. It read as a recursion of
+  // its own, its 1.4 m margins shares (~1 : nil), beside the recursion of
+  // every other tower. (A random style of evaluate --random-styles 40
+  // --seed 424242, style 15.)
+  const Grammar source = parse_grammar(R"(
+@start lot
+@scope rand(48.5, 80.5), rand(14, 24), rand(13, 18.5)
+lot --> ensemble(rand(4.3, 5.7))
+ensemble(h) --> split(x){ ~0.9 : shed(h) | ~tnormal(0.65, 0.08, 0.5, 0.8) : nil | ~1.4 : shed(h) | ~tnormal(2.05, 0.22, 1.6, 2.5) : front }
+front --> split(z){ 3.6 : arcade | ~1 : repeat(z, 3.1){ level } | rand(4.5, 6) : stack(randint(2, 5)) }
+arcade --> repeat(x, 4){ shop }
+shop --> split(x){ 0.3 : I(column) | ~1 : I(glass) | 0.3 : I(column) }
+level --> repeat(x, 3.2){ bay }
+bay --> split(x){ ~1 : I(render) | tnormal(1.08, 0.04, 1, 1.15) : split(x){ ~1 : I(glazing) | ~0.4 : I(render) | ~1 : I(glazing) } | ~1 : I(render) }
+stack(n) : n > 1 --> split(z){ ~1 : I(tier) | ~(n - 1) : split(x){ 1.4 : nil | ~1 : split(y){ 1.4 : nil | ~1 : stack(n - 1) | 1.4 : nil } | 1.4 : nil } }
+stack(n) : n <= 1 --> I(roof)
+shed(h) --> split(z){ h : repeat(x, 4.3){ shedBay } | ~1 : I(roof) }
+shedBay --> split(x){ ~1 : I(render) | 1.3 : I(glazing) | ~1 : I(render) }
+)", "ensemble.grm");
+  const Inference inferred = infer(test::derived_examples(source, 30), {});
+  EXPECT_EQ(recursions(inferred.grammar), 1u) << write_grammar(inferred.grammar);
+}
+
 }  // namespace
 }  // namespace vern

@@ -32,6 +32,7 @@ struct Reading {
 struct Key {
   std::vector<Operation> context;
   NodeId base = 0;
+  std::vector<bool> loose;  // per level of F: every chain's level there lone (flags unsettled)
   friend bool operator==(const Key&, const Key&) = default;
 };
 
@@ -182,7 +183,9 @@ class Nester {
             }
           ++k;
         }
-        Key key{context, spine[k * p]};
+        std::vector<bool> unsettled(p);
+        for (std::size_t j = 0; j < p; ++j) unsettled[j] = !settled[j];
+        Key key{context, spine[k * p], std::move(unsettled)};
         readings_[id].push_back({key_id(std::move(key)), k});
       }
     }
@@ -216,34 +219,57 @@ class Nester {
   // cap only it has), and folds with it. Groups in the order of their
   // first key.
   std::vector<std::vector<std::size_t>> groups_of_contexts(std::vector<bool>& nests) const {
-    std::unordered_map<std::size_t, std::vector<std::size_t>> by_context;  // by the context's hash
+    // Contexts are looked up by a hash blind to relative flags, which a
+    // lone level's do not settle.
+    std::unordered_map<std::size_t, std::vector<std::size_t>> by_context;
     auto hash_of = [&](std::size_t k) {
       std::size_t h = 0;
-      for (const Operation& f : keys_[k].context) h = h * 1000003u ^ shallow_hash(f);
+      for (const Operation& f : keys_[k].context) {
+        Split blind = std::get<Split>(f);
+        for (SplitPart& part : blind.parts) part.size.relative = true;
+        h = h * 1000003u ^ shallow_hash(Operation{std::move(blind)});
+      }
       return h;
     };
+    auto alike = [&](std::size_t a, std::size_t b) {
+      const Key& ka = keys_[a];
+      const Key& kb = keys_[b];
+      if (ka.context.size() != kb.context.size()) return false;
+      for (std::size_t j = 0; j < ka.context.size(); ++j) {
+        if (ka.loose[j]) {
+          if (!fits(kb.context[j], ka.context[j], true)) return false;
+        } else if (!fits(ka.context[j], kb.context[j], kb.loose[j])) {
+          return false;
+        }
+      }
+      return true;
+    };
+    auto loose_levels = [&](std::size_t k) { return std::count(keys_[k].loose.begin(), keys_[k].loose.end(), true); };
     for (std::size_t k = 0; k < keys_.size(); ++k) by_context[hash_of(k)].push_back(k);
     std::vector<std::vector<std::size_t>> groups;
     std::vector<bool> grouped(keys_.size(), false);
     for (std::size_t a = 0; a < keys_.size(); ++a) {
       if (grouped[a] || !nests[a]) continue;
-      std::vector<std::size_t> alike;  // the keys of a's context, a first
+      std::vector<std::size_t> candidates;  // the keys of a's context, a first
       for (std::size_t b : by_context.at(hash_of(a)))
-        if (!grouped[b] && keys_[b].context == keys_[a].context) alike.push_back(b);
+        if (!grouped[b] && (b == a || alike(a, b))) candidates.push_back(b);
       std::vector<std::size_t> group;
       std::size_t largest = 0;
-      for (std::size_t b : alike)
+      for (std::size_t b : candidates)
         if (nests[b]) {
           group.push_back(b);
           grouped[b] = true;
           largest = std::max(largest, subgraph_size(keys_[b].base));
         }
-      for (std::size_t b : alike)
+      for (std::size_t b : candidates)
         if (!nests[b] && subgraph_size(keys_[b].base) <= largest) {
           group.push_back(b);
           grouped[b] = true;
           nests[b] = true;
         }
+      // The context written is the most settled one's.
+      std::stable_sort(group.begin(), group.end(),
+                       [&](std::size_t x, std::size_t y) { return loose_levels(x) < loose_levels(y); });
       groups.push_back(std::move(group));
     }
     return groups;
