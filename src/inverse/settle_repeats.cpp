@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <unordered_map>
 
+#include "graph/nodes_below.hpp"
 #include "inverse/merge.hpp"
 #include "inverse/substitute.hpp"
 #include "inverse/tidy_numbers.hpp"
+#include "inverse/tile_lengths.hpp"
 
 namespace vern {
 
@@ -41,6 +45,61 @@ bool gives_every_count_firmly(const std::vector<TileSeen>& seen, double t, doubl
   });
 }
 
+// What a repeat's tiles are made of, for pooling: its axis, and the
+// labels and rules below its tile, in order. Storeys of one style that
+// merging kept apart (each alternative of a door bay's place holds its
+// own) hold the same parts.
+std::vector<std::uint64_t> made_of(const Grammar& g, const Repeat& r) {
+  std::vector<std::uint64_t> key;
+  const auto axis = r.axis.literal_axis();
+  key.push_back(axis ? static_cast<std::uint64_t>(*axis) : 99);
+  std::vector<std::uint64_t> parts;
+  for (const NodeId n : nodes_below(g, r.child)) {
+    if (const auto* p = std::get_if<Primitive>(&g.op(n))) parts.push_back(p->label);
+    else if (const auto* c = std::get_if<Call>(&g.op(n))) parts.push_back((1ull << 40) + c->rule);
+  }
+  std::sort(parts.begin(), parts.end());
+  parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+  key.insert(key.end(), parts.begin(), parts.end());
+  return key;
+}
+
+// One tile size for every repeat of a pool that some one size explains:
+// by repeat, that size. Repeats of what they are made of (made_of) and of
+// one kind of length (tile_lengths.hpp: plots and strips a quarter as wide
+// stay apart) are a pool where there are two or more and they differ in
+// size; alike in size, each is settled as it is.
+std::unordered_map<NodeId, double> pooled_tiles(const Grammar& g, NodeId root, const TileCounts& tile_counts,
+                                                double tolerance) {
+  const TileLengths kinds(g, root);
+  std::map<std::vector<std::uint64_t>, std::vector<NodeId>> pools;
+  for (const auto& [id, seen] : tile_counts) {
+    if (id >= g.node_count() || seen.empty()) continue;
+    const auto* r = std::get_if<Repeat>(&g.op(id));
+    if (!r || !literal_range(r->size)) continue;
+    std::vector<std::uint64_t> key = made_of(g, *r);
+    key.push_back(kinds.kind(*r));
+    pools[std::move(key)].push_back(id);
+  }
+  std::unordered_map<NodeId, double> out;
+  for (auto& [key, members] : pools) {
+    if (members.size() < 2) continue;
+    const Expr& first = std::get<Repeat>(g.op(members[0])).size;
+    if (std::all_of(members.begin(), members.end(), [&](NodeId id) { return std::get<Repeat>(g.op(id)).size == first; }))
+      continue;
+    std::sort(members.begin(), members.end());  // tile_counts is unordered: one order, one result
+    std::vector<TileSeen> all;
+    for (NodeId id : members) {
+      const auto& seen = tile_counts.at(id);
+      all.insert(all.end(), seen.begin(), seen.end());
+    }
+    const auto one = common_tile(all, tolerance);
+    if (!one) continue;
+    for (NodeId id : members) out[id] = *one;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tolerance) {
@@ -68,11 +127,23 @@ std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tole
 NodeId settle_repeats(Grammar& g, NodeId root, const TileCounts& tile_counts, SampleBook& book, double tolerance) {
   std::vector<NodeId> replace(g.node_count(), kNoReplacement);
   bool any = false;
+  const std::unordered_map<NodeId, double> pooled = pooled_tiles(g, root, tile_counts, tolerance);
   for (const auto& [id, seen] : tile_counts) {
     if (id >= replace.size() || seen.empty()) continue;
     const auto* r = std::get_if<Repeat>(&g.op(id));
     const auto tile = r ? literal_range(r->size) : std::nullopt;
     if (!tile) continue;
+    // A size its pool shares, where one explains them all: storeys alike
+    // in every alternative are one storey height, not 3.3 m in one and
+    // 3.5 m in another (each the middle of what its own examples allow).
+    if (const auto it = pooled.find(id); it != pooled.end()) {
+      if (tile->hi - tile->lo <= tolerance && tile->lo == it->second) continue;
+      Repeat fixed = *r;
+      fixed.size = Expr::number(it->second);
+      replace[id] = g.intern({std::move(fixed), g.node(id).loc});
+      any = true;
+      continue;
+    }
     // One size already: kept where it gives the counts firmly, else moved
     // into their ranges (below).
     const bool one_size = tile->hi - tile->lo <= tolerance;
