@@ -379,5 +379,36 @@ TEST(JointSizes, ASizeEveryTileKeepsFollowsASizeOutsideTheRepeat) {
   EXPECT_GT(loggias_astray(apart.grammar), 10u) << write_grammar(apart.grammar);
 }
 
+TEST(JointSizes, OneSlotInEveryAlternativeIsSizedFromAllTheirExamples) {
+  // A door bay after none to three bays, lined up on every storey: each
+  // bay count is an alternative of its own, and each saw two or three of
+  // the ten examples. Sized alternative by alternative, the storeys
+  // followed the ground floor (1.5 u + 2.5 m) in some and were drawn
+  // apart in others; the slot pooled over every alternative's examples is
+  // that line in each, so every variant's storeys follow its ground floor.
+  const Grammar source = parse_grammar(R"(
+@start hall
+@scope rand(20, 30), 10, rand(15, 21)
+hall --> mansion(rand(3.6, 5), randint(0, 3))
+mansion(u, k) --> split(z){ u : ground(k) | 1.5 * u + 2.5 : repeat(z, 3.5){ storey(k) } | ~1 : I(roof) }
+ground(k) --> split(x){ 3.5 * k : repeatN(x, k){ shop } | 3.5 : door | ~1 : repeat(x, 3.5){ shop } }
+shop --> split(x){ 0.3 : I(pillar) | ~1 : I(glass) | 0.3 : I(pillar) }
+storey(k) --> split(x){ 3.5 * k : repeatN(x, k){ bay } | 3.5 : feature | ~1 : repeat(x, 3.5){ bay } }
+bay --> split(x){ ~1 : I(brick) | 1.4 : I(window) | ~1 : I(brick) }
+door --> split(x){ ~1 : I(brick) | 1.4 : I(door) | ~1 : I(brick) }
+feature --> split(x){ ~1 : I(brick) | 1.4 : I(balcony) | ~1 : I(brick) }
+)", "hall.grm");
+  const Inference inferred = infer(test::derived_examples(source, 10), {});
+  for (std::uint64_t seed = 101; seed <= 140; ++seed) {
+    double ground = 0, roof = 0;  // the door's top, the roof's bottom
+    for (const LabelledBox& b : test::derived_parts(inferred.grammar, seed)) {
+      if (b.label == "door") ground = b.max.z;
+      if (b.label == "roof") roof = b.min.z;
+    }
+    ASSERT_GT(ground, 0) << seed;
+    EXPECT_NEAR(roof - ground, 1.5 * ground + 2.5, 1e-6) << "seed " << seed << "\n" << write_grammar(inferred.grammar);
+  }
+}
+
 }  // namespace
 }  // namespace vern

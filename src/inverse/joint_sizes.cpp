@@ -39,6 +39,10 @@ struct Occurrence {
   std::uint64_t path = 0;
   NodeId split = 0;
   bool tiled = false;  // inside a repeat: it runs once per tile
+  // Its place in the innermost alternative that holds it: that region and
+  // the split's ordinal there (slots alike in sibling alternatives).
+  std::size_t alternative = ~std::size_t{0};
+  std::size_t ordinal = 0;
 };
 
 struct Region {
@@ -46,6 +50,7 @@ struct Region {
   RuleId rule = 0;  // the rule whose body holds the root: the new rule's name
   std::vector<Occurrence> splits;  // in the order check() matches them
   std::size_t parent = kNoRegion;  // the region whose choice it is an alternative of
+  std::uint64_t choice = 0;        // the path of that choice
   static constexpr std::size_t kNoRegion = ~std::size_t{0};
 };
 
@@ -101,6 +106,7 @@ class Regions {
   // None when the grammar, unrolled through its calls and alternatives,
   // is too large to walk (joining is then not tried).
   const std::vector<Region>& all() const { return regions_; }
+  const Region& at(std::size_t k) const { return regions_[k]; }
   // A region's root reached at one place only can be replaced by node id.
   bool unique(const Region& r) const { return visits_[r.root] == 1; }
 
@@ -133,8 +139,10 @@ class Regions {
     ++visits_[id];
     const Operation& op = g_.op(id);
     if (const auto* s = std::get_if<Split>(&op)) {
-      if (draws(*s))
-        for (std::size_t r : open) regions_[r].splits.push_back({path, id, tiled});
+      if (draws(*s)) {
+        const std::size_t ordinal = regions_[open.back()].splits.size();
+        for (std::size_t r : open) regions_[r].splits.push_back({path, id, tiled, open.back(), ordinal});
+      }
       for (std::size_t i = 0; i < s->parts.size(); ++i)
         collect(s->parts[i].child, path, static_cast<std::uint32_t>(i + 1), open, rule, tiled);
     } else if (const auto* c = std::get_if<Call>(&op)) {
@@ -142,7 +150,7 @@ class Regions {
     } else if (const auto* ch = std::get_if<Choose>(&op)) {
       for (std::size_t j = 0; j < ch->options.size(); ++j) {
         const std::size_t inner = regions_.size();
-        regions_.push_back({ch->options[j].child, rule, {}, open.back()});
+        regions_.push_back({ch->options[j].child, rule, {}, open.back(), path});
         open.push_back(inner);
         collect(ch->options[j].child, path, static_cast<std::uint32_t>(j + 1), open, rule, tiled);
         open.pop_back();
@@ -458,8 +466,11 @@ class Joiner {
         for (auto& v : s.value) std::ranges::fill(v, kAbsent);
       }
     }
+    // One slot in sibling alternatives is one set of sizes (pooled_slots).
+    const std::vector<std::size_t> leader_of = pool_slots(regions, r, at, rows);
     // Shares that are metres: they leave the shares (see read_in_metres).
     for (const auto& [o, i] : read_in_metres(at, opt_.min_examples, opt_.tolerance)) at[o].relative[i] = false;
+    for (std::size_t o = 0; o < at.size(); ++o) at[o].relative = at[leader_of[o]].relative;
 
     std::vector<Quantity> quantities;
     std::vector<std::vector<std::optional<Linear>>> formula(r.splits.size());
@@ -612,6 +623,9 @@ class Joiner {
     // Splits that vary on their own are share_splits' (one rule each, not
     // one per region).
     if (linked == 0) return std::nullopt;
+    // A slot pooled: every alternative's split sized as its leader's.
+    for (std::size_t o = 0; o < at.size(); ++o)
+      if (leader_of[o] != o) formula[o] = formula[leader_of[o]];
 
     // The rest of a split of shares: its total less the others' shares.
     for (const Rest& rest : rests) {
@@ -627,15 +641,18 @@ class Joiner {
       f.c0 = shortest_decimal(f.c0, opt_.tolerance / 4);
       for (double& c : f.c) c = shortest_decimal(c, 1e-9);  // sums of short decimals, not float noise
       formula[rest.occurrence][rest.part] = f;
+      for (std::size_t o = 0; o < at.size(); ++o)
+        if (leader_of[o] == rest.occurrence && o != rest.occurrence) formula[o][rest.part] = f;
     }
 
     // A parameter used in one size only is drawn there; the others are
     // the new rule's parameters. check() pins a parameter down at the
     // first split that uses it, so each split may bring one.
+    // A pooled slot's alternatives count once: each derivation runs one.
     std::vector<std::size_t> uses(drawn.size(), 0);
-    for (const auto& parts : formula)
-      for (const auto& f : parts)
-        if (f)
+    for (std::size_t o = 0; o < formula.size(); ++o)
+      for (const auto& f : formula[o])
+        if (f && leader_of[o] == o)
           for (std::size_t k = 0; k < f->c.size(); ++k) uses[k] += f->c[k] != 0 ? 1 : 0;
     // A split brings one parameter at most (check solves for one unknown
     // per split). Where its rest would make it bring more, shares used
@@ -719,6 +736,67 @@ class Joiner {
   }
 
  private:
+  // Slots alike in sibling alternatives (issue 23, item 1): a choice's
+  // alternatives that differ below some place (a door bay after one, two
+  // or three bays, on the ground floor and every storey alike) each hold
+  // the split round it, and each alternative's few examples sized it on
+  // their own (a storey band 1.5 times the ground floor's height plus
+  // 2.5 m in one, a fixed 14.5 m in another). A split at the same ordinal
+  // in alternatives of one choice, of one form (axis, parts, which parts
+  // draw, which are shares, the same constants), which no example runs
+  // twice, is one slot: its lengths are pooled into the first's (the
+  // leader), and the others take the leader's sizes. Per occurrence: its
+  // leader (itself where not pooled).
+  std::vector<std::size_t> pool_slots(const Regions& regions, const Region& r, std::vector<SplitLengths>& at,
+                                      std::vector<std::vector<const std::vector<MatchedPart>*>>& rows) const {
+    std::vector<std::size_t> leader_of(at.size());
+    for (std::size_t o = 0; o < at.size(); ++o) leader_of[o] = o;
+    auto form = [&](std::size_t o) {
+      const Split& s = std::get<Split>(g_.op(r.splits[o].split));
+      std::vector<double> key{static_cast<double>(s.axis.literal_axis().value_or(99)),
+                              static_cast<double>(s.parts.size())};
+      for (const SplitPart& p : s.parts) {
+        key.push_back(p.size.relative ? 1 : 0);
+        key.push_back(p.size.value.draws_random() ? std::numeric_limits<double>::infinity()
+                                                  : p.size.value.literal().value_or(-1));
+      }
+      return key;
+    };
+    for (std::size_t o = 0; o < at.size(); ++o) {
+      const Occurrence& occ = r.splits[o];
+      if (occ.tiled || at[o].present == 0 || occ.alternative == Region::kNoRegion) continue;
+      const Region& alt = regions.at(occ.alternative);
+      if (alt.parent == Region::kNoRegion || &alt == &r) continue;
+      for (std::size_t l = 0; l < o; ++l) {
+        if (leader_of[l] != l) continue;
+        const Occurrence& lead = r.splits[l];
+        if (lead.tiled || lead.alternative == occ.alternative || lead.alternative == Region::kNoRegion) continue;
+        const Region& lead_alt = regions.at(lead.alternative);
+        if (lead_alt.parent != alt.parent || lead_alt.choice != alt.choice || lead.ordinal != occ.ordinal) continue;
+        if (form(l) != form(o)) continue;
+        // No example runs both (alternatives of one choice, run once).
+        bool apart = true;
+        for (std::size_t e = 0; e < rows.size() && apart; ++e) apart = !rows[e][o] || !rows[e][l];
+        if (!apart) continue;
+        for (std::size_t e = 0; e < rows.size(); ++e)
+          if (rows[e][o]) rows[e][l] = rows[e][o];
+        for (std::size_t i = 0; i < at[o].length.size(); ++i)
+          for (std::size_t e = 0; e < at[o].length[i].size(); ++e)
+            if (!std::isnan(at[o].length[i][e])) {
+              at[l].length[i][e] = at[o].length[i][e];
+              at[l].value[i][e] = at[o].value[i][e];
+            }
+        at[l].present += at[o].present;
+        at[o].present = 0;
+        for (auto& v : at[o].length) std::ranges::fill(v, kAbsent);
+        for (auto& v : at[o].value) std::ranges::fill(v, kAbsent);
+        leader_of[o] = l;
+        break;
+      }
+    }
+    return leader_of;
+  }
+
   Grammar& g_;
   const JointSizesOptions& opt_;
 };
