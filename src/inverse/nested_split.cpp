@@ -12,21 +12,6 @@ namespace {
 // search, cubic in the parts, is not tried.
 constexpr std::size_t kFewestRows = 3, kMostParts = 32;
 
-// The sizes one split of these rows writes, if it can be written: fixed
-// where plan_sizes fixes every part, else as plan_drawn_sizes draws them.
-// plan_sizes has none when the rows' totals agree: such a run keeps its
-// parts' lengths and is no nesting.
-std::optional<std::vector<PartSizes>> planned(const std::vector<std::vector<double>>& lengths, double tolerance) {
-  const auto base = plan_sizes(lengths, tolerance);
-  if (!base) return std::nullopt;
-  if (std::all_of(base->begin(), base->end(), [](const PartPlan& p) { return p.fixed; })) {
-    std::vector<PartSizes> out;
-    for (const PartPlan& p : *base) out.push_back({p.absolute, true, p.value, {}});
-    return out;
-  }
-  return plan_drawn_sizes(lengths, base, tolerance);
-}
-
 // What the row as one split draws: its drawn plan's draws, else every
 // part plan_sizes leaves unfixed (the split keeps their ranges).
 std::size_t draws_of_whole(const std::vector<std::vector<double>>& lengths, const std::vector<PartPlan>& whole,
@@ -36,19 +21,6 @@ std::size_t draws_of_whole(const std::vector<std::vector<double>>& lengths, cons
 }
 
 }  // namespace
-
-std::size_t draws_of(const std::vector<PartSizes>& sizes) {
-  std::size_t absolute = 0, relative = 0, relative_drawn = 0;
-  for (const PartSizes& p : sizes) {
-    if (p.absolute) {
-      absolute += p.fixed ? 0 : 1;
-    } else {
-      ++relative;
-      relative_drawn += p.fixed ? 0 : 1;
-    }
-  }
-  return absolute + (relative > 0 && relative_drawn == relative ? relative_drawn - 1 : relative_drawn);
-}
 
 std::vector<std::vector<double>> outer_lengths(const std::vector<std::vector<double>>& lengths, NestedRun run) {
   std::vector<std::vector<double>> out;
@@ -89,9 +61,9 @@ std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>&
   for (std::size_t length = 2; length < parts && fewest > 0; ++length) {
     for (std::size_t first = 0; first + length <= parts && fewest > 0; ++first) {
       NestedRun run{first, first + length - 1, {}, {}};
-      auto inner = planned(inner_lengths(lengths, run), tolerance);
+      auto inner = planned_sizes(inner_lengths(lengths, run), tolerance);
       if (!inner || draws_of(*inner) >= fewest) continue;
-      auto outer = planned(outer_lengths(lengths, run), tolerance);
+      auto outer = planned_sizes(outer_lengths(lengths, run), tolerance);
       if (!outer || draws_of(*inner) + draws_of(*outer) >= fewest) continue;
       fewest = draws_of(*inner) + draws_of(*outer);
       run.outer = std::move(*outer);

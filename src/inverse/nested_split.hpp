@@ -14,7 +14,7 @@
 // taken as one part, leaves an outer split and an inner one (the run's
 // own parts) that together draw fewer sizes than the row as one split:
 // each a length in metres, a share in a ratio every row keeps, or drawn
-// (plan_drawn_sizes). The lodges may vary themselves (a second lodge of
+// (planned_sizes, draws_of). The lodges may vary themselves (a second lodge of
 // any width beside the first and the front, kept in their ratio): the
 // front still nests, and only that width is drawn. It is tried only where
 // the row as one split draws a size.
@@ -35,11 +35,6 @@ struct NestedRun {
   std::size_t first = 0, last = 0;
   std::vector<PartSizes> outer, inner;
 };
-
-// How many sizes a split of these sizes draws: each drawn part, but where
-// every relative part is drawn one of them is only the scale of the
-// others' weights (three shares of any proportion are two choices).
-std::size_t draws_of(const std::vector<PartSizes>& sizes);
 
 // The run whose two splits draw the fewest sizes, fewer than `whole`
 // (plan_sizes of the rows) does; the shortest, then the leftmost, of

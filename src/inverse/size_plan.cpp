@@ -336,4 +336,28 @@ std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::ve
   return plan;
 }
 
+std::optional<std::vector<PartSizes>> planned_sizes(const std::vector<std::vector<double>>& lengths, double tolerance) {
+  const auto base = plan_sizes(lengths, tolerance);
+  if (!base) return std::nullopt;
+  if (std::all_of(base->begin(), base->end(), [](const PartPlan& p) { return p.fixed; })) {
+    std::vector<PartSizes> out;
+    for (const PartPlan& p : *base) out.push_back({p.absolute, true, p.value, {}});
+    return out;
+  }
+  return plan_drawn_sizes(lengths, base, tolerance);
+}
+
+std::size_t draws_of(const std::vector<PartSizes>& sizes) {
+  std::size_t absolute = 0, relative = 0, relative_drawn = 0;
+  for (const PartSizes& p : sizes) {
+    if (p.absolute) {
+      absolute += p.fixed ? 0 : 1;
+    } else {
+      ++relative;
+      relative_drawn += p.fixed ? 0 : 1;
+    }
+  }
+  return absolute + (relative > 0 && relative_drawn == relative ? relative_drawn - 1 : relative_drawn);
+}
+
 }  // namespace vern

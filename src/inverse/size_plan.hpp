@@ -67,4 +67,15 @@ std::optional<std::vector<PartSizes>> plan_drawn_sizes(const std::vector<std::ve
                                                        const std::optional<std::vector<PartPlan>>& base,
                                                        double tolerance);
 
+// The sizes one split of these rows writes, if it can be written: fixed
+// where plan_sizes fixes every part, else as plan_drawn_sizes draws them.
+// None where plan_sizes has none (the rows' totals agree: their parts keep
+// their lengths) or plan_drawn_sizes finds no plan that holds.
+std::optional<std::vector<PartSizes>> planned_sizes(const std::vector<std::vector<double>>& lengths, double tolerance);
+
+// How many sizes a split of these sizes draws: each drawn part, but where
+// every relative part is drawn one of them is only the scale of the
+// others' weights (three shares of any proportion are two choices).
+std::size_t draws_of(const std::vector<PartSizes>& sizes);
+
 }  // namespace vern
