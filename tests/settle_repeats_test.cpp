@@ -141,5 +141,30 @@ TEST(SettleRepeats, RepeatsOfTheSameTilesShareOneTileSize) {
   EXPECT_EQ(tiles[2], 3.6);
 }
 
+TEST(SettleRepeats, CountsThatDoNotFollowTheLengthsAreDrawnAsCounts) {
+  // A street of three to six equal houses on plots 30 to 60 m wide, the
+  // count drawn apart from the width (a recursion, row(n)): no tile size
+  // gives the counts, and a range of tile sizes would draw two to eleven
+  // houses on those widths. As many as the examples had, whatever the
+  // width: repeatN(x, randint(3, 6)).
+  Grammar g;
+  const NodeId row = test::example_graphs(g, {"repeat(x, rand(5.6, 18.4)){ I(house) }"})[0];
+  const std::vector<TileSeen> seen{{3, 52.1}, {6, 33.4}, {4, 58.0}, {5, 31.2}, {3, 36.8},
+                                   {6, 55.3}, {4, 41.9}, {5, 47.5}, {3, 44.0}, {6, 39.7}};
+  const TileCounts counts{{row, seen}};
+  SampleBook book;
+  const NodeId out = settle_repeats(g, row, counts, book, 1e-6);
+  const auto* street = std::get_if<RepeatN>(&g.op(out));
+  ASSERT_NE(street, nullptr);
+  EXPECT_EQ(street->count, Expr::call(Function::RandInt, {Expr::number(3), Expr::number(6)}));
+  // Counts that grow with the length, from a tile of 3 to 4 m, stay tiles.
+  Grammar h;
+  const NodeId storeys = test::example_graphs(h, {"repeat(z, rand(3, 4)){ I(storey) }"})[0];
+  const std::vector<TileSeen> grown{{3, 10.5}, {4, 13.0}, {6, 20.1}, {8, 27.5}, {10, 33.0},
+                                    {5, 17.8}, {7, 24.2}, {9, 30.9}, {11, 38.1}, {4, 14.9}};
+  const NodeId settled = settle_repeats(h, storeys, {{storeys, grown}}, book, 1e-6);
+  EXPECT_TRUE(std::holds_alternative<Repeat>(h.op(settled)));
+}
+
 }  // namespace
 }  // namespace vern

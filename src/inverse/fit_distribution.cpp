@@ -308,4 +308,15 @@ Distribution short_decimals(Distribution d, double tolerance) {
   return d;
 }
 
+Expr count_expr(std::vector<double> counts) {
+  std::sort(counts.begin(), counts.end());
+  counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
+  if (counts.size() == 1) return Expr::number(counts[0]);
+  if (counts.back() - counts.front() + 1 == static_cast<double>(counts.size()))
+    return Expr::call(Function::RandInt, {Expr::number(counts.front()), Expr::number(counts.back())});
+  std::vector<Expr> seen;
+  for (double c : counts) seen.push_back(Expr::number(c));
+  return Expr::call(Function::Choice, std::move(seen));
+}
+
 }  // namespace vern

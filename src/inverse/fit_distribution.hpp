@@ -79,6 +79,12 @@ std::optional<std::vector<double>> even_row(const std::vector<double>& values, d
 // size seen. observations must not be empty.
 Distribution fit_size(const std::vector<Observation>& sizes, double resolution, bool uniform_only);
 
+// A count drawn as the counts seen say (tiers of a recursion, tiles of a
+// row whose count does not follow its length): randint(lo, hi) where they
+// run without a gap (the counts between are as likely as those seen),
+// else choice(...) of them, or the one count. counts must not be empty.
+Expr count_expr(std::vector<double> counts);
+
 // The distribution as the grammar writes it: a literal, choice(...),
 // rand(lo, hi) or tnormal(mu, sigma, lo, hi).
 Expr distribution_expr(const Distribution& d);

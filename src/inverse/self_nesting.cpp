@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "graph/structural.hpp"
+#include "inverse/fit_distribution.hpp"
 #include "inverse/levels_left.hpp"
 #include "inverse/merge.hpp"
 #include "inverse/substitute.hpp"
@@ -332,21 +333,12 @@ class Nester {
   }
 
   // How many levels a counted recursion is called with, wherever it is
-  // called: the counts its chains showed, as randint(lo, hi) where they
-  // run without a gap (the counts between are as likely as those seen),
-  // else choice(...) of them, or the one count.
+  // called: the counts its chains showed (count_expr).
   Expr count_drawn(const std::vector<std::size_t>& group) const {
     std::vector<double> counts;
     for (std::size_t key : group)
       for (const auto& [top, k] : occurrences_[key]) counts.push_back(static_cast<double>(k));
-    std::sort(counts.begin(), counts.end());
-    counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
-    if (counts.size() == 1) return Expr::number(counts[0]);
-    if (counts.back() - counts.front() + 1 == static_cast<double>(counts.size()))
-      return Expr::call(Function::RandInt, {Expr::number(counts.front()), Expr::number(counts.back())});
-    std::vector<Expr> seen;
-    for (double c : counts) seen.push_back(Expr::number(c));
-    return Expr::call(Function::Choice, std::move(seen));
+    return count_expr(std::move(counts));
   }
 
   // A recursive rule made for a key: called nest(k) for a chain of k
