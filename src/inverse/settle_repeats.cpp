@@ -73,31 +73,42 @@ std::vector<std::uint64_t> made_of(const Grammar& g, const Repeat& r) {
 // size; alike in size, each is settled as it is.
 std::unordered_map<NodeId, double> pooled_tiles(const Grammar& g, NodeId root, const TileCounts& tile_counts,
                                                 double tolerance) {
+  // The repeats below root whose counts are known, by axis and kind of
+  // length first: what they are made of is looked at only where such a
+  // group differs in size (each look walks a repeat's subgraph).
   const TileLengths kinds(g, root);
-  std::map<std::vector<std::uint64_t>, std::vector<NodeId>> pools;
-  for (const auto& [id, seen] : tile_counts) {
-    if (id >= g.node_count() || seen.empty()) continue;
+  std::map<std::pair<std::uint64_t, std::size_t>, std::vector<NodeId>> coarse;
+  for (const NodeId id : nodes_below(g, root)) {
     const auto* r = std::get_if<Repeat>(&g.op(id));
     if (!r || !literal_range(r->size)) continue;
-    std::vector<std::uint64_t> key = made_of(g, *r);
-    key.push_back(kinds.kind(*r));
-    pools[std::move(key)].push_back(id);
+    const auto known = tile_counts.find(id);
+    if (known == tile_counts.end() || known->second.empty()) continue;
+    coarse[{r->axis.literal_axis().value_or(99), kinds.kind(*r)}].push_back(id);
   }
   std::unordered_map<NodeId, double> out;
-  for (auto& [key, members] : pools) {
-    if (members.size() < 2) continue;
-    const Expr& first = std::get<Repeat>(g.op(members[0])).size;
-    if (std::all_of(members.begin(), members.end(), [&](NodeId id) { return std::get<Repeat>(g.op(id)).size == first; }))
+  for (auto& [axis_and_kind, candidates] : coarse) {
+    if (candidates.size() < 2) continue;
+    const Expr& first = std::get<Repeat>(g.op(candidates[0])).size;
+    if (std::all_of(candidates.begin(), candidates.end(),
+                    [&](NodeId id) { return std::get<Repeat>(g.op(id)).size == first; }))
       continue;
-    std::sort(members.begin(), members.end());  // tile_counts is unordered: one order, one result
-    std::vector<TileSeen> all;
-    for (NodeId id : members) {
-      const auto& seen = tile_counts.at(id);
-      all.insert(all.end(), seen.begin(), seen.end());
+    std::map<std::vector<std::uint64_t>, std::vector<NodeId>> pools;
+    for (const NodeId id : candidates) pools[made_of(g, std::get<Repeat>(g.op(id)))].push_back(id);
+    for (auto& [key, members] : pools) {
+      if (members.size() < 2) continue;
+      const Expr& size = std::get<Repeat>(g.op(members[0])).size;
+      if (std::all_of(members.begin(), members.end(),
+                      [&](NodeId id) { return std::get<Repeat>(g.op(id)).size == size; }))
+        continue;
+      std::vector<TileSeen> all;
+      for (NodeId id : members) {
+        const auto& seen = tile_counts.at(id);
+        all.insert(all.end(), seen.begin(), seen.end());
+      }
+      const auto one = common_tile(all, tolerance);
+      if (!one) continue;
+      for (NodeId id : members) out[id] = *one;
     }
-    const auto one = common_tile(all, tolerance);
-    if (!one) continue;
-    for (NodeId id : members) out[id] = *one;
   }
   return out;
 }
