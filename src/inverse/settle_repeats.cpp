@@ -85,21 +85,20 @@ std::unordered_map<NodeId, double> pooled_tiles(const Grammar& g, NodeId root, c
     if (known == tile_counts.end() || known->second.empty()) continue;
     coarse[{r->axis.literal_axis().value_or(99), kinds.kind(*r)}].push_back(id);
   }
+  // Two or more repeats, not all of one size: a pool to settle.
+  auto differ = [&](const std::vector<NodeId>& members) {
+    if (members.size() < 2) return false;
+    const Expr& first = std::get<Repeat>(g.op(members[0])).size;
+    return std::any_of(members.begin(), members.end(),
+                       [&](NodeId id) { return !(std::get<Repeat>(g.op(id)).size == first); });
+  };
   std::unordered_map<NodeId, double> out;
   for (auto& [axis_and_kind, candidates] : coarse) {
-    if (candidates.size() < 2) continue;
-    const Expr& first = std::get<Repeat>(g.op(candidates[0])).size;
-    if (std::all_of(candidates.begin(), candidates.end(),
-                    [&](NodeId id) { return std::get<Repeat>(g.op(id)).size == first; }))
-      continue;
+    if (!differ(candidates)) continue;
     std::map<std::vector<std::uint64_t>, std::vector<NodeId>> pools;
     for (const NodeId id : candidates) pools[made_of(g, std::get<Repeat>(g.op(id)))].push_back(id);
     for (auto& [key, members] : pools) {
-      if (members.size() < 2) continue;
-      const Expr& size = std::get<Repeat>(g.op(members[0])).size;
-      if (std::all_of(members.begin(), members.end(),
-                      [&](NodeId id) { return std::get<Repeat>(g.op(id)).size == size; }))
-        continue;
+      if (!differ(members)) continue;
       std::vector<TileSeen> all;
       for (NodeId id : members) {
         const auto& seen = tile_counts.at(id);
