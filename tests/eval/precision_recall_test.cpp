@@ -142,6 +142,12 @@ TEST(PrecisionRecall, HousesSteppingDownASlopeStepDown) {
   EXPECT_GE(precision_of("stepped_terrace", 10), 0.9);
 }
 
+TEST(PrecisionRecall, AStreetOfEqualHousesKeepsItsCount) {
+  // Three to six houses whatever the width: repeatN(x, randint(3, 6)), not
+  // a range of house widths that draws two to eleven.
+  EXPECT_GE(precision_of("equal_street", 10), 0.9);
+}
+
 // Issue 15's targets on the whole corpus: mean precision and recall of at
 // least 0.9 from 30 examples and 0.75 from 10, no style below 0.5 from 30,
 // precision on plots 1.5 times as wide within 0.1 of it, every example
