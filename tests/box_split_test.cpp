@@ -183,6 +183,23 @@ TEST(BoxSplit, AYardAcrossComesBeforeCutsThatOnlyHappenToLineUp) {
   EXPECT_EQ(leaves(t.children[2]), (std::vector<std::uint32_t>{4, 5, 6, 7}));
 }
 
+TEST(BoxSplit, AnLPlansFrontIsCutOffBeforeCutsThroughItsYard) {
+  // An L: a front of four 3 m bays right across (y 0 to 6), a wing behind
+  // it on the left (x 0 to 5, y 6 to 15) and empty space beside the wing.
+  // Along x the front's bay boundaries at 6 and 9 are clean cuts too, the
+  // yard behind them empty, but only because the bays fall beside the
+  // wing's edge (another example's would not): the front's face, met by
+  // parts right across, is cut first, and the front and the back are each
+  // cut on their own.
+  std::vector<LabelledBox> boxes;
+  for (int bay = 0; bay < 4; ++bay) boxes.push_back(part("bay", {3.0 * bay, 0, 0}, {3.0 * bay + 3, 6, 8}));
+  boxes.push_back(part("wing", {0, 6, 0}, {5, 15, 6}));
+  const SplitTree t = split(test::numbered(boxes));
+  ASSERT_TRUE(cut_along(t, 1, 2));
+  ASSERT_TRUE(cut_along(t.children[0], 0, 4));
+  EXPECT_EQ(leaves(t.children[0]), (std::vector<std::uint32_t>{0, 1, 2, 3}));
+}
+
 TEST(BoxSplit, ASinglePartIsALeaf) {
   const SplitTree t = split({part("roof", {1, 2, 3}, {4, 6, 8})});
   EXPECT_EQ(t.kind, Kind::Leaf);

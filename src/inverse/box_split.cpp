@@ -353,6 +353,7 @@ class Splitter {
           return;
         }
         if (a != 2 && !interior_gap() && cut_at_gaps_across(w, i)) return;
+        if (a != 2 && cut_along_faces_across(w, i)) return;
         if (a == 2 && narrowing_stack(w)) {
           cut_along(w, a, Peel::Upper);
           return;
@@ -493,6 +494,67 @@ class Splitter {
       }
     }
     find_pieces(w, w.axes[static_cast<std::size_t>(i)]);
+    return false;
+  }
+
+  // Is every cut of the last sweep along a met by parts along the whole
+  // container on the other horizontal axis b, from one side at least? A
+  // cut along a building's face is; one that runs through open air for
+  // part of its length (between two bays of a front, across the empty
+  // yard behind it) is there only because bays happened to line up with
+  // the yard's edge. Leaves pieces_ as they are.
+  bool cuts_along_faces(const Work& w, int a, int b) {
+    const auto ax = static_cast<std::size_t>(a), bx = static_cast<std::size_t>(b);
+    const std::size_t cuts = pieces_.size() - 1;
+    // Per cut and side (0: the piece before it, 1: the one after), the
+    // intervals along b of the boxes that end or start at the cut.
+    auto& faces = cut_faces_;
+    if (faces.size() < cuts) faces.resize(cuts);
+    for (std::size_t c = 0; c < cuts; ++c)
+      for (auto& side : faces[c]) side.clear();
+    const Event* events = events_[ax].data();
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const Event e = events[i];
+      const std::uint32_t box = e >> 1;
+      const std::uint32_t piece = target_[span_of_[box]];
+      const std::pair<Rank, Rank> along_b{lo_[bx][box], hi_[bx][box]};
+      if ((e & 1u) != 0) {
+        if (piece < cuts && hi_[ax][box] == pieces_[piece].hi) faces[piece][0].push_back(along_b);
+      } else if (piece > 0 && lo_[ax][box] == pieces_[piece].lo) {
+        faces[piece - 1][1].push_back(along_b);
+      }
+    }
+    auto covers = [&](std::vector<std::pair<Rank, Rank>>& intervals) {
+      std::sort(intervals.begin(), intervals.end());
+      Rank reached = w.lo[bx];
+      for (const auto& [lo, hi] : intervals) {
+        if (lo > reached) return false;
+        reached = std::max(reached, hi);
+      }
+      return reached >= w.hi[bx];
+    };
+    for (std::size_t c = 0; c < cuts; ++c)
+      if (!covers(faces[c][0]) && !covers(faces[c][1])) return false;
+    return true;
+  }
+
+  // The first horizontal axis's cuts are not all along faces, and the
+  // other horizontal axis, still to be tried, divides the container with
+  // cuts that all are (a front across an L plan's plot, its wing behind
+  // beside empty space): the container is cut there first. Leaves
+  // pieces_ as find_pieces(w, axes[i]) found them when it does not cut.
+  bool cut_along_faces_across(const Work& w, int i) {
+    const int a = w.axes[static_cast<std::size_t>(i)];
+    const int b = 1 - a;
+    bool later = false;
+    for (int j = i + 1; j < w.tries; ++j) later = later || w.axes[static_cast<std::size_t>(j)] == b;
+    if (!later || w.lo[static_cast<std::size_t>(b)] == w.hi[static_cast<std::size_t>(b)]) return false;
+    if (cuts_along_faces(w, a, b)) return false;
+    if (find_pieces(w, b) && pieces_.size() > 1 && cuts_along_faces(w, b, a)) {
+      cut_along(w, b);
+      return true;
+    }
+    find_pieces(w, a);
     return false;
   }
 
@@ -907,6 +969,7 @@ class Splitter {
   std::vector<std::uint32_t> span_of_;        // per box: its piece in the current sweep
   std::vector<double> fill_;                  // storeys_first's piece fills (reused)
   std::vector<std::uint64_t> faces_;          // cuts_line_up_by_chance's (piece, rank) pairs (reused)
+  std::vector<std::array<std::vector<std::pair<Rank, Rank>>, 2>> cut_faces_;  // cuts_along_faces's (reused)
   std::vector<Work> stack_;                   // containers still to cut
   std::vector<std::vector<std::uint32_t>> groups_;  // unsplittable containers' boxes
   std::vector<std::pair<std::uint32_t, std::uint32_t>>* overlaps_ = nullptr;  // collect_overlaps
