@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <functional>
 #include <set>
+#include <string>
 
 #include "forward/derive.hpp"
 #include "graph/parser.hpp"
@@ -79,6 +80,16 @@ std::size_t recursions(const Grammar& g) {
     if (!supported) return ::testing::AssertionFailure() << test::describe(b) << " stands on no tier that holds it";
   }
   return ::testing::AssertionSuccess();
+}
+
+// The rules of a tower of set-in tiers: name(n) a tier of `drum` under
+// the rest, set in by `margin` on x and y, down to `last` (a
+// pagoda's, written as the styles that found these cases write it).
+std::string set_in_tiers(const std::string& name, const std::string& drum, const std::string& margin,
+                         const std::string& last) {
+  const std::string m = margin + " : nil";
+  return name + "(n) : n > 1 --> split(z){ ~1 : I(" + drum + ") | ~(n - 1) : split(x){ " + m + " | ~1 : split(y){ " +
+         m + " | ~1 : " + name + "(n - 1) | " + m + " } | " + m + " } }\n" + name + "(n) : n <= 1 --> " + last + "\n";
 }
 
 class TieredTowers : public ::testing::Test {
@@ -163,9 +174,7 @@ TEST(SelfNesting, APagodaKeepsEachTiersShareOfWhatIsLeft) {
 @start site
 @scope rand(20, 30), rand(14, 18), rand(20, 30)
 site --> setback(randint(2, 6))
-setback(n) : n > 1 --> split(z){ ~1 : I(drum) | ~(n - 1) : split(x){ 0.7 : nil | ~1 : split(y){ 0.7 : nil | ~1 : setback(n - 1) | 0.7 : nil } | 0.7 : nil } }
-setback(n) : n <= 1 --> I(roof)
-)", "pagoda.grm");
+)" + set_in_tiers("setback", "drum", "0.7", "I(roof)"), "pagoda.grm");
   const Inference inferred = infer(test::derived_examples(source, 10), {});
   EXPECT_GE(recursions(inferred.grammar), 1u) << write_grammar(inferred.grammar);
   EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130));
@@ -186,10 +195,8 @@ TEST(SelfNesting, SplitsAboveTheTiersStillSizeFromTheirExamples) {
 lot --> split(x){ ~2.5 : front | ~1.3 : side }
 front --> split(x){ 0.6 : I(pilaster) | ~1 : body | 0.6 : I(pilaster) }
 body --> split(z){ 4 : I(shop) | ~1 : tiers(randint(2, 3)) }
-tiers(n) : n > 1 --> split(z){ ~1 : I(stage) | ~(n - 1) : split(x){ 1.2 : nil | ~1 : split(y){ 1.2 : nil | ~1 : tiers(n - 1) | 1.2 : nil } | 1.2 : nil } }
-tiers(n) : n <= 1 --> I(roof)
 side --> split(z){ ~1.8 : I(wall) | ~1 : I(hip) }
-)", "front.grm");
+)" + set_in_tiers("tiers", "stage", "1.2", "I(roof)"), "front.grm");
   const Inference inferred = infer(test::derived_examples(source, 10), {});
   EXPECT_GE(recursions(inferred.grammar), 1u) << write_grammar(inferred.grammar);
   EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130));
@@ -205,12 +212,10 @@ TEST(SelfNesting, TiersEndingInDifferentCapsAreOneRecursion) {
 @start site
 @scope rand(20, 30), rand(14, 18), rand(12, 20)
 site --> stack(randint(2, 5))
-stack(n) : n > 1 --> split(z){ ~1 : I(stage) | ~(n - 1) : split(x){ 1.3 : nil | ~1 : split(y){ 1.3 : nil | ~1 : stack(n - 1) | 1.3 : nil } | 1.3 : nil } }
-stack(n) : n <= 1 --> cap
 cap --> I(roof) : 3
 cap --> I(hip) : 2
 cap --> I(pyramid) : 1
-)", "caps.grm");
+)" + set_in_tiers("stack", "stage", "1.3", "cap"), "caps.grm");
   const Inference inferred = infer(test::derived_examples(source, 30), {});
   EXPECT_EQ(recursions(inferred.grammar), 1u) << write_grammar(inferred.grammar);
   EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130));
@@ -233,11 +238,9 @@ arcade --> repeat(x, 4){ shop }
 shop --> split(x){ 0.3 : I(column) | ~1 : I(glass) | 0.3 : I(column) }
 level --> repeat(x, 3.2){ bay }
 bay --> split(x){ ~1 : I(render) | tnormal(1.08, 0.04, 1, 1.15) : split(x){ ~1 : I(glazing) | ~0.4 : I(render) | ~1 : I(glazing) } | ~1 : I(render) }
-stack(n) : n > 1 --> split(z){ ~1 : I(tier) | ~(n - 1) : split(x){ 1.4 : nil | ~1 : split(y){ 1.4 : nil | ~1 : stack(n - 1) | 1.4 : nil } | 1.4 : nil } }
-stack(n) : n <= 1 --> I(roof)
 shed(h) --> split(z){ h : repeat(x, 4.3){ shedBay } | ~1 : I(roof) }
 shedBay --> split(x){ ~1 : I(render) | 1.3 : I(glazing) | ~1 : I(render) }
-)", "ensemble.grm");
+)" + set_in_tiers("stack", "tier", "1.4", "I(roof)"), "ensemble.grm");
   const Inference inferred = infer(test::derived_examples(source, 30), {});
   EXPECT_EQ(recursions(inferred.grammar), 1u) << write_grammar(inferred.grammar);
 }

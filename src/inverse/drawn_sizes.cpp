@@ -86,10 +86,9 @@ std::unordered_map<NodeId, SiblingPlan> sibling_plans(const Grammar& g, NodeId r
   std::unordered_map<NodeId, SiblingPlan> out;
   // Members seen at two lengths at least: an alternative seen once is
   // alternative_lengths.hpp's, read across its siblings' lengths there.
-  auto rows_of = [&](NodeId id) -> std::optional<std::vector<LengthRow>> {
+  auto rows_of = [&](NodeId id) -> const std::vector<LengthRow>* {
     const auto it = rows.find(id);
-    if (it == rows.end() || it->second.size() < 2) return std::nullopt;
-    return it->second;
+    return it == rows.end() || it->second.size() < 2 ? nullptr : &it->second;
   };
   for (const NodeId id : nodes_below(g, root)) {
     const auto* choose = std::get_if<Choose>(&g.op(id));
@@ -108,8 +107,8 @@ std::unordered_map<NodeId, SiblingPlan> sibling_plans(const Grammar& g, NodeId r
       std::size_t most = 0;
       bool known = true, planned_alone = false;
       for (const NodeId m : members) {
-        auto r = rows_of(m);
-        if (!r || r->front().lengths.size() != shape.second) {
+        const std::vector<LengthRow>* r = rows_of(m);
+        if (r->front().lengths.size() != shape.second) {
           known = false;
           break;
         }
@@ -120,7 +119,7 @@ std::unordered_map<NodeId, SiblingPlan> sibling_plans(const Grammar& g, NodeId r
           planned_alone = true;
         }
         all.insert(all.end(), own.begin(), own.end());
-        member_rows.push_back(std::move(*r));
+        member_rows.push_back(*r);
       }
       if (!known || !planned_alone) continue;
       const auto together = planned_sizes(all, tolerance);

@@ -762,6 +762,8 @@ class Joiner {
       }
       return key;
     };
+    std::vector<std::vector<double>> forms;
+    for (std::size_t o = 0; o < at.size(); ++o) forms.push_back(form(o));
     for (std::size_t o = 0; o < at.size(); ++o) {
       const Occurrence& occ = r.splits[o];
       if (occ.tiled || at[o].present == 0 || occ.alternative == Region::kNoRegion) continue;
@@ -773,7 +775,7 @@ class Joiner {
         if (lead.tiled || lead.alternative == occ.alternative || lead.alternative == Region::kNoRegion) continue;
         const Region& lead_alt = regions.at(lead.alternative);
         if (lead_alt.parent != alt.parent || lead_alt.choice != alt.choice || lead.ordinal != occ.ordinal) continue;
-        if (form(l) != form(o)) continue;
+        if (forms[l] != forms[o]) continue;
         // No example runs both (alternatives of one choice, run once).
         bool apart = true;
         for (std::size_t e = 0; e < rows.size() && apart; ++e) apart = !rows[e][o] || !rows[e][l];
