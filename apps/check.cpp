@@ -5,14 +5,10 @@
 #include <optional>
 #include <string>
 
-#include "graph/atomic_file.hpp"
-#include "graph/number_format.hpp"
-#include "graph/out_of_memory.hpp"
 #include "graph/parser.hpp"
 #include "inverse/check.hpp"
 #include "inverse/example.hpp"
-#include "inverse/layered_parts.hpp"
-#include "inverse/snapped_coordinates.hpp"
+#include "inverse/example_verdict.hpp"
 #include "support/command_line.hpp"
 #include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
@@ -90,59 +86,11 @@ int run(int argc, char** argv) {
   const Grammar grammar = read_grammar_file(args.positional[0]);
   const std::vector<fs::path> files =
       example_files(std::vector<std::string>(args.positional.begin() + 1, args.positional.end()));
-  // One example's verdict, `taken` being the example as read or its
-  // coordinates snapped to the noise level (layered_parts.hpp: parts set
-  // into parts, or painted over one another, each keep what is visible of
-  // them, as infer takes them).
-  auto verdict = [&](const Example& loaded, const Example& taken) {
-    const std::string& file = loaded.source;
-    // Snapped (snapped_coordinates.hpp), coordinates apart are places
-    // apart, cut within float noise; sizes fit within the noise level.
-    const bool snap = taken.snapped > 0;
-    const Example example = visible_parts(taken, Layering{stack, default_tolerance(loaded)});
-    std::vector<LabelledBox> boxes = example.boxes;
-    for (auto& b : boxes) {
-      b.min -= example.min;
-      b.max -= example.min;
-    }
-    // As read, within its float noise (from where the file put it, before
-    // it was moved to the origin), as infer took it without a level.
-    CheckOptions own = options;
-    own.tolerance = snap ? options.tolerance : default_tolerance(loaded);
-    if (snap) own.cut_tolerance = default_tolerance(loaded);
-    try {
-      return naming_out_of_memory(file, "while checking this example", "check it alone, or lower --max-steps", [&] {
-        return check_example(grammar, boxes, scope.value_or(example_size(example)), own);
-      });
-    } catch (const Error& e) {
-      if (e.kind() != ErrorKind::Limit && e.kind() != ErrorKind::Input) throw;
-      throw Error(e.kind(), naming_input(e.what(), file));
-    }
-  };
   std::size_t fits = 0, examples = 0;
   auto check_one = [&](const Example& loaded) {
     ++examples;
     const std::string& file = loaded.source;
-    // Given a noise level (--tolerance), the example is taken as infer
-    // takes it, snapped; a grammar infer made from it as read (where the
-    // snapped coordinates gave none) derives it as read.
-    const std::optional<Example> snapped =
-        options.tolerance > 0 ? std::optional<Example>(snapped_coordinates(loaded, options.tolerance)) : std::nullopt;
-    CheckResult r = verdict(loaded, snapped ? *snapped : loaded);
-    const bool derived_snapped = snapped && r.derivable;
-    if (snapped && !r.derivable) {
-      CheckResult as_read = verdict(loaded, loaded);
-      if (as_read.derivable) r = std::move(as_read);
-    }
-    if (derived_snapped) {
-      const double moved = largest_move(loaded, *snapped);
-      char text[32];
-      std::snprintf(text, sizeof text, "%.3g", moved);
-      if (moved > 0)
-        r.witness.insert(r.witness.begin(), "coordinates moved by up to " + std::string(text) +
-                                                " m onto places within the noise level " +
-                                                format_number(options.tolerance) + " m");
-    }
+    const CheckResult r = example_verdict(grammar, loaded, stack, scope, options);
     if (r.derivable) {
       ++fits;
       std::cout << file << ": derivable\n";

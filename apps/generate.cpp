@@ -22,7 +22,7 @@
 #include "support/command_line.hpp"
 #include "support/guarded_main.hpp"
 #include "support/output_paths.hpp"
-#include "support/primitive_sources.hpp"
+#include "forward/primitive_sources.hpp"
 
 namespace fs = std::filesystem;
 using namespace vern;

@@ -9,9 +9,7 @@
 #include <optional>
 
 #include "forward/obj_writer.hpp"
-#include "forward/variants.hpp"
 #include "graph/alongside.hpp"
-#include "graph/atomic_file.hpp"
 #include "graph/description_length.hpp"
 #include "graph/files_read.hpp"
 #include "graph/folder_confinement.hpp"
@@ -20,6 +18,7 @@
 #include "graph/reserved_words.hpp"
 #include "graph/writer.hpp"
 #include "inverse/infer.hpp"
+#include "inverse/inferred_files.hpp"
 #include "inverse/test_buildings.hpp"
 #include "support/command_line.hpp"
 #include "support/example_options.hpp"
@@ -74,24 +73,6 @@ CommandLine make_command_line() {
   throw Error(ErrorKind::Usage, "infer: error: " + message + (hint.empty() ? "" : "\n  hint: " + hint));
 }
 
-// A label the written grammar can hold: a name, not an operation word.
-bool is_rule_name(const std::string& s) {
-  auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
-  if (s.empty() || !letter(s[0]) || is_operation_word(s)) return false;
-  for (char c : s)
-    if (!letter(c) && !(c >= '0' && c <= '9')) return false;
-  return true;
-}
-
-// A path for the grammar to name: relative to the grammar's folder when
-// possible, so the two files can move together.
-std::string path_from(const fs::path& grammar, const fs::path& file) {
-  std::error_code ec;
-  const fs::path base = fs::absolute(grammar, ec).parent_path();
-  const fs::path rel = fs::relative(fs::absolute(file, ec), base, ec);
-  return (ec || rel.empty()) ? fs::absolute(file, ec).string() : rel.generic_string();
-}
-
 int run(int argc, char** argv) {
   const CommandLine cl = make_command_line();
   const ParsedCommandLine args = cl.parse(argc, argv);
@@ -104,7 +85,7 @@ int run(int argc, char** argv) {
   const bool quiet = args.has("--quiet");
   const fs::path output = args.value("--output");
   const fs::path prims = args.has("--primitives-out") ? fs::path(args.value("--primitives-out"))
-                                                      : fs::path(output).replace_extension(".prims.obj");
+                                                      : meshes_path_for(output);
   if (prims.extension() != ".obj")
     usage("--primitives-out must name an .obj file, got " + prims.string(), "for example --primitives-out style.prims.obj");
   InferOptions options;
@@ -122,7 +103,7 @@ int run(int argc, char** argv) {
     options.twin_rules = CommandLine::one_of(args, "--twins", {"joined", "apart"}) == "joined";
   if (args.has("--start")) {
     options.start = args.value("--start");
-    if (!is_rule_name(options.start))
+    if (!is_rule_label(options.start))
       usage("--start '" + options.start + "' cannot be a rule label",
             "a label is a letter or '_' followed by letters, digits and '_', and not an operation word such as split");
   }
@@ -217,30 +198,8 @@ int run(int argc, char** argv) {
   if (!quiet)
     for (const std::string& w : test_warnings) std::fprintf(stderr, "%s\n", w.c_str());
 
-  // The parts' meshes: one object per label, each filling the unit box.
-  Scene meshes;
-  Variant all;
-  all.name = "primitives";
-  for (const auto& name : result.primitives.names()) {
-    Terminal t;
-    t.label = static_cast<LabelId>(meshes.labels.size());
-    meshes.labels.push_back(name);
-    all.terminals.push_back(t);
-  }
-  meshes.variants.push_back(std::move(all));
-
-  const std::string header = "# Inferred by Vernacular's infer from " + std::to_string(example_count) + " example" +
-                             (example_count == 1 ? "" : "s") + " (tolerance " + std::to_string(result.tolerance) +
-                             " m).\n# Regenerate buildings with: generate " + output.filename().string() +
-                             " -n 10 -o out/\n";
-  // The meshes, their materials and the grammar are replaced together, or
-  // (a full disk at the grammar) none of them.
-  OutputFiles outputs;
-  write_obj(meshes, result.primitives, prims, outputs);
-  // Two pieces: the grammar's text (124 MB at a million parts) is not copied.
-  const std::string_view text[] = {header, grammar_text};
-  outputs.stage(output, text);
-  outputs.commit();
+  const std::string header = inferred_header(example_count, result.tolerance, output);
+  write_inferred(result.primitives, header, grammar_text, output, prims);
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!quiet) {

@@ -5,9 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "inverse/building_angle.hpp"
 #include "inverse/example.hpp"
-#include "inverse/scene_buildings.hpp"
+#include "inverse/examples_of_files.hpp"
 #include "support/command_line.hpp"
 
 namespace vern {
@@ -26,14 +25,6 @@ std::vector<std::string> stack_order(const ParsedCommandLine& args);
 // --buildings: how a file of several buildings is divided (apart when not
 // given).
 BuildingsMode buildings_mode(const ParsedCommandLine& args);
-
-// The examples of the loaded `files` once each is divided as `mode` says
-// (scene_buildings.hpp), in order, each building standing at an angle
-// turned back (building_angle.hpp); each file's tolerance as
-// example_tolerance(file, tolerance) gives it. A note for each file
-// divided and each building turned back goes to `notes`.
-std::vector<Example> examples_of_files(std::vector<Example> files, BuildingsMode mode, double tolerance,
-                                       std::vector<std::string>& notes);
 
 // The notes on stderr, each "PROGRAM: note...": the first three, then how
 // many more (ten files of one city say the same thing).

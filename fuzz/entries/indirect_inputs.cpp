@@ -21,7 +21,7 @@
 #include "folder_tree.hpp"
 #include "graph/parser.hpp"
 #include "scratch_file.hpp"
-#include "support/primitive_sources.hpp"
+#include "forward/primitive_sources.hpp"
 #include "verdict.hpp"
 
 namespace vern::fuzz {

@@ -6,7 +6,7 @@
 // reach a message or an output. So a path a file names is followed only when
 // it stays in that file's folder or below it: no absolute path, no `..`, and
 // no link on the way that leads out. `--allow-outside-files` lifts this
-// (inverse/gltf_files.hpp, apps/support/primitive_sources.hpp).
+// (inverse/gltf_files.hpp, forward/primitive_sources.hpp).
 #pragma once
 
 #include <filesystem>

@@ -11,8 +11,10 @@ namespace vern {
 namespace {
 
 // One example at its origin; an example that needs more steps than the
-// check allows is not derivable as far as a step knows, unless
-// `limits_throw`: then the limit is the answer, the example named.
+// check allows, or that the grammar cannot derive whatever it draws, is
+// not derivable as far as a step knows, unless `limits_throw`: then the
+// limit is the answer, the example named. A bug (Internal) is never an
+// answer: it goes on to the user.
 // Checked in a learned order, an example that fails is asked again in the
 // written one, so the answer is never "no" where the written order says "yes".
 CheckResult check_placed(const Grammar& g, const Example& placed, const CheckOptions& check,
@@ -23,6 +25,7 @@ CheckResult check_placed(const Grammar& g, const Example& placed, const CheckOpt
     try {
       return check_example(g, placed.boxes, example_size(placed), options);
     } catch (const Error& e) {
+      if (e.kind() == ErrorKind::Internal) throw;
       if (limits_throw && e.kind() == ErrorKind::Limit) throw Error(e.kind(), naming_input(e.what(), placed.source));
       return CheckResult{};
     }

@@ -1,4 +1,4 @@
-#include "support/primitive_sources.hpp"
+#include "forward/primitive_sources.hpp"
 
 #include <string>
 

@@ -1,0 +1,24 @@
+// check: the checker's verdict on an example behind the public API.
+#include "vernacular/check.hpp"
+
+#include "api/api_data.hpp"
+#include "inverse/example_verdict.hpp"
+
+namespace vernacular {
+
+Verdict check(const Grammar& grammar, const Example& example, const CheckOptions& options) {
+  return detail::guarded([&] {
+    vern::CheckOptions o;
+    o.tolerance = options.tolerance;
+    o.max_steps = options.max_steps;
+    vern::CheckResult r =
+        vern::example_verdict(grammar.data().grammar, example.data().example, options.stack, std::nullopt, o);
+    Verdict v;
+    v.derivable = r.derivable;
+    v.witness = std::move(r.witness);
+    v.reason = std::move(r.mismatch);
+    return v;
+  });
+}
+
+}  // namespace vernacular
