@@ -23,6 +23,7 @@
 #include "support/guarded_main.hpp"
 #include "support/output_paths.hpp"
 #include "forward/primitive_sources.hpp"
+#include "forward/shards.hpp"
 
 namespace fs = std::filesystem;
 using namespace vern;
@@ -53,6 +54,10 @@ CommandLine make_command_line() {
   cl.add({"--up", "", 1, "y|z",
           "OBJ: the up axis written, declared by a `# up` line (default y, as Blender\n"
           "imports OBJ; glTF is y-up by its specification). The grammar's z is up"});
+  cl.add({"--shard", "", 1, "K/N",
+          "derive and write only the K-th of N slices of the run's buildings (K = 1..N), each\n"
+          "under its own index and at its place in a one-file layout: N shards, run anywhere,\n"
+          "write together what the whole run writes"});
   cl.add({"--strict", "", 0, "", "treat warnings (no rule applies, unknown primitive) as errors"});
   cl.add({"--threads", "-j", 1, "N", "derive with N threads (default: all cores; output is the same)"});
   cl.add({"--max-depth", "", 1, "N", "limit on nested rule calls (default 1000)"});
@@ -64,6 +69,7 @@ CommandLine make_command_line() {
       "  generate data/grammars/garage.grm -n 10 -o garages/        # garages/variant_000.obj ...\n"
       "  generate data/grammars/garage.grm -n 10 -o garages.glb     # all ten in one GLB\n"
       "  generate style.grm --seed 14 -n 1 -o one.obj               # variant 7 of --seed 7\n"
+      "  generate city.grm -n 1000 --shard 3/8 -o city/             # city/variant_250 ... variant_374\n"
       "\n"
       "exit codes: 0 success, 2 usage error, 3 bad input (grammar or mesh file),\n"
       "            4 a limit was reached, 5 a file could not be read or written, 70 internal error\n");
@@ -142,8 +148,8 @@ std::vector<fs::path> files_written(const fs::path& output, Format format) {
 }
 
 // Whether `name` is a file this run writes into its folder: variant_NNN
-// with the format's extension (or an OBJ's .mtl), N below count.
-bool is_variant_output(const std::string& name, std::uint32_t count, Format format) {
+// with the format's extension (or an OBJ's .mtl), NNN in the run's slice.
+bool is_variant_output(const std::string& name, Slice slice, Format format) {
   const std::string prefix = "variant_";
   const std::size_t dot = name.rfind('.');
   if (!name.starts_with(prefix) || dot == std::string::npos || dot - prefix.size() > 9) return false;
@@ -154,7 +160,7 @@ bool is_variant_output(const std::string& name, std::uint32_t count, Format form
     if (name[i] < '0' || name[i] > '9') return false;
     index = index * 10 + static_cast<std::uint32_t>(name[i] - '0');
   }
-  return index < count && variant_name(index) + ext == name;
+  return index >= slice.first && index - slice.first < slice.count && variant_name(index) + ext == name;
 }
 
 // A folder this run made for its outputs goes again when the run fails
@@ -189,6 +195,20 @@ int run(int argc, char** argv) {
   VariantOptions options;
   options.count = args.has("--count") ? static_cast<std::uint32_t>(CommandLine::integer(args, "--count", 1, 10'000'000)) : 1;
   options.derive.seed = args.has("--seed") ? static_cast<std::uint64_t>(CommandLine::integer(args, "--seed", 0, (1LL << 53))) : 1;
+  // The run's buildings, and of them this shard's (all without --shard).
+  const std::uint32_t run_count = options.count;
+  Slice slice{0, run_count};
+  if (args.has("--shard")) {
+    const std::optional<Shard> shard = parse_shard(args.value("--shard"));
+    if (!shard)
+      usage("--shard '" + args.value("--shard") + "' is not K/N with K from 1 to N",
+            "for example --shard 3/8: the third of eight slices of the run's buildings");
+    slice = shard_slice(run_count, *shard);
+    if (slice.count == 0)
+      usage("--shard " + args.value("--shard") + " of " + std::to_string(run_count) + " building" +
+                (run_count == 1 ? "" : "s") + " is empty",
+            "use at most as many shards as buildings (-n)");
+  }
   options.threads = args.has("--threads") ? static_cast<unsigned>(CommandLine::integer(args, "--threads", 1, 256)) : 0;
   options.derive.strict = args.has("--strict");
   if (args.has("--max-depth"))
@@ -285,7 +305,7 @@ int run(int argc, char** argv) {
     const Format format = folder_format.value_or(Format::Obj);
     for (fs::directory_iterator it(output, ec), end; !ec && it != end; it.increment(ec)) {
       const std::string name = it->path().filename().string();
-      if (!is_variant_output(name, options.count, format)) continue;
+      if (!is_variant_output(name, slice, format)) continue;
       check_output_file("generate", output / name, {grammar_path}, "the grammar file");
       check_output_file("generate", output / name, primitive_inputs, "a primitives file");
     }
@@ -310,9 +330,14 @@ int run(int argc, char** argv) {
   }
 
   const auto started = std::chrono::steady_clock::now();
-  const bool show_progress = !quiet && options.count >= 50 && isatty(STDERR_FILENO);
+  // This run's buildings: the shard's slice, building i of it derived with
+  // the run's seed + slice.first + i and written as building slice.first + i.
+  VariantOptions mine = options;
+  mine.derive.seed += slice.first;
+  mine.count = slice.count;
+  const bool show_progress = !quiet && mine.count >= 50 && isatty(STDERR_FILENO);
   if (show_progress) {
-    options.progress = [](std::uint32_t done, std::uint32_t total) {
+    mine.progress = [](std::uint32_t done, std::uint32_t total) {
       if (done % 10 == 0 || done == total) std::fprintf(stderr, "\rderiving %u/%u buildings", done, total);
     };
   }
@@ -327,7 +352,7 @@ int run(int argc, char** argv) {
       if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(std::move(w));
   };
   const std::uint32_t batch = 16 * std::max(1u, options.threads == 0 ? std::thread::hardware_concurrency() : options.threads);
-  const std::string deriving = "deriving " + std::to_string(options.count) + " building" + (options.count == 1 ? "" : "s");
+  const std::string deriving = "deriving " + std::to_string(mine.count) + " building" + (mine.count == 1 ? "" : "s");
   const char* deriving_hint = "derive fewer buildings at once (-n), lower --max-terminals, or use fewer threads (-j)";
 
   // Every file is written before any replaces what was there: a run that
@@ -336,15 +361,17 @@ int run(int argc, char** argv) {
   MadeFolder made{output};
   OutputFiles outputs;
   if (one_file) {
+    // Laid out as the whole run is: a shard's buildings stand where they
+    // stand in the one run's file.
     const std::vector<glm::dvec3> offsets = layout_offsets(
         naming_out_of_memory(grammar_path.string(), deriving, deriving_hint, [&] { return start_sizes(grammar, options); }),
         spacing);
     std::optional<SceneFileWriter> writer;
     naming_out_of_memory(grammar_path.string(), deriving, deriving_hint, [&] {
-      derive_variants_in_order(grammar, options, batch, [&](std::uint32_t i, Derivation&& d) {
+      derive_variants_in_order(grammar, mine, batch, [&](std::uint32_t i, Derivation&& d) {
         note(d);
         if (!writer) writer.emplace(output, *file_format, std::move(d.labels), library, gltf, obj_up, outputs);
-        writer->add(Variant{variant_name(i), offsets[i], std::move(d.terminals)});
+        writer->add(Variant{variant_name(slice.first + i), offsets[slice.first + i], std::move(d.terminals)});
       });
     });
     naming_out_of_memory(output.string(), "while writing the buildings",
@@ -358,14 +385,15 @@ int run(int argc, char** argv) {
       throw Error(ErrorKind::Io, output.string() + ": error: cannot create the folder: " + ec.message() +
                                      "\n  hint: check that its parent folder exists and is writable, or choose another path");
     naming_out_of_memory(grammar_path.string(), deriving, deriving_hint, [&] {
-      derive_variants_in_order(grammar, options, batch, [&](std::uint32_t i, Derivation&& d) {
+      derive_variants_in_order(grammar, mine, batch, [&](std::uint32_t i, Derivation&& d) {
         note(d);
-        write_scene(single(std::move(d), i), library, output / (variant_name(i) + extension(format)), format, gltf,
-                    obj_up, outputs);
+        const std::uint32_t index = slice.first + i;
+        write_scene(single(std::move(d), index), library, output / (variant_name(index) + extension(format)), format,
+                    gltf, obj_up, outputs);
       });
     });
-    where = (output / ("variant_000" + std::string(extension(format)))).string();
-    if (options.count > 1) where += " ... " + variant_name(options.count - 1) + extension(format);
+    where = (output / (variant_name(slice.first) + extension(format))).string();
+    if (mine.count > 1) where += " ... " + variant_name(slice.first + mine.count - 1) + extension(format);
   }
   if (show_progress) std::fprintf(stderr, "\n");
   if (!quiet)
@@ -374,8 +402,8 @@ int run(int argc, char** argv) {
   made.done = true;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!quiet)
-    std::fprintf(stderr, "generate: %u building%s, %zu terminals -> %s (%.2f s)\n", options.count,
-                 options.count == 1 ? "" : "s", terminals, where.c_str(), seconds);
+    std::fprintf(stderr, "generate: %u building%s, %zu terminals -> %s (%.2f s)\n", mine.count,
+                 mine.count == 1 ? "" : "s", terminals, where.c_str(), seconds);
   return 0;
 }
 

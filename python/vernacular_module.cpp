@@ -137,6 +137,16 @@ PYBIND11_MODULE(_vernacular, m) {
       "grammar"_a, "count"_a, "seed"_a = 1, "plot"_a = std::nullopt, "threads"_a = 0,
       "count buildings, the i-th with seed + i.");
 
+  m.def(
+      "shard",
+      [](std::uint32_t total, std::uint32_t k, std::uint32_t n) {
+        const v::Slice s = v::shard(total, k, n);
+        return py::make_tuple(s.first, s.count);
+      },
+      "total"_a, "k"_a, "n"_a,
+      "(first, count): shard k (1..n) of a run of total buildings, as generate --shard k/n; "
+      "derive_many(g, count, seed=seed + first) derives its buildings.");
+
   py::class_<v::Example>(m, "Example", "An example building read from a file.")
       .def_property_readonly("source", &v::Example::source)
       .def_property_readonly("notes", &v::Example::notes)

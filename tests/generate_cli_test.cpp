@@ -239,3 +239,66 @@ TEST(GenerateCli, ManyConstantsAndPrimitiveNamesReadInLinearTime) {
 
 }  // namespace
 }  // namespace vern
+
+namespace vern {
+namespace {
+
+std::vector<std::string> vertex_lines(const std::string& obj) {
+  std::vector<std::string> out;
+  std::size_t at = 0;
+  while (at < obj.size()) {
+    const std::size_t end = obj.find('\n', at);
+    const std::string line = obj.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    if (line.starts_with("v ")) out.push_back(line);
+    if (end == std::string::npos) break;
+    at = end + 1;
+  }
+  return out;
+}
+
+TEST(GenerateCli, ShardsWriteTogetherWhatTheOneRunWrites) {
+  TempFolder dir;
+  const std::string grammar = VERN_SOURCE_DIR "/data/grammars/skyscraper_city.grm";
+  for (const std::string format : {"obj", "glb"}) {
+    const std::string all = "all_" + format + "/", parts = "parts_" + format + "/";
+    ASSERT_EQ(run_program("generate", {grammar, "-n", "7", "--seed", "3", "--format", format, "-q", "-o", all}, dir.path())
+                  .exit_code,
+              0);
+    for (const std::string shard : {"1/3", "2/3", "3/3"}) {
+      const auto r = run_program("generate", {grammar, "-n", "7", "--seed", "3", "--format", format, "--shard", shard,
+                                              "-q", "-o", parts},
+                                 dir.path());
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    const std::vector<std::string> files = list_folder(dir / all);
+    ASSERT_EQ(list_folder(dir / parts), files);
+    for (const std::string& f : files) EXPECT_EQ(read_file(dir / parts / f), read_file(dir / all / f)) << f;
+  }
+  // One file: each shard's buildings stand where they stand in the run's.
+  ASSERT_EQ(run_program("generate", {grammar, "-n", "5", "-q", "-o", "city.obj"}, dir.path()).exit_code, 0);
+  ASSERT_EQ(run_program("generate", {grammar, "-n", "5", "--shard", "1/2", "-q", "-o", "a.obj"}, dir.path()).exit_code, 0);
+  ASSERT_EQ(run_program("generate", {grammar, "-n", "5", "--shard", "2/2", "-q", "-o", "b.obj"}, dir.path()).exit_code, 0);
+  std::vector<std::string> joined = vertex_lines(read_file(dir / "a.obj"));
+  const std::vector<std::string> b = vertex_lines(read_file(dir / "b.obj"));
+  EXPECT_FALSE(b.empty());
+  joined.insert(joined.end(), b.begin(), b.end());
+  EXPECT_EQ(joined, vertex_lines(read_file(dir / "city.obj")));
+}
+
+TEST(GenerateCli, AShardThatIsNoneOfTheRunsIsAUsageError) {
+  TempFolder dir;
+  const std::string grammar = VERN_SOURCE_DIR "/data/grammars/garage.grm";
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"--shard", "4/3"}, {"--shard", "0/3"}, {"--shard", "three"}, {"-n", "2", "--shard", "2/5"}}) {
+    std::vector<std::string> all = {grammar, "-o", "out/"};
+    all.insert(all.end(), args.begin(), args.end());
+    const auto r = run_program("generate", all, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << args.back();
+    EXPECT_NE(r.err.find("--shard"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("hint:"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  }
+}
+
+}  // namespace
+}  // namespace vern

@@ -61,4 +61,18 @@ Building derive(const Grammar& grammar, const DeriveOptions& options = {});
 std::vector<Building> derive_many(const Grammar& grammar, std::uint32_t count, const DeriveOptions& options = {},
                                   unsigned threads = 0);
 
+// Spreading a run over machines, as `generate --shard K/N` does: of a
+// run of `total` buildings (the i-th with seed + i), shard k of n
+// (1 <= k <= n) is the buildings [first, first + count); the n shards are
+// disjoint, in order, cover the run and differ in size by one at most.
+// derive_many(grammar, s.count, {seed + s.first, ...}) derives shard k's
+// buildings, equal to those of the whole run. Throws Failure (Usage)
+// unless 1 <= k <= n.
+struct Slice {
+  std::uint32_t first = 0;
+  std::uint32_t count = 0;
+  friend bool operator==(const Slice&, const Slice&) = default;
+};
+Slice shard(std::uint32_t total, std::uint32_t k, std::uint32_t n);
+
 }  // namespace vernacular

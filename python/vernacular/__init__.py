@@ -14,7 +14,7 @@ kind, file, line, column, message and hint.
 
 from . import _vernacular
 from ._vernacular import (Building, Example, Grammar, InferResult, Verdict, __version__, check, derive,
-                          derive_many, infer, read_examples, write_buildings)
+                          derive_many, infer, read_examples, shard, write_buildings)
 
 
 class Error(Exception):
@@ -53,4 +53,4 @@ _vernacular._set_errors({"usage": UsageError, "input": InputError, "limit": Limi
 
 __all__ = ["Building", "Error", "Example", "Grammar", "InferResult", "InputError", "InternalError", "IoError",
            "LimitError", "UsageError", "Verdict", "__version__", "check", "derive", "derive_many", "infer",
-           "read_examples", "write_buildings"]
+           "read_examples", "shard", "write_buildings"]

@@ -4,6 +4,7 @@
 #include "api/api_data.hpp"
 #include "api/buildings.hpp"
 #include "forward/derive.hpp"
+#include "forward/shards.hpp"
 #include "forward/variants.hpp"
 
 namespace vernacular {
@@ -39,6 +40,16 @@ std::vector<Building> derive_many(const Grammar& grammar, std::uint32_t count, c
     out.reserve(count);
     for (vern::Derivation& d : vern::derive_variants(grammar.data().grammar, o)) out.push_back(detail::building_of(d));
     return out;
+  });
+}
+
+Slice shard(std::uint32_t total, std::uint32_t k, std::uint32_t n) {
+  return detail::guarded([&] {
+    if (k < 1 || k > n)
+      vern::fail(vern::ErrorKind::Usage, "", {}, "shard " + std::to_string(k) + " of " + std::to_string(n) + " is none",
+                 "shards are numbered 1 to n");
+    const vern::Slice s = vern::shard_slice(total, {k, n});
+    return Slice{s.first, s.count};
   });
 }
 

@@ -58,3 +58,24 @@ TEST(ApiDerive, ALimitReachedIsALimitError) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(ApiDerive, ShardsOfARunDeriveItsBuildingsSliceBySlice) {
+  const vernacular::Grammar g = vernacular::Grammar::parse(kStreet);
+  vernacular::DeriveOptions o;
+  o.seed = 40;
+  const std::vector<vernacular::Building> run = vernacular::derive_many(g, 10, o);
+  std::vector<vernacular::Building> joined;
+  for (std::uint32_t k = 1; k <= 3; ++k) {
+    const vernacular::Slice s = vernacular::shard(10, k, 3);
+    vernacular::DeriveOptions mine = o;
+    mine.seed = o.seed + s.first;
+    for (vernacular::Building& b : vernacular::derive_many(g, s.count, mine)) joined.push_back(std::move(b));
+  }
+  EXPECT_EQ(joined, run);
+  EXPECT_THROW(vernacular::shard(10, 0, 3), vernacular::Failure);
+  EXPECT_THROW(vernacular::shard(10, 4, 3), vernacular::Failure);
+}
+
+}  // namespace
