@@ -14,11 +14,7 @@
 #   roundtrip.sh GENERATE INFER CHECK SOURCE_DIR
 set -euo pipefail
 generate=$1 infer=$2 check=$3 src=$4
-blender=${BLENDER:-blender}
-if ! command -v "$blender" > /dev/null; then
-  echo "SKIPPED: Blender is not installed; scripts/blender-roundtrip installs it (apt) and runs this test"
-  exit 77
-fi
+source "$src/tests/blender/need_blender.sh"
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 run_blender() {
