@@ -6,9 +6,9 @@
 #include <string>
 
 #include "graph/parser.hpp"
-#include "inverse/check.hpp"
-#include "inverse/example.hpp"
-#include "inverse/example_verdict.hpp"
+#include "inverse/check/check.hpp"
+#include "inverse/check/example_verdict.hpp"
+#include "inverse/load/example.hpp"
 #include "support/command_line.hpp"
 #include "support/example_options.hpp"
 #include "support/guarded_main.hpp"

@@ -12,13 +12,13 @@
 #include <map>
 #include <sstream>
 
+#include "base/atomic_file.hpp"
+#include "base/error.hpp"
 #include "eval/class_means.hpp"
 #include "eval/evaluation.hpp"
 #include "eval/precision_recall.hpp"
 #include "eval/random_grammar.hpp"
 #include "eval/random_style.hpp"
-#include "graph/atomic_file.hpp"
-#include "graph/error.hpp"
 #include "graph/parser.hpp"
 #include "support/command_line.hpp"
 #include "support/guarded_main.hpp"

@@ -9,21 +9,21 @@
 #include <optional>
 #include <thread>
 
-#include "forward/gltf_writer.hpp"
-#include "forward/obj_writer.hpp"
+#include "base/atomic_file.hpp"
+#include "base/files_read.hpp"
+#include "base/number_format.hpp"
+#include "base/out_of_memory.hpp"
+#include "base/suggest.hpp"
 #include "forward/primitive_check.hpp"
+#include "forward/primitive_sources.hpp"
+#include "forward/shards.hpp"
 #include "forward/variants.hpp"
-#include "graph/atomic_file.hpp"
-#include "graph/files_read.hpp"
-#include "graph/number_format.hpp"
-#include "graph/out_of_memory.hpp"
 #include "graph/parser.hpp"
-#include "graph/suggest.hpp"
+#include "io/gltf_writer.hpp"
+#include "io/obj_writer.hpp"
 #include "support/command_line.hpp"
 #include "support/guarded_main.hpp"
 #include "support/output_paths.hpp"
-#include "forward/primitive_sources.hpp"
-#include "forward/shards.hpp"
 
 namespace fs = std::filesystem;
 using namespace vern;

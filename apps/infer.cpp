@@ -8,18 +8,18 @@
 #include <iostream>
 #include <optional>
 
-#include "forward/obj_writer.hpp"
-#include "graph/alongside.hpp"
+#include "base/alongside.hpp"
+#include "base/files_read.hpp"
+#include "base/folder_confinement.hpp"
+#include "base/out_of_memory.hpp"
+#include "base/parallel_for.hpp"
 #include "graph/description_length.hpp"
-#include "graph/files_read.hpp"
-#include "graph/folder_confinement.hpp"
-#include "graph/out_of_memory.hpp"
-#include "graph/parallel_for.hpp"
 #include "graph/reserved_words.hpp"
 #include "graph/writer.hpp"
 #include "inverse/infer.hpp"
-#include "inverse/inferred_files.hpp"
-#include "inverse/test_buildings.hpp"
+#include "inverse/write/inferred_files.hpp"
+#include "inverse/write/test_buildings.hpp"
+#include "io/obj_writer.hpp"
 #include "support/command_line.hpp"
 #include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
@@ -167,7 +167,7 @@ int run(int argc, char** argv) {
   // Derive a few buildings from the result while its text is made: a
   // grammar that cannot derive is a bug, better found here than by the user
   // (its error comes first, as if derived before writing); one that reaches
-  // a limit is written with a warning (inverse/test_buildings.hpp). One
+  // a limit is written with a warning (inverse/write/test_buildings.hpp). One
   // building alone when the examples are large (a million parts: a third
   // of a second).
   std::size_t parts = 0, largest = 0;

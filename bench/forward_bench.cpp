@@ -16,10 +16,10 @@
 #include <filesystem>
 
 #include "child_process.hpp"
-#include "forward/gltf_writer.hpp"
-#include "forward/obj_writer.hpp"
 #include "forward/variants.hpp"
 #include "graph/parser.hpp"
+#include "io/gltf_writer.hpp"
+#include "io/obj_writer.hpp"
 #include "table_row.hpp"
 
 namespace vern {

@@ -9,14 +9,14 @@
 #include <filesystem>
 #include <map>
 
+#include "base/atomic_file.hpp"
 #include "child_process.hpp"
-#include "graph/atomic_file.hpp"
-#include "inverse/box_split.hpp"
-#include "inverse/example.hpp"
 #include "inverse/infer.hpp"
-#include "inverse/scene_buildings.hpp"
-#include "inverse/merge.hpp"
-#include "inverse/split_graph.hpp"
+#include "inverse/load/example.hpp"
+#include "inverse/load/scene_buildings.hpp"
+#include "inverse/merge/merge.hpp"
+#include "inverse/split/box_split.hpp"
+#include "inverse/split/split_graph.hpp"
 #include "table_row.hpp"
 #include "workload.hpp"
 

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <iostream>
 
+#include "base/atomic_file.hpp"
+#include "base/error.hpp"
+#include "base/number_format.hpp"
 #include "eval/random_grammar.hpp"
 #include "forward/random_stream.hpp"
-#include "graph/atomic_file.hpp"
-#include "graph/error.hpp"
-#include "graph/number_format.hpp"
 #include "support/command_line.hpp"
 #include "support/guarded_main.hpp"
 
@@ -150,7 +150,7 @@ std::string layout_obj(const std::vector<LabelledBox>& boxes) {
   std::string out;
   out.reserve(boxes.size() * 320 + 64);
   out += "# A random guillotine layout (vern_bench --make-layout): one object per part.\n";
-  out += "# up z\n";  // the boxes' own frame (forward/obj_reader.hpp)
+  out += "# up z\n";  // the boxes' own frame (io/obj_reader.hpp)
   std::uint64_t base = 1;
   for (const LabelledBox& b : boxes) {
     out += "o ";

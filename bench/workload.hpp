@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "eval/random_grammar.hpp"
-#include "inverse/example.hpp"
+#include "inverse/load/example.hpp"
 
 namespace vern {
 

@@ -1,6 +1,6 @@
 // run_alongside: both pieces run, and the side's error wins whatever the
 // thread count.
-#include "graph/alongside.hpp"
+#include "base/alongside.hpp"
 
 #include <gtest/gtest.h>
 

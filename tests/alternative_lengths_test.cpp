@@ -1,6 +1,6 @@
 // Alternatives seen at different lengths keep the lengths they share in
 // metres; each still derives its example exactly.
-#include "inverse/alternative_lengths.hpp"
+#include "inverse/sizes/alternative_lengths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "forward/derive.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
 #include "support/example_helpers.hpp"
 

@@ -1,11 +1,11 @@
 // The outputs of one run: replaced together or not at all.
-#include "graph/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "graph/error.hpp"
+#include "base/error.hpp"
 #include "support/run_command.hpp"
 
 namespace vern {

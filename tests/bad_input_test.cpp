@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "forward/gltf_container.hpp"
+#include "io/gltf_container.hpp"
 #include "support/bad_input_helpers.hpp"
 #include "support/run_command.hpp"
 
@@ -297,7 +297,7 @@ const std::vector<BadInput> kCases = {
   {"obj_coordinate_underflows_double", "infer", {"coordinate_underflows_double.obj", "-o", "style.grm"}, kInput,
    "coordinate_underflows_double.obj:8:5: error: ",
    "'1e-400' is too small for a number: nearer to zero than any double", {"obj/coordinate_underflows_double.obj"}},
-  // A file's own up axis (forward/obj_reader.hpp): y or z, before any vertex.
+  // A file's own up axis (io/obj_reader.hpp): y or z, before any vertex.
   {"obj_up_axis_unknown", "infer", {"up_axis_unknown.obj", "-o", "style.grm"}, kInput,
    "up_axis_unknown.obj:1:6: error: ", "'# up x' declares an up axis other than y or z", {"obj/up_axis_unknown.obj"}},
   {"obj_up_declared_after_vertices", "infer", {"up_declared_after_vertices.obj", "-o", "style.grm"}, kInput,
@@ -459,7 +459,7 @@ const std::vector<BadInput> kCases = {
    "no_nodes.gltf: error: ", "has no labelled objects", {"gltf/no_nodes.gltf"}},
   {"gltf_overlapping_nodes", "infer", {"overlapping_nodes.gltf", "-o", "style.grm"}, kInput,
    "overlapping_nodes.gltf: error: ", "objects 'wall' and 'roof' overlap", {"gltf/overlapping_nodes.gltf"}},
-  // glTF's rules that tinygltf leaves unchecked (inverse/gltf_rules.hpp).
+  // glTF's rules that tinygltf leaves unchecked (io/gltf_rules.hpp).
   {"gltf_child_out_of_range", "infer", {"child_out_of_range.gltf", "-o", "style.grm"}, kInput,
    "child_out_of_range.gltf: error: ", "node 0 'wall' lists child 5, but the file has 2 nodes",
    {"gltf/child_out_of_range.gltf"}},

@@ -1,7 +1,7 @@
 // The ordered-box algorithm: the thesis's interval example, gaps, flat
 // parts, float noise, overlaps, unsplittable pinwheels, and a large random
 // building.
-#include "inverse/box_split.hpp"
+#include "inverse/split/box_split.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <numeric>
 #include <random>
 
-#include "graph/error.hpp"
+#include "base/error.hpp"
 #include "support/example_helpers.hpp"
 
 namespace vern {

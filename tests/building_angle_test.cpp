@@ -1,6 +1,6 @@
 // Buildings standing at an angle about z read in their own frame
-// (inverse/building_angle.hpp).
-#include "inverse/building_angle.hpp"
+// (inverse/load/building_angle.hpp).
+#include "inverse/load/building_angle.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "inverse/check_bindings.hpp"
-#include "inverse/check_cuts.hpp"
-#include "inverse/check_scale.hpp"
+#include "inverse/check/check_bindings.hpp"
+#include "inverse/check/check_cuts.hpp"
+#include "inverse/check/check_scale.hpp"
 
 namespace vern::check_detail {
 namespace {

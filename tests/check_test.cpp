@@ -1,5 +1,5 @@
-// Checking examples against grammars (inverse/check.hpp) and the supports
-// of expressions it rests on (inverse/support.hpp).
+// Checking examples against grammars (inverse/check/check.hpp) and the supports
+// of expressions it rests on (inverse/sizes/support.hpp).
 //
 // The bundled grammars derive examples with vern::derive; each must check
 // as derivable, and each perturbed copy (a box moved, relabelled, deleted,
@@ -8,7 +8,7 @@
 // constants (the city's N and M) take few values and are tried one by one,
 // and their continuous random arguments (the city's scalar and tower
 // heights) are solved for from the split that uses them.
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,7 @@
 #include "forward/derive.hpp"
 #include "forward/evaluate.hpp"
 #include "graph/parser.hpp"
-#include "inverse/support.hpp"
+#include "inverse/sizes/support.hpp"
 #include "support/derive_helpers.hpp"
 
 namespace vern {

@@ -1,5 +1,5 @@
 // Combinations seen or places on their own (choice_costs.hpp).
-#include "inverse/choice_costs.hpp"
+#include "inverse/merge/choice_costs.hpp"
 
 #include <gtest/gtest.h>
 

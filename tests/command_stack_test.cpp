@@ -11,9 +11,9 @@
 
 #include <string>
 
-#include "graph/error.hpp"
+#include "base/error.hpp"
+#include "base/stack_guard.hpp"
 #include "graph/parser.hpp"
-#include "graph/stack_guard.hpp"
 #include "support/child_process.hpp"
 #include "support/example_helpers.hpp"
 #include "support/run_command.hpp"

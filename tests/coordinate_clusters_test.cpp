@@ -1,4 +1,4 @@
-#include "inverse/coordinate_clusters.hpp"
+#include "inverse/load/coordinate_clusters.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Sizes drawn once merging has settled the structure (drawn_sizes.hpp),
 // through infer: here, alternatives of one split planned together.
-#include "inverse/drawn_sizes.hpp"
+#include "inverse/sizes/drawn_sizes.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Alternatives that are the same operation become one.
-#include "inverse/equal_options.hpp"
+#include "inverse/merge/equal_options.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,17 +1,17 @@
 // Loading labelled examples: OBJ and glTF parts, Blender suffixes, folders,
 // and the errors a user sees for files inference cannot use.
-#include "inverse/example.hpp"
+#include "inverse/load/example.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <filesystem>
 
-#include "forward/gltf_writer.hpp"
-#include "forward/obj_writer.hpp"
-#include "graph/error.hpp"
+#include "base/error.hpp"
 #include "graph/parser.hpp"
-#include "forward/gltf_container.hpp"
+#include "io/gltf_container.hpp"
+#include "io/gltf_writer.hpp"
+#include "io/obj_writer.hpp"
 #include "support/example_helpers.hpp"
 #include "support/run_command.hpp"
 

@@ -1,15 +1,15 @@
 // The files a run has read are never written over by it, once a command
 // records them; a library user that does not is unaffected.
-#include "graph/files_read.hpp"
+#include "base/files_read.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <vector>
 
-#include "graph/atomic_file.hpp"
-#include "graph/error.hpp"
-#include "graph/input_file.hpp"
+#include "base/atomic_file.hpp"
+#include "base/error.hpp"
+#include "base/input_file.hpp"
 #include "support/run_command.hpp"
 
 namespace vern {

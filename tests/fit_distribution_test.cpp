@@ -1,6 +1,6 @@
 // Fitting distributions to the examples' values: the model BIC prefers,
 // a support that holds every value seen, and the expression written.
-#include "inverse/fit_distribution.hpp"
+#include "inverse/sizes/fit_distribution.hpp"
 
 #include <gtest/gtest.h>
 

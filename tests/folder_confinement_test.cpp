@@ -1,6 +1,6 @@
-// Files a file names stay in its folder (graph/folder_confinement.hpp):
+// Files a file names stay in its folder (base/folder_confinement.hpp):
 // what is refused as written, and links that lead out.
-#include "graph/folder_confinement.hpp"
+#include "base/folder_confinement.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "graph/freed_memory.hpp"
+#include "base/freed_memory.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>

@@ -14,13 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "base/error.hpp"
 #include "entries/entries.hpp"
 #include "entries/folder_opens.hpp"
 #include "entries/folder_tree.hpp"
 #include "entries/layout.hpp"
 #include "entries/scratch_file.hpp"
 #include "entries/verdict.hpp"
-#include "graph/error.hpp"
 
 namespace fs = std::filesystem;
 using namespace vern;

@@ -2,7 +2,7 @@
 // differ only deep down come back as one building with choices where they
 // differ, not one alternative per example; and only where nothing that
 // went together is drawn apart.
-#include "inverse/generalise.hpp"
+#include "inverse/merge/generalise.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "forward/derive.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
 #include "support/example_helpers.hpp"
 

@@ -1,11 +1,11 @@
-#include "inverse/glb_chunks.hpp"
+#include "io/glb_chunks.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <string>
 
-#include "forward/gltf_container.hpp"
+#include "io/gltf_container.hpp"
 
 namespace vern {
 namespace {

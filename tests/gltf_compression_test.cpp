@@ -1,7 +1,7 @@
 // Compressed GLB files as web pipelines write them (tests/data/compressed,
 // made by glTF-Transform from a GLB generate wrote): read as the plain file
 // they compress, derived by its grammar, and, broken, refused naming what.
-#include "inverse/gltf_compression.hpp"
+#include "io/gltf_compression.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "forward/gltf_container.hpp"
-#include "graph/error.hpp"
-#include "inverse/example.hpp"
-#include "inverse/glb_chunks.hpp"
+#include "base/error.hpp"
+#include "inverse/load/example.hpp"
+#include "io/glb_chunks.hpp"
+#include "io/gltf_container.hpp"
 #include "support/run_command.hpp"
 
 namespace vern {

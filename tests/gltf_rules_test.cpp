@@ -1,8 +1,8 @@
 // The glTF 2.0 rules the example loader checks beyond tinygltf
-// (inverse/gltf_rules.hpp): a valid file loads; each file that breaks one
+// (io/gltf_rules.hpp): a valid file loads; each file that breaks one
 // rule, and only that one, is refused as bad input naming the node, mesh,
 // primitive or accessor.
-#include "inverse/gltf_rules.hpp"
+#include "io/gltf_rules.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "forward/gltf_container.hpp"
-#include "graph/error.hpp"
-#include "inverse/example.hpp"
+#include "base/error.hpp"
+#include "inverse/load/example.hpp"
+#include "io/gltf_container.hpp"
 #include "support/run_command.hpp"
 
 namespace vern {

@@ -1,6 +1,6 @@
 // The glTF writer: variant roots, terminal nodes with scope matrices, meshes
 // shared by instances, materials, and byte-identical output.
-#include "forward/gltf_writer.hpp"
+#include "io/gltf_writer.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "forward/gltf_summary.hpp"
-#include "forward/palette.hpp"
-#include "graph/error.hpp"
+#include "base/error.hpp"
+#include "io/gltf_summary.hpp"
+#include "io/palette.hpp"
 #include "support/scene_helpers.hpp"
 
 namespace vern {

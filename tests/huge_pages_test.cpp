@@ -1,4 +1,4 @@
-#include "graph/huge_pages.hpp"
+#include "base/huge_pages.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "graph/freed_memory.hpp"
-#include "graph/parallel_for.hpp"
+#include "base/freed_memory.hpp"
+#include "base/parallel_for.hpp"
 
 #if defined(__linux__)
 #include <sys/resource.h>

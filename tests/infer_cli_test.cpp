@@ -17,7 +17,7 @@
 
 #include "graph/description_length.hpp"
 #include "graph/parser.hpp"
-#include "forward/gltf_container.hpp"
+#include "io/gltf_container.hpp"
 #include "support/example_helpers.hpp"
 #include "support/run_command.hpp"
 

@@ -7,7 +7,7 @@
 #include "graph/parser.hpp"
 #include "graph/structural.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "support/derive_helpers.hpp"
 #include "support/example_helpers.hpp"
 

@@ -1,11 +1,11 @@
-#include "graph/inline_list.hpp"
+#include "base/inline_list.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <utility>
 
-#include "inverse/support.hpp"
+#include "inverse/sizes/support.hpp"
 
 namespace vern {
 namespace {

@@ -1,5 +1,5 @@
 // Tiers set in step by step, read as nesting (inset_runs.hpp).
-#include "inverse/inset_runs.hpp"
+#include "inverse/merge/inset_runs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,10 +7,10 @@
 #include "graph/nodes_below.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
-#include "support/one_line.hpp"
 #include "support/example_helpers.hpp"
+#include "support/one_line.hpp"
 
 namespace vern {
 namespace {

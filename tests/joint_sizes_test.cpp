@@ -1,7 +1,7 @@
 // Sizes that vary together stay together: a garage half as high as its
 // house, in every example, is half as high in every variant; sizes that
 // vary apart stay apart; a split whose parts vary in one way draws once.
-#include "inverse/joint_sizes.hpp"
+#include "inverse/sizes/joint_sizes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include "forward/derive.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
 #include "support/example_helpers.hpp"
 

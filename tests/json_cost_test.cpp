@@ -1,4 +1,4 @@
-#include "inverse/json_cost.hpp"
+#include "io/json_cost.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "inverse/json_cursor.hpp"
+#include "io/json_cursor.hpp"
 
 #include <gtest/gtest.h>
 

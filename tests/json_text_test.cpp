@@ -1,6 +1,6 @@
 // JsonText: commas in the right places, strings escaped, numbers exact and
 // short, nesting checked.
-#include "forward/json_text.hpp"
+#include "io/json_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "graph/error.hpp"
+#include "base/error.hpp"
 
 namespace vern {
 namespace {

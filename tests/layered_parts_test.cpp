@@ -1,14 +1,14 @@
 // Overlapping parts resolved into what is visible of each
-// (inverse/layered_parts.hpp): containers cut around what they hold, a
+// (inverse/load/layered_parts.hpp): containers cut around what they hold, a
 // stack order for parts painted over one another, errors that say which.
-#include "inverse/layered_parts.hpp"
+#include "inverse/load/layered_parts.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "graph/error.hpp"
-#include "inverse/box_split.hpp"
+#include "base/error.hpp"
+#include "inverse/split/box_split.hpp"
 
 namespace vern {
 namespace {

@@ -1,5 +1,5 @@
 // Sizes of a recursion's levels as functions of the levels still to come.
-#include "inverse/levels_left.hpp"
+#include "inverse/sizes/levels_left.hpp"
 
 #include <gtest/gtest.h>
 

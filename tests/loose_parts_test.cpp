@@ -1,6 +1,6 @@
 // An object's loose pieces: found by shared vertices and by shared
 // positions (glTF repeats a box's corners for each face's normal).
-#include "inverse/loose_parts.hpp"
+#include "inverse/load/loose_parts.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
 // Merging example graphs (thesis chapter 10) and writing the result as
 // named rules (chapter 11).
-#include "inverse/merge.hpp"
+#include "inverse/merge/merge.hpp"
 
 #include <gtest/gtest.h>
 
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/rule_naming.hpp"
+#include "inverse/write/rule_naming.hpp"
 #include "support/example_graphs.hpp"
 
 namespace vern {

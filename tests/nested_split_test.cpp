@@ -1,5 +1,5 @@
 // Rows of parts that are two splits, one inside the other.
-#include "inverse/nested_split.hpp"
+#include "inverse/merge/nested_split.hpp"
 
 #include <gtest/gtest.h>
 

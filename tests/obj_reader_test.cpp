@@ -1,6 +1,6 @@
 // Reading labelled OBJ: objects, corner forms, re-indexing, and the errors
 // a user sees for broken files.
-#include "forward/obj_reader.hpp"
+#include "io/obj_reader.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "graph/error.hpp"
+#include "base/error.hpp"
 
 namespace vern {
 namespace {

@@ -1,6 +1,6 @@
 // The OBJ writer: one object per terminal at its scope, absolute indices,
 // materials, and a round trip through the OBJ reader.
-#include "forward/obj_writer.hpp"
+#include "io/obj_writer.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -11,9 +11,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "forward/obj_reader.hpp"
-#include "graph/error.hpp"
+#include "base/error.hpp"
 #include "graph/label.hpp"
+#include "io/obj_reader.hpp"
 #include "support/scene_helpers.hpp"
 
 namespace vern {

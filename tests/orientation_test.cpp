@@ -1,18 +1,18 @@
 // Turned primitives: finding the quarter turns that put a label's canonical
 // mesh onto a part's vertices, and writing them as R operations.
-#include "inverse/orientation.hpp"
+#include "inverse/load/orientation.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 
-#include "forward/obj_writer.hpp"
 #include "forward/primitive_library.hpp"
 #include "forward/variants.hpp"
 #include "graph/parser.hpp"
-#include "inverse/infer.hpp"
 #include "graph/writer.hpp"
+#include "inverse/infer.hpp"
+#include "io/obj_writer.hpp"
 #include "support/derive_helpers.hpp"
 
 namespace vern {

@@ -1,5 +1,5 @@
 // A split and its overflow are one split (overflow_splits.hpp).
-#include "inverse/overflow_splits.hpp"
+#include "inverse/sizes/overflow_splits.hpp"
 
 #include <gtest/gtest.h>
 

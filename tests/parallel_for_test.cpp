@@ -1,6 +1,6 @@
 // parallel_for: every index once, and the error of the lowest failing
 // index whatever the thread count.
-#include "graph/parallel_for.hpp"
+#include "base/parallel_for.hpp"
 
 #include <gtest/gtest.h>
 

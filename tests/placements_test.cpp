@@ -1,8 +1,8 @@
 // Groups of parts that no straight cut separates (a pinwheel), end to end:
-// infer places them with S(...) at their corners (inverse/placements.hpp)
+// infer places them with S(...) at their corners (inverse/split/placements.hpp)
 // and warns, the grammar derives the examples exactly, check accepts them,
 // and merging several such examples keeps every one derivable.
-#include "inverse/placements.hpp"
+#include "inverse/split/placements.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include "forward/layout_faults.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
 #include "support/example_helpers.hpp"
 

@@ -1,6 +1,6 @@
 // The plain GLB reader against tinygltf: whatever it reads, it reads as
 // tinygltf does, and what it declines is left to tinygltf.
-#include "inverse/plain_glb.hpp"
+#include "io/plain_glb.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "forward/gltf_container.hpp"
+#include "io/gltf_container.hpp"
 #include "support/run_command.hpp"
 
 namespace vern {

@@ -1,7 +1,7 @@
 // The OBJ reader's plain-number scanners: the same value as from_chars,
 // bit for bit, wherever they accept; a refusal for anything else (the
 // reader's general path then reads it).
-#include "forward/plain_number.hpp"
+#include "io/plain_number.hpp"
 
 #include <gtest/gtest.h>
 

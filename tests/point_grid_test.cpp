@@ -1,4 +1,4 @@
-#include "inverse/point_grid.hpp"
+#include "inverse/load/point_grid.hpp"
 
 #include <random>
 #include <vector>

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <optional>
 
-#include "graph/error.hpp"
+#include "base/error.hpp"
 
 namespace vern {
 namespace {

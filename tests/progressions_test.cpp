@@ -1,13 +1,13 @@
 // Rows whose tiles follow a progression become a recursion with the step
 // (progressions.hpp).
-#include "inverse/progressions.hpp"
+#include "inverse/sizes/progressions.hpp"
 
 #include <gtest/gtest.h>
 
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
-#include "inverse/derived_example.hpp"
+#include "inverse/check/check.hpp"
+#include "inverse/load/derived_example.hpp"
 #include "support/derive_helpers.hpp"
 #include "support/example_helpers.hpp"
 

@@ -1,6 +1,6 @@
 // Folding runs of equal parts and repeating patterns into stretching
 // repeats, on examples' split graphs.
-#include "inverse/repeat_folding.hpp"
+#include "inverse/merge/repeat_folding.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,11 +8,11 @@
 #include "graph/nodes_below.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
-#include "support/one_line.hpp"
 #include "support/derive_helpers.hpp"
 #include "support/example_helpers.hpp"
+#include "support/one_line.hpp"
 
 namespace vern {
 namespace {

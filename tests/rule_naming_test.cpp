@@ -1,6 +1,6 @@
 // Names for rules added to a written grammar: after the primitives below
 // and what the node does, the way rules_for names the rules it makes.
-#include "inverse/rule_naming.hpp"
+#include "inverse/write/rule_naming.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Files of several buildings read as several examples
-// (inverse/scene_buildings.hpp): which pieces are buildings, what each
+// (inverse/load/scene_buildings.hpp): which pieces are buildings, what each
 // building holds, and what the user is told.
-#include "inverse/scene_buildings.hpp"
+#include "inverse/load/scene_buildings.hpp"
 
 #include <gtest/gtest.h>
 

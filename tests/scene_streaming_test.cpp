@@ -7,13 +7,13 @@
 #include <filesystem>
 #include <random>
 
+#include "base/spill_file.hpp"
 #include "forward/derive.hpp"
-#include "forward/gltf_writer.hpp"
-#include "forward/obj_writer.hpp"
 #include "forward/program.hpp"
 #include "forward/variants.hpp"
 #include "graph/parser.hpp"
-#include "graph/spill_file.hpp"
+#include "io/gltf_writer.hpp"
+#include "io/obj_writer.hpp"
 #include "support/scene_helpers.hpp"
 
 namespace vern {

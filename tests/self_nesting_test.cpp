@@ -1,6 +1,6 @@
 // Structures that nest themselves: tiered towers of any tier count become
 // one recursive rule, whose tiers stand within the tiers below them.
-#include "inverse/self_nesting.hpp"
+#include "inverse/merge/self_nesting.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include "forward/derive.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
 #include "support/example_helpers.hpp"
 

@@ -1,13 +1,13 @@
 // Repeats settled once merging is done (settle_repeats.hpp): the same count
 // on different lengths is that count; varying counts take tile sizes from
 // the middle of each count's range. Through merge_examples.
-#include "inverse/settle_repeats.hpp"
+#include "inverse/sizes/settle_repeats.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "inverse/merge.hpp"
+#include "inverse/merge/merge.hpp"
 #include "support/example_graphs.hpp"
 
 namespace vern {

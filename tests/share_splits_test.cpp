@@ -1,6 +1,6 @@
 // A split of two relative parts that both draw becomes one draw and the
 // rest, and every example it derived before it still derives.
-#include "inverse/share_splits.hpp"
+#include "inverse/sizes/share_splits.hpp"
 
 #include <gtest/gtest.h>
 

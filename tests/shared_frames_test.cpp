@@ -1,6 +1,6 @@
 // Alternatives that are the same split but at one place become one
 // alternative with a choice there; alternatives differing at two stay.
-#include "inverse/shared_frames.hpp"
+#include "inverse/merge/shared_frames.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "forward/derive.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
 #include "support/example_graphs.hpp"
 #include "support/example_helpers.hpp"

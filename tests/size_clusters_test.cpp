@@ -1,5 +1,5 @@
 // Which members of a structural group are one kind by their sizes.
-#include "inverse/size_clusters.hpp"
+#include "inverse/merge/size_clusters.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "graph/import.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/rule_naming.hpp"
+#include "inverse/write/rule_naming.hpp"
 #include "support/example_graphs.hpp"
 
 namespace vern {

@@ -1,6 +1,6 @@
 // Which parts of a split keep metres and which share the rest, from the
 // lengths examples of different sizes gave them.
-#include "inverse/size_plan.hpp"
+#include "inverse/sizes/size_plan.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// Coordinates that measure one place made one (inverse/snapped_coordinates.hpp):
+// Coordinates that measure one place made one (inverse/load/snapped_coordinates.hpp):
 // rows and columns annotated a pixel apart line up, places further apart
 // than the noise level stay apart, and no coordinate moves by more than it.
-#include "inverse/snapped_coordinates.hpp"
+#include "inverse/load/snapped_coordinates.hpp"
 
 #include <gtest/gtest.h>
 

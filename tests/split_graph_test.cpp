@@ -1,6 +1,6 @@
 // From split trees to operation graphs, and the round trip that matters:
 // deriving the graph inferred from an example gives back the example.
-#include "inverse/split_graph.hpp"
+#include "inverse/split/split_graph.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <map>
 #include <set>
 
-#include "forward/obj_writer.hpp"
-#include "graph/error.hpp"
+#include "base/error.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
+#include "io/obj_writer.hpp"
 #include "support/derive_helpers.hpp"
 #include "support/example_helpers.hpp"
 #include "support/run_command.hpp"

@@ -1,5 +1,5 @@
 // Rebuilding a graph with some nodes replaced.
-#include "inverse/substitute.hpp"
+#include "inverse/merge/substitute.hpp"
 
 #include <gtest/gtest.h>
 

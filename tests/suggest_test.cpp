@@ -1,6 +1,6 @@
 // "Did you mean": edit distances within a bound, the closest candidate, and
 // names as messages show them.
-#include "graph/suggest.hpp"
+#include "base/suggest.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "inverse/support.hpp"
+#include "inverse/sizes/support.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-// infer's test buildings (inverse/test_buildings.hpp): a limit reached is a
+// infer's test buildings (inverse/write/test_buildings.hpp): a limit reached is a
 // warning that says where, any other failure is thrown.
-#include "inverse/test_buildings.hpp"
+#include "inverse/write/test_buildings.hpp"
 
 #include <gtest/gtest.h>
 
-#include "graph/error.hpp"
+#include "base/error.hpp"
 #include "graph/parser.hpp"
 
 namespace vern {

@@ -1,6 +1,6 @@
 // tidy_numbers: relative sizes as small whole ratios where they have
 // them, beside absolute parts too, and the same lengths derived.
-#include "inverse/tidy_numbers.hpp"
+#include "inverse/sizes/tidy_numbers.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,13 +2,13 @@
 // repeats of far-apart tile lengths stay different kinds (merge.cpp's
 // TileLengths): through merge_examples, on example graphs as inference
 // builds them.
-#include "inverse/tile_choices.hpp"
+#include "inverse/merge/tile_choices.hpp"
 
 #include <gtest/gtest.h>
 
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/merge.hpp"
+#include "inverse/merge/merge.hpp"
 #include "support/example_graphs.hpp"
 
 namespace vern {

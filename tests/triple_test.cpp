@@ -1,5 +1,5 @@
 // Triple: three values on the heap that behave like std::array.
-#include "graph/triple.hpp"
+#include "base/triple.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 // Whole buildings turned a quarter about z (turned_examples.hpp).
-#include "inverse/turned_examples.hpp"
+#include "inverse/load/turned_examples.hpp"
 
 #include <gtest/gtest.h>
 
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
-#include "inverse/derived_example.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
+#include "inverse/load/derived_example.hpp"
 #include "support/example_helpers.hpp"
 
 namespace vern {

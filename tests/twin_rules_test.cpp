@@ -1,6 +1,6 @@
 // Subgraphs built alike but for some numbers or an axis become one rule
 // with parameters; the grammar still derives exactly what it did.
-#include "inverse/twin_rules.hpp"
+#include "inverse/merge/twin_rules.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include "graph/description_length.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
 #include "support/example_helpers.hpp"
 

@@ -1,5 +1,5 @@
 // Rules nothing calls are dropped; what the grammar derives stays the same.
-#include "inverse/unused_rules.hpp"
+#include "inverse/write/unused_rules.hpp"
 
 #include <gtest/gtest.h>
 

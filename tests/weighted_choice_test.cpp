@@ -1,5 +1,5 @@
 // A place's choice with plain nested choices spread (weighted_choice.hpp).
-#include "inverse/weighted_choice.hpp"
+#include "inverse/merge/weighted_choice.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "inverse/tidy_numbers.hpp"
+#include "inverse/sizes/tidy_numbers.hpp"
 
 namespace vern {
 namespace {

@@ -10,11 +10,11 @@
 #include <set>
 #include <sstream>
 
+#include "base/error.hpp"
 #include "forward/derive.hpp"
-#include "forward/obj_reader.hpp"
-#include "graph/error.hpp"
 #include "graph/parser.hpp"
-#include "inverse/box_split.hpp"
+#include "inverse/split/box_split.hpp"
+#include "io/obj_reader.hpp"
 
 namespace vern {
 namespace {

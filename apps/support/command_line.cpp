@@ -4,8 +4,8 @@
 #include <charconv>
 #include <cmath>
 
-#include "graph/error.hpp"
-#include "graph/suggest.hpp"
+#include "base/error.hpp"
+#include "base/suggest.hpp"
 
 namespace vern {
 

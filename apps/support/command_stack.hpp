@@ -8,14 +8,14 @@
 // command runs its work on a thread of its own and gives that thread, and
 // every thread started after it, at least kMinimumStack, or the user's
 // limit when it is larger (a deeper grammar then goes deeper).
-// graph/stack_guard.hpp still stops recursion before the end of
+// base/stack_guard.hpp still stops recursion before the end of
 // whatever stack a thread has.
 #pragma once
 
 #include <cstddef>
 #include <functional>
 
-#include "graph/sanitizers.hpp"
+#include "base/sanitizers.hpp"
 
 namespace vern {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <optional>
 
-#include "graph/error.hpp"
+#include "base/error.hpp"
 
 namespace vern {
 

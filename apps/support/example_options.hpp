@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "inverse/example.hpp"
-#include "inverse/examples_of_files.hpp"
+#include "inverse/load/example.hpp"
+#include "inverse/load/examples_of_files.hpp"
 #include "support/command_line.hpp"
 
 namespace vern {

@@ -4,11 +4,11 @@
 #include <iostream>
 #include <new>
 
-#include "graph/error.hpp"
-#include "graph/files_read.hpp"
-#include "graph/freed_memory.hpp"
-#include "graph/huge_pages.hpp"
-#include "graph/interrupt_cleanup.hpp"
+#include "base/error.hpp"
+#include "base/files_read.hpp"
+#include "base/freed_memory.hpp"
+#include "base/huge_pages.hpp"
+#include "base/interrupt_cleanup.hpp"
 #include "graph/label.hpp"
 #include "support/command_stack.hpp"
 

@@ -1,6 +1,6 @@
 #include "support/output_paths.hpp"
 
-#include "graph/error.hpp"
+#include "base/error.hpp"
 
 namespace vern {
 

@@ -6,7 +6,7 @@
 
 #include "forward/mesh.hpp"
 #include "forward/primitive_library.hpp"
-#include "inverse/example.hpp"
+#include "inverse/load/example.hpp"
 
 namespace vern::fuzz {
 

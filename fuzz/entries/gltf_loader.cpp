@@ -2,13 +2,13 @@
 // example loader takes it, or says what is wrong with the file or which
 // limit it reaches (a small file may place one mesh many times over:
 // --max-faces, --max-total-faces); what it takes must keep the example's
-// promises. A GLB the plain reader reads (inverse/plain_glb.hpp) must read
+// promises. A GLB the plain reader reads (io/plain_glb.hpp) must read
 // the same through tinygltf.
 #include <cstring>
 
 #include "entries.hpp"
 #include "example_invariants.hpp"
-#include "inverse/plain_glb.hpp"
+#include "io/plain_glb.hpp"
 #include "scratch_file.hpp"
 #include "verdict.hpp"
 

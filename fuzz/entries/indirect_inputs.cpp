@@ -19,9 +19,9 @@
 #include "folder_opens.hpp"
 #include "folder_snapshot.hpp"
 #include "folder_tree.hpp"
+#include "forward/primitive_sources.hpp"
 #include "graph/parser.hpp"
 #include "scratch_file.hpp"
-#include "forward/primitive_sources.hpp"
 #include "verdict.hpp"
 
 namespace vern::fuzz {

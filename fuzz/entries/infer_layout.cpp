@@ -9,10 +9,10 @@
 #include "graph/parser.hpp"
 #include "graph/structural.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
-#include "inverse/layered_parts.hpp"
-#include "inverse/test_buildings.hpp"
+#include "inverse/load/layered_parts.hpp"
+#include "inverse/write/test_buildings.hpp"
 #include "layout.hpp"
 #include "verdict.hpp"
 
@@ -81,7 +81,7 @@ std::string run(const Layout& layout) {
              excerpt(text) + "\n--- layout:\n" + describe(layout);
   }
 
-  // As the infer command does before writing (inverse/test_buildings.hpp):
+  // As the infer command does before writing (inverse/write/test_buildings.hpp):
   // derivations must run; one that reaches a limit is a warning there, not
   // a failure. A tenth of infer's terminal limit keeps each input quick.
   TestBuildingsOptions tests;

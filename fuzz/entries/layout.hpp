@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "entries.hpp"
-#include "inverse/example.hpp"
+#include "inverse/load/example.hpp"
 
 namespace vern::fuzz {
 

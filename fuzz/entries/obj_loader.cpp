@@ -5,7 +5,7 @@
 
 #include "entries.hpp"
 #include "example_invariants.hpp"
-#include "forward/obj_reader.hpp"
+#include "io/obj_reader.hpp"
 #include "scratch_file.hpp"
 #include "verdict.hpp"
 

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "base/error.hpp"
 #include "forward/primitive_library.hpp"
-#include "graph/error.hpp"
 #include "graph/grammar.hpp"
-#include "inverse/example.hpp"
+#include "inverse/load/example.hpp"
 #include "vernacular/error.hpp"
 #include "vernacular/io.hpp"
 

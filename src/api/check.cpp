@@ -2,7 +2,7 @@
 #include "vernacular/check.hpp"
 
 #include "api/api_data.hpp"
-#include "inverse/example_verdict.hpp"
+#include "inverse/check/example_verdict.hpp"
 
 namespace vernacular {
 

@@ -2,7 +2,7 @@
 #include "vernacular/grammar.hpp"
 
 #include "api/api_data.hpp"
-#include "graph/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "graph/parser.hpp"
 #include "graph/writer.hpp"
 

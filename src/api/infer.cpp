@@ -7,8 +7,8 @@
 #include "graph/reserved_words.hpp"
 #include "graph/writer.hpp"
 #include "inverse/infer.hpp"
-#include "inverse/inferred_files.hpp"
-#include "inverse/test_buildings.hpp"
+#include "inverse/write/inferred_files.hpp"
+#include "inverse/write/test_buildings.hpp"
 
 namespace vernacular {
 

@@ -4,13 +4,13 @@
 
 #include "api/api_data.hpp"
 #include "api/buildings.hpp"
-#include "forward/gltf_writer.hpp"
-#include "forward/obj_writer.hpp"
+#include "base/error.hpp"
+#include "base/parallel_for.hpp"
 #include "forward/primitive_sources.hpp"
 #include "forward/variants.hpp"
-#include "graph/error.hpp"
-#include "graph/parallel_for.hpp"
-#include "inverse/examples_of_files.hpp"
+#include "inverse/load/examples_of_files.hpp"
+#include "io/gltf_writer.hpp"
+#include "io/obj_writer.hpp"
 
 namespace fs = std::filesystem;
 

@@ -5,9 +5,9 @@
 #include "forward/layout_faults.hpp"
 #include "forward/variants.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
-#include "inverse/derived_example.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
+#include "inverse/load/derived_example.hpp"
 
 namespace vern {
 

@@ -7,17 +7,17 @@
 
 #include <unistd.h>
 
+#include "base/error.hpp"
+#include "base/parallel_for.hpp"
 #include "forward/derive.hpp"
 #include "forward/layout_faults.hpp"
-#include "forward/obj_writer.hpp"
 #include "forward/primitive_library.hpp"
 #include "forward/variants.hpp"
-#include "graph/error.hpp"
-#include "graph/parallel_for.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
-#include "inverse/derived_example.hpp"
+#include "inverse/check/check.hpp"
 #include "inverse/infer.hpp"
+#include "inverse/load/derived_example.hpp"
+#include "io/obj_writer.hpp"
 
 namespace fs = std::filesystem;
 

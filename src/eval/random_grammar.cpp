@@ -3,9 +3,9 @@
 #include <cmath>
 #include <vector>
 
+#include "base/error.hpp"
+#include "base/number_format.hpp"
 #include "forward/random_stream.hpp"
-#include "graph/error.hpp"
-#include "graph/number_format.hpp"
 
 namespace vern {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <set>
 
+#include "base/number_format.hpp"
 #include "forward/random_stream.hpp"
-#include "graph/number_format.hpp"
 
 namespace vern {
 

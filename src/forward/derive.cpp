@@ -7,12 +7,12 @@
 #include <cmath>
 #include <limits>
 
+#include "base/number_format.hpp"
+#include "base/stack_guard.hpp"
 #include "forward/evaluate.hpp"
 #include "forward/program.hpp"
 #include "forward/random_stream.hpp"
 #include "forward/rule_chain.hpp"
-#include "graph/stack_guard.hpp"
-#include "graph/number_format.hpp"
 
 namespace vern {
 

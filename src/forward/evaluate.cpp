@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "graph/number_format.hpp"
+#include "base/number_format.hpp"
 
 namespace vern {
 

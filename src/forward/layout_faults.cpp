@@ -4,7 +4,7 @@
 #include <numeric>
 #include <vector>
 
-#include "graph/number_format.hpp"
+#include "base/number_format.hpp"
 
 namespace vern {
 

@@ -1,6 +1,6 @@
 #include "forward/primitive_check.hpp"
 
-#include "graph/suggest.hpp"
+#include "base/suggest.hpp"
 
 namespace vern {
 

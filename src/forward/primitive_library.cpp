@@ -9,12 +9,12 @@
 // leak into every user of the library.
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
+#include "base/error.hpp"
+#include "base/folder_confinement.hpp"
+#include "base/input_file.hpp"
 #include "forward/builtin_primitives.hpp"
-#include "forward/obj_reader.hpp"
-#include "graph/error.hpp"
-#include "graph/folder_confinement.hpp"
-#include "graph/input_file.hpp"
 #include "graph/label.hpp"
+#include "io/obj_reader.hpp"
 
 namespace vern {
 

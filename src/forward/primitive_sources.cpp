@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "graph/error.hpp"
-#include "graph/folder_confinement.hpp"
+#include "base/error.hpp"
+#include "base/folder_confinement.hpp"
 #include "graph/label.hpp"
 
 namespace vern {

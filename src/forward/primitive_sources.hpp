@@ -2,7 +2,7 @@
 // @primitives (relative to the grammar file), then --primitives.
 //
 // @primitives is the grammar's choice, not the user's: it may name only
-// files in the grammar's folder or below it (graph/folder_confinement.hpp)
+// files in the grammar's folder or below it (base/folder_confinement.hpp)
 // unless outside_files (--allow-outside-files). --primitives is the user's
 // own path: any file.
 #pragma once

@@ -1,6 +1,6 @@
 #include "forward/program.hpp"
 
-#include "graph/overload.hpp"
+#include "base/overload.hpp"
 
 namespace vern {
 

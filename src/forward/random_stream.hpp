@@ -11,15 +11,9 @@
 
 #include <cstdint>
 
-namespace vern {
+#include "base/hashing.hpp"
 
-// SplitMix64's finaliser: a bijective, well-mixed 64-bit hash.
-constexpr std::uint64_t mix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
+namespace vern {
 
 // One mix per step: parent keys are themselves mixed, so offsetting them by
 // an odd multiple of the slot gives independent-looking children.

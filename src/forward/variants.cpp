@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <thread>
 
+#include "base/error.hpp"
+#include "base/parallel_for.hpp"
 #include "forward/program.hpp"
-#include "graph/error.hpp"
-#include "graph/parallel_for.hpp"
 
 namespace vern {
 

@@ -26,7 +26,8 @@
 #include <string_view>
 #include <vector>
 
-#include "graph/error.hpp"
+#include "base/error.hpp"
+#include "base/hashing.hpp"
 #include "graph/value.hpp"
 
 namespace vern {
@@ -141,10 +142,5 @@ class Expr {
     Rest() : many(nullptr) {}
   } rest_;
 };
-
-// Mixes v into seed (boost-style, 64-bit); shared by every structural hash.
-inline std::size_t hash_combine(std::size_t seed, std::size_t v) {
-  return seed ^ (v + 0x9e3779b97f4a7c15ULL + (seed << 12) + (seed >> 4));
-}
 
 }  // namespace vern

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "graph/name_index.hpp"
+#include "base/name_index.hpp"
 #include "graph/node.hpp"
 
 namespace vern {

@@ -2,7 +2,7 @@
 
 #include <unordered_map>
 
-#include "graph/overload.hpp"
+#include "base/overload.hpp"
 
 namespace vern {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "graph/utf8.hpp"
+#include "base/utf8.hpp"
 
 namespace vern {
 

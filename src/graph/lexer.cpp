@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "graph/decimal_range.hpp"
-#include "graph/utf8.hpp"
+#include "base/decimal_range.hpp"
+#include "base/utf8.hpp"
 
 namespace vern {
 

@@ -3,7 +3,7 @@
 #include <array>
 #include <type_traits>
 
-#include "graph/overload.hpp"
+#include "base/overload.hpp"
 
 namespace vern {
 

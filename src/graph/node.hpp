@@ -16,8 +16,8 @@
 #include <variant>
 #include <vector>
 
+#include "base/triple.hpp"
 #include "graph/expr.hpp"
-#include "graph/triple.hpp"
 
 namespace vern {
 

@@ -37,14 +37,14 @@
 #include <map>
 #include <numbers>
 
-#include "graph/input_file.hpp"
+#include "base/input_file.hpp"
+#include "base/name_index.hpp"
+#include "base/out_of_memory.hpp"
+#include "base/stack_guard.hpp"
+#include "base/suggest.hpp"
 #include "graph/label.hpp"
 #include "graph/lexer.hpp"
-#include "graph/name_index.hpp"
-#include "graph/out_of_memory.hpp"
 #include "graph/reserved_words.hpp"
-#include "graph/stack_guard.hpp"
-#include "graph/suggest.hpp"
 
 namespace vern {
 

@@ -6,7 +6,7 @@
 #include <unordered_map>
 #include <utility>
 
-#include "graph/overload.hpp"
+#include "base/overload.hpp"
 
 namespace vern {
 

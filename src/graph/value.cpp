@@ -1,6 +1,6 @@
 #include "graph/value.hpp"
 
-#include "graph/number_format.hpp"
+#include "base/number_format.hpp"
 
 namespace vern {
 

@@ -8,9 +8,9 @@
 #include <string_view>
 #include <unordered_set>
 
+#include "base/number_format.hpp"
+#include "base/overload.hpp"
 #include "graph/label.hpp"
-#include "graph/number_format.hpp"
-#include "graph/overload.hpp"
 
 namespace vern {
 

@@ -13,9 +13,9 @@
 
 #include "forward/primitive_library.hpp"
 #include "graph/grammar.hpp"
-#include "inverse/example.hpp"
-#include "inverse/joint_sizes.hpp"
-#include "inverse/twin_rules.hpp"
+#include "inverse/load/example.hpp"
+#include "inverse/merge/twin_rules.hpp"
+#include "inverse/sizes/joint_sizes.hpp"
 
 namespace vern {
 

@@ -8,7 +8,7 @@
 
 #include "graph/import.hpp"
 #include "graph/parser.hpp"
-#include "inverse/merge.hpp"
+#include "inverse/merge/merge.hpp"
 
 namespace vern::test {
 

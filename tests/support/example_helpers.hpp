@@ -14,8 +14,8 @@
 
 #include "forward/derive.hpp"
 #include "graph/writer.hpp"
-#include "inverse/check.hpp"
-#include "inverse/example.hpp"
+#include "inverse/check/check.hpp"
+#include "inverse/load/example.hpp"
 
 namespace vern::test {
 

@@ -1,0 +1,539 @@
+#include "inverse/merge/repeat_folding.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <map>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "graph/structural.hpp"
+#include "inverse/sizes/tidy_numbers.hpp"
+
+namespace vern {
+
+namespace {
+
+class Folder {
+ public:
+  Folder(Grammar& g, double tolerance, UnlikeTiles unlike, TileCounts* counts, const std::vector<bool>* kept)
+      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts), kept_(kept) {}
+
+  NodeId run(NodeId id) {
+    if (id < memo_.size() && memo_[id] != kNotYet) return memo_[id];
+    if (kept_ != nullptr && id < kept_->size() && (*kept_)[id]) return id;
+    // Children first, by id: running them may intern nodes and move the
+    // arena, so the operation is copied only when it must be rebuilt.
+    const auto [done, changed] = map_children(g_.op(id), [&](NodeId c) { return run(c); });
+    NodeId out = id;
+    if (std::holds_alternative<Split>(g_.op(id))) {
+      Split s = std::get<Split>(g_.op(id));  // a copy: folding interns, which may move the arena
+      for (std::size_t i = 0; i < s.parts.size(); ++i) s.parts[i].child = done[i];
+      out = fold_split(std::move(s), changed);
+      if (out == kNotYet) out = id;
+    } else if (changed) {
+      Operation copy = g_.op(id);
+      const std::vector<NodeId*> slots = child_slots(copy);
+      for (std::size_t i = 0; i < slots.size(); ++i) *slots[i] = done[i];
+      out = g_.intern({std::move(copy), {}});
+    }
+    // Grown by half again, not by the few nodes folding added since.
+    if (memo_.size() <= id) memo_.resize(std::max<std::size_t>(g_.node_count() + g_.node_count() / 2, id + 1), kNotYet);
+    memo_[id] = out;
+    return out;
+  }
+
+ private:
+  struct Run {
+    std::size_t start = 0, period = 0, copies = 0;
+    std::size_t parts() const { return period * copies; }
+  };
+
+  bool same(const SplitPart& a, const SplitPart& b) const {
+    const auto x = a.size.value.literal(), y = b.size.value.literal();
+    return a.size.relative == b.size.relative && x && y && std::abs(*x - *y) <= tol_ &&
+           same_node(a.child, b.child);
+  }
+
+  // Inference interns its graphs, so equal children are one node; a
+  // grammar read from text is compared structurally.
+  bool same_node(NodeId a, NodeId b) const { return a == b || structurally_equal(g_, a, g_, b); }
+
+  // How many times parts[start, start + period) repeats from start on.
+  std::size_t copies(const std::vector<SplitPart>& parts, std::size_t start, std::size_t period) const {
+    std::size_t k = 1;
+    while (start + (k + 1) * period <= parts.size()) {
+      bool equal = true;
+      for (std::size_t j = 0; j < period && equal; ++j) equal = same(parts[start + j], parts[start + k * period + j]);
+      if (!equal) break;
+      ++k;
+    }
+    return k;
+  }
+
+  std::optional<Run> best_run(const std::vector<SplitPart>& parts) const {
+    std::optional<Run> best;
+    for (std::size_t start = 0; start < parts.size(); ++start) {
+      for (std::size_t period = 1; period <= kMaxPeriod && start + 2 * period <= parts.size(); ++period) {
+        const std::size_t k = copies(parts, start, period);
+        if (k < 2) continue;
+        const Run r{start, period, k};
+        if (!best || r.parts() > best->parts() || (r.parts() == best->parts() && r.period < best->period)) best = r;
+      }
+    }
+    return best;
+  }
+
+  bool is_nil(NodeId id) const { return std::holds_alternative<Nil>(g_.op(id)); }
+
+  // The run as one part: repeat(axis, tile){ pattern }, or nullopt when
+  // equal tiles would move some original cut by more than the tolerance.
+  std::optional<SplitPart> fold(const Expr& axis, const std::vector<SplitPart>& parts, const Run& r) {
+    double total = 0;
+    std::vector<double> cuts;  // the run's original cut positions
+    for (std::size_t i = r.start; i < r.start + r.parts(); ++i) {
+      total += *parts[i].size.value.literal();
+      cuts.push_back(total);
+    }
+    const double tile = total / static_cast<double>(r.copies);
+    double pattern = 0;
+    std::vector<double> inner;
+    for (std::size_t j = 0; j < r.period; ++j) inner.push_back(pattern += *parts[r.start + j].size.value.literal());
+    for (std::size_t i = 0; i < cuts.size(); ++i) {
+      const std::size_t copy = i / r.period, j = i % r.period;
+      const double at = static_cast<double>(copy) * tile + inner[j] * (tile / pattern);
+      if (std::abs(at - cuts[i]) > tol_) return std::nullopt;
+    }
+    NodeId body = parts[r.start].child;
+    if (r.period > 1) body = group(axis, parts, r.start, r.start + r.period);
+    return repeat_part(axis, total, r.copies, body, parts[r.start].size.relative);
+  }
+
+  // A row of compound tiles (a pattern of two parts or more, seen twice
+  // in a row somewhere) among other parts: the pattern's occurrences (the
+  // same parts, of any sizes) cover at least half the row, and the rest
+  // lies in stretches between them. Each run of equal occurrences (one
+  // copy too: another example may show two) becomes a repeat of the
+  // pattern, and each stretch of two parts or more one group, a split of
+  // its own (the entrance bay between the shop bays; merging's simplifier
+  // may write it in place again). So rows with the entrance after one, two or no bays are one
+  // structure but for where the runs are, and each bay one node, not a
+  // long split per example (issue 15, "compound tiles"). False, leaving
+  // parts as they were, when there is no such row or a repeat would move
+  // a cut by more than the tolerance. r is best_run(parts), which the
+  // caller has already found.
+  bool segment_row(const Expr& axis, std::vector<SplitPart>& parts, std::optional<Run> r) {
+    // Tiles whose sizes inside differ from tile to tile (a window width
+    // drawn for each bay) repeat no run exactly: where unlike tiles may
+    // fold, the pattern is found among occurrences alike but for sizes.
+    const bool alike_tiles = unlike_ == UnlikeTiles::Fold;
+    const bool exact = r && r->period >= 2;
+    if (!exact && alike_tiles) r = alike_run(parts);
+    if (!r || r->period < 2) return false;
+    // The row cut into runs of occurrences and stretches between them,
+    // for the pattern as run r reads it.
+    struct Segment {
+      std::size_t from, to, copies;  // copies: 0 for a stretch of other parts
+    };
+    struct Row {
+      std::vector<Segment> segments;
+      std::size_t covered = 0;  // parts in occurrences
+    };
+    auto segment = [&](const Run& run) {
+      // An occurrence has the pattern's children and kinds of size; its
+      // sizes may differ (a bay 4 m wide before the entrance, 3.4 m
+      // after). A run is a sequence of occurrences equal to each other.
+      auto occurs_at = [&](std::size_t i) { return alike(parts, run.start, i, run.period); };
+      auto equal_copies = [&](std::size_t i, std::size_t k) {
+        for (std::size_t j = 0; j < run.period; ++j)
+          if (!same(parts[i + j], parts[k + j])) return false;
+        return true;
+      };
+      // Occurrences of one length are one run where unlike tiles may
+      // fold: a repeat of a choice of the occurrences, which merging
+      // unites.
+      auto one_run = [&](std::size_t i, std::size_t k) {
+        return equal_copies(i, k) ||
+               (alike_tiles && std::abs(length_of(parts, i, run.period) - length_of(parts, k, run.period)) <= tol_);
+      };
+      Row row;
+      auto& segments = row.segments;
+      for (std::size_t i = 0; i < parts.size();) {
+        if (occurs_at(i)) {
+          if (!segments.empty() && segments.back().copies > 0 && segments.back().to == i &&
+              one_run(segments.back().from, i)) {
+            segments.back().to += run.period;
+            ++segments.back().copies;
+          } else {
+            segments.push_back({i, i + run.period, 1});
+          }
+          row.covered += run.period;
+          i += run.period;
+        } else {
+          if (!segments.empty() && segments.back().copies == 0) ++segments.back().to;
+          else segments.push_back({i, i + 1, 0});
+          ++i;
+        }
+      }
+      return row;
+    };
+    // The pattern in the tiles' own phase: a bay whose piers share a
+    // label with the entrance's walls (pier, panes, pier) is also read a
+    // part later (pier, pier, panes), and that phase may repeat as often.
+    // Of the pattern's phases, the one whose occurrences cover the most
+    // of the row, in the fewest segments.
+    Row row = segment(*r);
+    for (std::size_t shift = 1; shift < r->period; ++shift) {
+      const Run turned{r->start + shift, r->period, 0};
+      if (!alike(parts, turned.start, turned.start + turned.period, turned.period)) continue;
+      Row other = segment(turned);
+      if (other.covered > row.covered || (other.covered == row.covered && other.segments.size() < row.segments.size()))
+        row = std::move(other);
+    }
+    const std::vector<Segment>& segments = row.segments;
+    const std::size_t covered = row.covered;
+    if (2 * covered < parts.size() || segments.size() < 2) return false;
+    // Found among alike occurrences: only where some run repeats.
+    if (!exact && std::none_of(segments.begin(), segments.end(), [](const Segment& seg) { return seg.copies > 1; }))
+      return false;
+    std::vector<SplitPart> out;
+    for (const Segment& seg : segments) {
+      if (seg.copies > 0) {
+        auto folded = fold(axis, parts, Run{seg.from, r->period, seg.copies});
+        if (!folded && alike_tiles) folded = fold_alike(axis, parts, Run{seg.from, r->period, seg.copies});
+        if (!folded) return false;
+        out.push_back(*folded);
+      } else if (seg.to - seg.from == 1) {
+        out.push_back(parts[seg.from]);
+      } else {
+        double length = 0;
+        bool relative = true;
+        for (std::size_t j = seg.from; j < seg.to; ++j) {
+          length += *parts[j].size.value.literal();
+          relative = relative && parts[j].size.relative;
+        }
+        if (!relative) return false;
+        SplitPart grouped;
+        grouped.child = group(axis, parts, seg.from, seg.to);
+        grouped.size = Size{Expr::number(length), true};
+        out.push_back(std::move(grouped));
+      }
+    }
+    parts = std::move(out);
+    return true;
+  }
+
+  // The length of parts[i, i + period), all literal.
+  static double length_of(const std::vector<SplitPart>& parts, std::size_t i, std::size_t period) {
+    double length = 0;
+    for (std::size_t j = 0; j < period; ++j) length += *parts[i + j].size.value.literal();
+    return length;
+  }
+
+  // Do parts[a, a + period) and parts[b, b + period) hold the same
+  // children with the same kinds of size, whatever the sizes?
+  bool alike(const std::vector<SplitPart>& parts, std::size_t a, std::size_t b, std::size_t period) const {
+    if (b + period > parts.size()) return false;
+    for (std::size_t j = 0; j < period; ++j) {
+      const SplitPart& x = parts[a + j];
+      const SplitPart& y = parts[b + j];
+      if (x.size.relative != y.size.relative || !x.size.value.literal() || !y.size.value.literal() ||
+          !same_node(x.child, y.child))
+        return false;
+    }
+    return true;
+  }
+
+  // The run of consecutive alike occurrences of a pattern of two parts or
+  // more whose occurrences most often come in a row of one length: the
+  // tiles' own phase (wall, window, wall), not the same run read a part
+  // later (window, wall, wall), whose occurrences' lengths differ where
+  // the windows do. Then the longest, the shortest pattern, the leftmost.
+  std::optional<Run> alike_run(const std::vector<SplitPart>& parts) const {
+    std::optional<Run> best;
+    std::size_t best_tiled = 0;
+    for (std::size_t start = 0; start < parts.size(); ++start) {
+      for (std::size_t period = 2; period <= kMaxPeriod && start + 2 * period <= parts.size(); ++period) {
+        std::size_t k = 1;
+        while (alike(parts, start, start + k * period, period)) ++k;
+        if (k < 2) continue;
+        // Occurrences with a neighbour of the same length.
+        std::size_t tiled = 0;
+        for (std::size_t c = 0; c < k; ++c) {
+          const double here = length_of(parts, start + c * period, period);
+          const bool before = c > 0 && std::abs(length_of(parts, start + (c - 1) * period, period) - here) <= tol_;
+          const bool after = c + 1 < k && std::abs(length_of(parts, start + (c + 1) * period, period) - here) <= tol_;
+          if (before || after) ++tiled;
+        }
+        const Run r{start, period, k};
+        if (!best || tiled > best_tiled ||
+            (tiled == best_tiled && (r.parts() > best->parts() || (r.parts() == best->parts() && r.period < best->period)))) {
+          best = r;
+          best_tiled = tiled;
+        }
+      }
+    }
+    return best;
+  }
+
+  // A run of occurrences of one length whose sizes inside differ: a
+  // repeat of a choice of them (fold_tiles), every cut where it was.
+  std::optional<SplitPart> fold_alike(const Expr& axis, const std::vector<SplitPart>& parts, const Run& r) {
+    std::vector<double> at{0};
+    for (std::size_t i = r.start; i < r.start + r.parts(); ++i) at.push_back(at.back() + *parts[i].size.value.literal());
+    std::vector<std::size_t> starts;
+    for (std::size_t c = 0; c <= r.copies; ++c) starts.push_back(c * r.period);
+    return fold_tiles(axis, parts, r.start, at, starts, at.back() / static_cast<double>(r.copies));
+  }
+
+  // The parts [from, to) as one split of relative sizes (their lengths).
+  NodeId group(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from, std::size_t to) {
+    Split s{axis, {}};
+    for (std::size_t j = from; j < to; ++j) s.parts.push_back({{parts[j].size.value, true}, parts[j].child});
+    return g_.intern({std::move(s), {}});
+  }
+
+  // copies tiles of body on a part of length total, as repeat(axis, tile).
+  SplitPart repeat_part(const Expr& axis, double total, std::size_t copies, NodeId body, bool relative) {
+    // The written tile size: any size in (L / n, L / (n - 1)] makes n tiles
+    // on L, and a size exactly L / n would make n + 1 once rounding nudges
+    // L up. So the shortest decimal a hair above the tile, within a
+    // percent (and a half tile count) of it: 2.9 for 2.8999997, not the
+    // noise.
+    const double n = static_cast<double>(copies);
+    const double tile = total / n;
+    const double low = tile * (1 + 1e-5), high = tile * (1 + std::min(0.01, 0.5 / n));
+    const double written = shortest_decimal((low + high) / 2, (high - low) / 2);
+    const NodeId tiles = g_.intern({Repeat{axis, Expr::number(written), body}, {}});
+    if (counts_) (*counts_)[tiles].push_back({static_cast<std::uint32_t>(copies), total});
+    return SplitPart{{Expr::number(total), relative}, tiles};
+  }
+
+  // Equal tiles holding different things (issue 4, "repeats that
+  // stretch", for rows of unlike buildings): parts [from, to) cut into
+  // k >= 3 pieces of one length at cuts the split already has, each piece
+  // one part or a group of parts (a plot of three tower strips), become
+  // repeat(axis, tile){ choose{ what the pieces hold } }, weighted by how
+  // often each occurs. Only where the pieces are built, not bare
+  // primitives: a window and a door of one width in a row keep their
+  // places. nullopt when no such tiling exists or it would move a cut by
+  // more than the tolerance.
+  std::optional<SplitPart> fold_unlike(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from,
+                                       std::size_t to) {
+    if (to - from < 3) return std::nullopt;
+    std::vector<double> at{0};  // cut positions from parts[from]
+    at.reserve(to - from + 1);
+    for (std::size_t i = from; i < to; ++i) at.push_back(at.back() + *parts[i].size.value.literal());
+    const double total = at.back();
+    // The first tile ends at one of the first cuts; the largest count wins.
+    for (std::size_t m = 1; m < at.size() - 1 && m <= kMaxPartsPerTile; ++m) {
+      const auto k = static_cast<std::size_t>(std::lround(total / at[m]));
+      if (k < 3 || k > to - from) continue;
+      const double tile = total / static_cast<double>(k);
+      std::vector<std::size_t> starts{0};  // each tile's first part, from `from`
+      starts.reserve(k + 1);
+      for (std::size_t j = 1, i = 1; j < k && i < at.size(); ++j) {
+        while (i < at.size() && at[i] < static_cast<double>(j) * tile - tol_) ++i;
+        if (i == at.size() || std::abs(at[i] - static_cast<double>(j) * tile) > tol_) break;
+        starts.push_back(i);
+      }
+      if (starts.size() != k) continue;
+      starts.push_back(to - from);
+      if (auto part = fold_tiles(axis, parts, from, at, starts, tile)) return part;
+    }
+    return std::nullopt;
+  }
+
+  std::optional<SplitPart> fold_tiles(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from,
+                                      const std::vector<double>& at, const std::vector<std::size_t>& starts,
+                                      double tile) {
+    const std::size_t k = starts.size() - 1;
+    // Every cut stays where it was: inside a tile, its parts keep their
+    // shares of the tile.
+    for (std::size_t t = 0; t < k; ++t) {
+      const double begin = at[starts[t]], length = at[starts[t + 1]] - begin;
+      for (std::size_t i = starts[t]; i <= starts[t + 1]; ++i) {
+        const double moved = static_cast<double>(t) * tile + (at[i] - begin) * (tile / length);
+        if (std::abs(moved - at[i]) > tol_) return std::nullopt;
+      }
+    }
+    std::vector<std::pair<NodeId, double>> held;  // distinct tiles, with counts
+    bool built = false, empty = false;
+    for (std::size_t t = 0; t < k; ++t) {
+      const std::size_t a = from + starts[t], b = from + starts[t + 1];
+      NodeId piece = parts[a].child;
+      if (b - a > 1) {
+        Split grouped = std::get<Split>(g_.op(group(axis, parts, a, b)));
+        piece = fold_split(std::move(grouped), true);
+      }
+      built = built || !is_primitive(piece);
+      empty = empty || is_nil(piece);
+      auto it = std::find_if(held.begin(), held.end(), [&](const auto& h) {
+        return same_node(h.first, piece);
+      });
+      if (it == held.end()) held.emplace_back(piece, 1.0);
+      else it->second += 1;
+    }
+    if (held.size() > 1 && (!built || empty || !exchangeable(held))) return std::nullopt;
+    NodeId body = held[0].first;
+    if (held.size() > 1) {
+      Choose choose;
+      choose.options.reserve(held.size());
+      for (const auto& [piece, count] : held) choose.options.push_back({Expr{}, Expr::number(count), piece});
+      body = g_.intern({std::move(choose), {}});
+    }
+    return repeat_part(axis, at.back(), k, body, parts[from].size.relative);
+  }
+
+  // Tiles that may trade places: none holds a primitive that no other
+  // tile holds. A ground floor with the only door, under storeys of
+  // windows, is not one of the storeys; the storeys above it are.
+  bool exchangeable(const std::vector<std::pair<NodeId, double>>& held) {
+    std::map<LabelId, std::size_t> tiles_with;  // label -> tiles holding it
+    for (const auto& [piece, count] : held)
+      for (LabelId label : labels_below(piece)) tiles_with[label] += static_cast<std::size_t>(count);
+    return std::all_of(tiles_with.begin(), tiles_with.end(), [](const auto& l) { return l.second >= 2; });
+  }
+
+  // The labels of the primitives below a node, ascending (memoised).
+  const std::vector<LabelId>& labels_below(NodeId id) {
+    if (id < labels_known_.size() && labels_known_[id]) return labels_[id];
+    std::vector<LabelId> out;
+    if (const auto* p = std::get_if<Primitive>(&g_.op(id))) out.push_back(p->label);
+    // All the children's labels, then sorted once: a union per child made
+    // a vector per child.
+    std::size_t count = out.size();
+    for_each_child(g_.op(id), [&](NodeId c) { count += labels_below(c).size(); });
+    out.reserve(count);
+    for_each_child(g_.op(id), [&](NodeId c) {
+      const std::vector<LabelId>& below = labels_below(c);
+      out.insert(out.end(), below.begin(), below.end());
+    });
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    if (id >= labels_.size()) {
+      // Grown by half again: folding adds nodes as it goes.
+      labels_.resize(std::max<std::size_t>(g_.node_count() + g_.node_count() / 2, id + 1));
+      labels_known_.resize(labels_.size(), false);
+    }
+    labels_known_[id] = true;
+    return labels_[id] = std::move(out);
+  }
+
+  // A primitive, turned or not, or empty space: what a tile may hold only
+  // when all tiles hold the same.
+  bool is_primitive(NodeId id) const {
+    const Operation& op = g_.op(id);
+    if (const auto* r = std::get_if<Rotate>(&op)) return is_primitive(r->child);
+    return std::holds_alternative<Primitive>(op) || std::holds_alternative<Nil>(op);
+  }
+
+  // Adjacent empty parts are one empty part, in place; whether any were.
+  bool join_empty_parts(std::vector<SplitPart>& parts) const {
+    std::size_t kept = 0;
+    bool joined = false;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      if (kept > 0 && is_nil(parts[i].child) && is_nil(parts[kept - 1].child) &&
+          parts[kept - 1].size.relative == parts[i].size.relative) {
+        Expr& last = parts[kept - 1].size.value;
+        last = Expr::number(*last.literal() + *parts[i].size.value.literal());
+        joined = true;
+        continue;
+      }
+      if (kept != i) parts[kept] = std::move(parts[i]);
+      ++kept;
+    }
+    parts.resize(kept);
+    return joined;
+  }
+
+  // A run with at most two parts on each side, none of them a tile of
+  // another kind: the storeys between a ground floor and a cornice and
+  // roof, as many as the height allows. Two copies are a run too beside
+  // other parts (two storeys there are the storeys' zone, as three are),
+  // but not alone: two equal halves of a split are a pair, not tiles. A
+  // part as long as a tile just beside the run (a storey with a balcony
+  // above two without) makes it a mixed row, left to merging.
+  bool between_ends(const std::vector<SplitPart>& parts, const Run& r) const {
+    const std::size_t end = r.start + r.parts();
+    if (r.start > 2 || end + 2 < parts.size() || (r.parts() < 3 && r.parts() == parts.size())) return false;
+    const double tile = length_of(parts, r.start, r.period);
+    const bool before = r.start >= r.period && std::abs(length_of(parts, r.start - r.period, r.period) - tile) <= tol_;
+    const bool after = end + r.period <= parts.size() && std::abs(length_of(parts, end, r.period) - tile) <= tol_;
+    return !before && !after;
+  }
+
+  // The split with its parts' children already folded; kNotYet when
+  // nothing changes (children_changed false and no run folded).
+  NodeId fold_split(Split s, bool children_changed) {
+    std::vector<SplitPart> parts = std::move(s.parts);
+    bool literal = s.axis.nodes().size() == 1 && s.axis.node(0).kind == ExprKind::Axis;
+    for (const SplitPart& p : parts) literal = literal && p.size.value.literal();
+    bool changed = children_changed;
+    if (literal) {
+      changed = join_empty_parts(parts) || changed;
+      // Only a run of three parts or more that is (almost) the whole split
+      // is folded, or one between ends (between_ends): the walls or
+      // margins at its ends may differ. A run inside a mixed row (a | a |
+      // b) is left to merging, which lines alike rows up first and finds
+      // what combines freely there.
+      auto replace = [&](std::size_t from, std::size_t to, const SplitPart& folded) {
+        parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(from), parts.begin() + static_cast<std::ptrdiff_t>(to));
+        parts.insert(parts.begin() + static_cast<std::ptrdiff_t>(from), folded);
+        changed = true;
+      };
+      bool folded = false;
+      const auto r = best_run(parts);
+      if (r && ((r->parts() >= 3 && r->parts() + 2 >= parts.size()) || between_ends(parts, *r))) {
+        if (const std::optional<SplitPart> part = fold(s.axis, parts, *r)) {
+          replace(r->start, r->start + r->parts(), *part);
+          folded = true;
+        }
+      }
+      // Else a row of compound tiles with other parts among them (a shop
+      // front of bays with the entrance bay after some of them): each run
+      // of the tiles a repeat, each stretch between runs one group.
+      if (!folded && segment_row(s.axis, parts, r)) {
+        folded = true;
+        changed = true;
+      }
+      // Else equal tiles of unlike contents, over the whole split or all
+      // but one or two end parts (the most parts first).
+      const bool unlike = unlike_ == UnlikeTiles::Fold;
+      for (std::size_t outside = 0; unlike && !folded && outside <= 2 && outside + 3 <= parts.size(); ++outside) {
+        for (std::size_t head = 0; head <= outside && !folded; ++head) {
+          const std::size_t from = head, to = parts.size() - (outside - head);
+          if (auto part = fold_unlike(s.axis, parts, from, to)) {
+            replace(from, to, *part);
+            folded = true;
+          }
+        }
+      }
+    }
+    if (parts.size() == 1 && parts[0].size.relative) return parts[0].child;
+    if (!changed) return kNotYet;
+    return g_.intern({Split{s.axis, std::move(parts)}, {}});
+  }
+
+  static constexpr std::size_t kMaxPeriod = 8;
+  static constexpr std::size_t kMaxPartsPerTile = 16;
+  static constexpr NodeId kNotYet = static_cast<NodeId>(-1);
+  Grammar& g_;
+  double tol_;
+  UnlikeTiles unlike_;
+  TileCounts* counts_;  // where to note each repeat's tile count, or null
+  const std::vector<bool>* kept_;  // by node id: left as it is, or null
+  std::vector<NodeId> memo_;  // by node id; kNotYet until folded
+  std::vector<std::vector<LabelId>> labels_;  // labels_below, by node id
+  std::vector<bool> labels_known_;            // by node id: labels_ holds its labels
+};
+
+}  // namespace
+
+NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike, TileCounts* counts,
+                    const std::vector<bool>* kept) {
+  return Folder(g, tolerance, unlike, counts, kept).run(root);
+}
+
+}  // namespace vern
