@@ -4,11 +4,10 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <vector>
 
-#include "graph/parser.hpp"
-#include "inverse/check/check.hpp"
-#include "inverse/check/example_verdict.hpp"
-#include "inverse/load/example.hpp"
+#include <vernacular/vernacular.hpp>
+
 #include "support/command_line.hpp"
 #include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
@@ -54,7 +53,7 @@ int run(int argc, char** argv) {
   if (args.positional.size() < 2)
     throw Error(ErrorKind::Usage, "check: error: give a grammar and at least one example\n"
                                   "  hint: check style.grm examples/*.obj");
-  CheckOptions options;
+  vernacular::CheckOptions options;
   if (args.has("--tolerance")) {
     options.tolerance = CommandLine::number(args, "--tolerance");
     if (!(options.tolerance > 0))
@@ -64,48 +63,44 @@ int run(int argc, char** argv) {
   if (args.has("--max-steps"))
     options.max_steps = static_cast<std::uint64_t>(CommandLine::integer(args, "--max-steps", 1, 1LL << 50));
   const bool brief = args.has("--brief");
-  ExampleLimits limits = example_limits(args);
-  const std::vector<std::string> stack = stack_order(args);
-  const BuildingsMode buildings = buildings_mode(args);
-  limits.tolerance = options.tolerance;
+  vernacular::ReadOptions reading = read_options(args);
+  reading.tolerance = options.tolerance;
+  options.stack = stack_order(args);
   // A hand-written grammar's plot can be larger than what it built (the
   // city's towers stop below its 80 m plot): --scope names the plot.
-  std::optional<glm::dvec3> scope;
   if (args.has("--scope")) {
-    glm::dvec3 size(0.0);
-    for (int i = 0; i < 3; ++i) {
-      size[i] = CommandLine::number(args, "--scope", static_cast<std::size_t>(i));
+    vernacular::Vec3 size{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      size[i] = CommandLine::number(args, "--scope", i);
       if (size[i] < 0)
-        throw Error(ErrorKind::Usage, "check: error: --scope sizes must be >= 0, got " +
-                                          args.value("--scope", static_cast<std::size_t>(i)) +
+        throw Error(ErrorKind::Usage, "check: error: --scope sizes must be >= 0, got " + args.value("--scope", i) +
                                           "\n  hint: for example --scope 12 8 9 (metres along x, y, z)");
     }
-    scope = size;
+    options.plot = size;
   }
 
-  const Grammar grammar = read_grammar_file(args.positional[0]);
+  const vernacular::Grammar grammar = vernacular::Grammar::read(args.positional[0]);
   const std::vector<fs::path> files =
-      example_files(std::vector<std::string>(args.positional.begin() + 1, args.positional.end()));
+      vernacular::example_files(std::vector<fs::path>(args.positional.begin() + 1, args.positional.end()));
   std::size_t fits = 0, examples = 0;
-  auto check_one = [&](const Example& loaded) {
-    ++examples;
-    const std::string& file = loaded.source;
-    const CheckResult r = example_verdict(grammar, loaded, stack, scope, options);
-    if (r.derivable) {
-      ++fits;
-      std::cout << file << ": derivable\n";
-      if (!brief)
-        for (const auto& line : r.witness) std::cout << "  " << line << "\n";
-    } else {
-      std::cout << file << ": NOT derivable: " << r.mismatch << "\n";
-    }
-  };
-  // A file of several buildings is as many examples (scene_buildings.hpp).
+  // File by file, each said as it is checked; a file of several buildings
+  // is as many examples.
   std::vector<std::string> notes;
-  for (const auto& path : files) {
-    std::vector<Example> file;
-    file.push_back(load_example(path, limits));
-    for (const Example& e : examples_of_files(std::move(file), buildings, options.tolerance, notes)) check_one(e);
+  for (const fs::path& file : files) {
+    const std::vector<vernacular::Example> buildings = vernacular::read_examples({file}, reading);
+    if (!buildings.empty()) notes.insert(notes.end(), buildings.front().notes().begin(), buildings.front().notes().end());
+    for (const vernacular::Example& example : buildings) {
+      ++examples;
+      const vernacular::Verdict v = vernacular::check(grammar, example, options);
+      if (v.derivable) {
+        ++fits;
+        std::cout << example.source() << ": derivable\n";
+        if (!brief)
+          for (const auto& line : v.witness) std::cout << "  " << line << "\n";
+      } else {
+        std::cout << example.source() << ": NOT derivable: " << v.reason << "\n";
+      }
+    }
   }
   print_notes("check", notes);
   std::cout << fits << " of " << examples << " example" << (examples == 1 ? "" : "s") << " derivable from "

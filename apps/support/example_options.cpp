@@ -51,6 +51,24 @@ ExampleLimits example_limits(const ParsedCommandLine& args) {
   return limits;
 }
 
+vernacular::ReadOptions read_options(const ParsedCommandLine& args) {
+  const ExampleLimits limits = example_limits(args);
+  vernacular::ReadOptions o;
+  o.max_parts = limits.max_parts;
+  o.max_faces = limits.max_faces;
+  o.max_total_faces = limits.max_total_faces;
+  o.max_file_bytes = limits.gltf.max_bytes;
+  o.outside_files = limits.gltf.outside_folder;
+  o.obj_up = limits.obj_up == UpAxis::Z ? vernacular::UpAxis::Z : vernacular::UpAxis::Y;
+  switch (buildings_mode(args)) {
+    case BuildingsMode::Apart: o.buildings = vernacular::Buildings::Apart; break;
+    case BuildingsMode::Parts: o.buildings = vernacular::Buildings::Parts; break;
+    case BuildingsMode::Groups: o.buildings = vernacular::Buildings::Groups; break;
+    case BuildingsMode::File: o.buildings = vernacular::Buildings::File; break;
+  }
+  return o;
+}
+
 std::vector<std::string> stack_order(const ParsedCommandLine& args) {
   std::vector<std::string> labels;
   if (!args.has("--stack")) return labels;

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <vernacular/io.hpp>
+
 #include "inverse/load/example.hpp"
 #include "inverse/load/examples_of_files.hpp"
 #include "support/command_line.hpp"
@@ -17,6 +19,10 @@ void add_example_options(CommandLine& cl);
 
 // The limits those options give (Usage errors for values out of range).
 ExampleLimits example_limits(const ParsedCommandLine& args);
+
+// The same limits, --up, --allow-outside-files and --buildings as the
+// public API's reading options (its tolerance left at 0).
+vernacular::ReadOptions read_options(const ParsedCommandLine& args);
 
 // --stack's labels, bottom to top (none when not given); Usage errors for
 // an empty label or one listed twice.

@@ -4,6 +4,8 @@
 #include <iostream>
 #include <new>
 
+#include <vernacular/error.hpp>
+
 #include "base/error.hpp"
 #include "base/files_read.hpp"
 #include "base/freed_memory.hpp"
@@ -13,6 +15,21 @@
 #include "support/command_stack.hpp"
 
 namespace vern {
+
+namespace {
+
+ErrorKind kind_of(vernacular::ErrorKind kind) {
+  switch (kind) {
+    case vernacular::ErrorKind::Usage: return ErrorKind::Usage;
+    case vernacular::ErrorKind::Input: return ErrorKind::Input;
+    case vernacular::ErrorKind::Limit: return ErrorKind::Limit;
+    case vernacular::ErrorKind::Io: return ErrorKind::Io;
+    case vernacular::ErrorKind::Internal: return ErrorKind::Internal;
+  }
+  return ErrorKind::Internal;
+}
+
+}  // namespace
 
 int guarded_main(const char* program, int (*run)(int, char**), int argc, char** argv) {
   install_interrupt_cleanup();
@@ -28,6 +45,9 @@ int guarded_main(const char* program, int (*run)(int, char**), int argc, char** 
   } catch (const Error& e) {
     std::cerr << e.what() << "\n";
     return exit_code(e.kind());
+  } catch (const vernacular::Failure& f) {
+    std::cerr << f.what() << "\n";
+    return exit_code(kind_of(f.error().kind));
   } catch (const std::filesystem::filesystem_error& e) {
     // Every file-system call on a user's path takes an error code and says
     // what went wrong; one that slipped through is still the path's fault,

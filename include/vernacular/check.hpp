@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,9 @@
 namespace vernacular {
 
 struct CheckOptions {
+  // The plot to derive on, its lowest corner at the example's (a grammar's
+  // plot may be larger than what it built); absent: the example's extent.
+  std::optional<Vec3> plot;
   // The example's noise level in metres (0: its own float precision): its
   // coordinates are snapped to it, as infer snaps them.
   double tolerance = 0;

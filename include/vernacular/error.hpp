@@ -46,10 +46,14 @@ struct Error {
   friend bool operator==(const Error&, const Error&) = default;
 };
 
-// What the API throws. what() is error().text().
+// What the API throws. what() is error().text(), or the text given: an
+// error found inside Vernacular keeps the words its finder wrote (lines
+// naming the example concerned, the rule chain), which error() holds
+// taken apart.
 class Failure : public std::exception {
  public:
   explicit Failure(Error error);
+  Failure(Error error, std::string text);
   const Error& error() const noexcept { return error_; }
   const char* what() const noexcept override { return text_.c_str(); }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -36,7 +37,14 @@ struct ReadOptions {
   UpAxis obj_up = UpAxis::Y;
   // A glTF's URIs may name files outside its own folder.
   bool outside_files = false;
-  std::size_t max_parts = 10000;  // labelled parts per example
+  std::size_t max_parts = 10000;              // labelled parts per example
+  std::size_t max_faces = 1'000'000;          // faces per labelled part
+  // Faces (and vertices) a glTF example's parts place in all, a mesh
+  // counting once for each node that places it.
+  std::size_t max_total_faces = 10'000'000;
+  // A glTF or GLB file and each file it names are read whole, up to this
+  // size; and their JSON may take no more memory than this once read.
+  std::uint64_t max_file_bytes = 256ull << 20;
 };
 
 // One labelled part of an example, as read: its world-space box (z up).
@@ -72,6 +80,12 @@ class Example {
 // location names the file and, where known, the line or object), Usage
 // for a file of another type, Limit past options.max_parts.
 std::vector<Example> read_examples(const std::vector<std::filesystem::path>& paths, const ReadOptions& options = {});
+
+// The example files `paths` stand for, in order: a file itself, a folder
+// every .obj, .glb and .gltf file directly in it, by name. Throws Failure:
+// Io for a path that does not exist or a folder without example files,
+// Usage for a file of another kind.
+std::vector<std::filesystem::path> example_files(const std::vector<std::filesystem::path>& paths);
 
 // Writes buildings to one file, laid out side by side on a grid `spacing`
 // metres apart: .obj (with its .mtl beside it), .glb or .gltf, chosen by

@@ -45,7 +45,12 @@ auto guarded(F&& f) -> decltype(f()) {
   } catch (const Failure&) {
     throw;
   } catch (const vern::Error& e) {
-    throw Failure(error_of(e));
+    throw Failure(error_of(e), e.what());
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A file-system call on a user's path that slipped through: the
+    // path's fault (a link that leads to itself), not a bug.
+    throw Failure(Error{ErrorKind::Io, {e.path1().string()}, std::string("cannot read or write: ") + e.code().message(),
+                        "check the path (a link that leads to itself, a folder that cannot be listed)"});
   } catch (const std::bad_alloc&) {
     throw Failure(Error{ErrorKind::Limit, {}, "out of memory", "work on fewer or smaller buildings at once"});
   } catch (const std::exception& e) {

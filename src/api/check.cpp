@@ -12,7 +12,11 @@ Verdict check(const Grammar& grammar, const Example& example, const CheckOptions
     o.tolerance = options.tolerance;
     o.max_steps = options.max_steps;
     vern::CheckResult r =
-        vern::example_verdict(grammar.data().grammar, example.data().example, options.stack, std::nullopt, o);
+        vern::example_verdict(grammar.data().grammar, example.data().example, options.stack,
+                              options.plot ? std::optional<glm::dvec3>(glm::dvec3((*options.plot)[0], (*options.plot)[1],
+                                                                                  (*options.plot)[2]))
+                                           : std::nullopt,
+                              o);
     Verdict v;
     v.derivable = r.derivable;
     v.witness = std::move(r.witness);

@@ -32,6 +32,8 @@ std::string Error::text() const {
 
 Failure::Failure(Error error) : error_(std::move(error)), text_(error_.text()) {}
 
+Failure::Failure(Error error, std::string text) : error_(std::move(error)), text_(std::move(text)) {}
+
 namespace detail {
 namespace {
 

@@ -49,11 +49,12 @@ std::vector<Example> read_examples(const std::vector<fs::path>& paths, const Rea
   return detail::guarded([&] {
     if (paths.empty()) vern::fail(vern::ErrorKind::Usage, "", {}, "no examples given", "name .obj, .gltf or .glb files, or folders of them");
     if (!(options.tolerance >= 0)) vern::fail(vern::ErrorKind::Usage, "", {}, "the tolerance must be >= 0", "0 takes each file's own precision");
-    std::vector<std::string> named;
-    for (const fs::path& p : paths) named.push_back(p.string());
-    const std::vector<fs::path> files = vern::example_files(named);
+    const std::vector<fs::path> files = example_files(paths);
     vern::ExampleLimits limits;
     limits.max_parts = options.max_parts;
+    limits.max_faces = options.max_faces;
+    limits.max_total_faces = options.max_total_faces;
+    limits.gltf.max_bytes = options.max_file_bytes;
     limits.gltf.outside_folder = options.outside_files;
     limits.obj_up = options.obj_up == UpAxis::Z ? vern::UpAxis::Z : vern::UpAxis::Y;
     limits.tolerance = options.tolerance;
@@ -71,6 +72,14 @@ std::vector<Example> read_examples(const std::vector<fs::path>& paths, const Rea
       for (vern::Example& b : buildings) out.push_back(example_of(std::move(b), notes));
     }
     return out;
+  });
+}
+
+std::vector<fs::path> example_files(const std::vector<fs::path>& paths) {
+  return detail::guarded([&] {
+    std::vector<std::string> named;
+    for (const fs::path& p : paths) named.push_back(p.string());
+    return vern::example_files(named);
   });
 }
 

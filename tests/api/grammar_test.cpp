@@ -67,3 +67,21 @@ TEST(ApiGrammar, AMissingFileIsAnIoError) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(ApiGrammar, AFailureSaysWhatTheFinderWroteAndHoldsItTakenApart) {
+  try {
+    vernacular::Grammar::parse("house --> split(z){ 3 : wall }\n", "house.grm");
+    FAIL() << "an unknown rule was read";
+  } catch (const vernacular::Failure& f) {
+    const std::string text = f.what();
+    // The words as written, hint and all, and each piece of them apart.
+    EXPECT_EQ(text.rfind("house.grm:1:", 0), 0u) << text;
+    EXPECT_NE(text.find("error: " + f.error().message), std::string::npos) << text;
+    EXPECT_FALSE(f.error().hint.empty()) << text;
+    EXPECT_NE(text.find("\n  hint: " + f.error().hint), std::string::npos) << text;
+  }
+}
+
+}  // namespace
