@@ -147,7 +147,29 @@ PYBIND11_MODULE(_vernacular, m) {
       "(first, count): shard k (1..n) of a run of total buildings, as generate --shard k/n; "
       "derive_many(g, count, seed=seed + first) derives its buildings.");
 
-  py::class_<v::Example>(m, "Example", "An example building read from a file.")
+  py::class_<v::Example>(m, "Example", "An example building: read from a file, or made with Example.from_boxes.")
+      .def_static(
+          "from_boxes",
+          [](const std::vector<std::string>& labels, py::array_t<double, py::array::c_style | py::array::forcecast> boxes,
+             const std::string& source) {
+            if (boxes.ndim() != 3 || boxes.shape(1) != 2 || boxes.shape(2) != 3 ||
+                static_cast<std::size_t>(boxes.shape(0)) != labels.size())
+              throw v::Failure(v::Error{v::ErrorKind::Usage, {source}, "boxes must be an (n, 2, 3) array, n = len(labels)",
+                                        "give each part's lowest and highest corner: boxes[i] = [[x0, y0, z0], [x1, y1, z1]]"});
+            auto b = boxes.unchecked<3>();
+            std::vector<v::ExamplePart> parts(labels.size());
+            for (std::size_t i = 0; i < labels.size(); ++i) {
+              parts[i].label = labels[i];
+              for (py::ssize_t k = 0; k < 3; ++k) {
+                parts[i].min[static_cast<std::size_t>(k)] = b(static_cast<py::ssize_t>(i), 0, k);
+                parts[i].max[static_cast<std::size_t>(k)] = b(static_cast<py::ssize_t>(i), 1, k);
+              }
+            }
+            return v::Example::from_parts(std::move(parts), source);
+          },
+          "labels"_a, "boxes"_a, "source"_a = "<memory>",
+          "An example made in memory: each part's label and box, boxes an (n, 2, 3) array of lowest and highest "
+          "corners (z up, metres).")
       .def_property_readonly("source", &v::Example::source)
       .def_property_readonly("notes", &v::Example::notes)
       .def_property_readonly("labels", [](const v::Example& e) {

@@ -66,6 +66,14 @@ class Example {
   // it stands turned and was read turned back.
   const std::vector<std::string>& notes() const;
 
+  // An example made in memory, without a file: labelled boxes (world
+  // space, z up; min <= max on every axis) as a program has them
+  // (annotations, another tool's scene). Each part is its box (no mesh).
+  // `source` names it in messages. Throws Failure (Input) for no parts, an
+  // empty or unusable label, a box whose min exceeds its max or that is a
+  // point, a coordinate that is not finite.
+  static Example from_parts(std::vector<ExamplePart> parts, std::string source = "<memory>");
+
   explicit Example(std::shared_ptr<const detail::ExampleData> data);
   const detail::ExampleData& data() const { return *data_; }
 

@@ -2,10 +2,13 @@
 // writers behind the public API.
 #include "vernacular/io.hpp"
 
+#include <cmath>
+
 #include "api/api_data.hpp"
 #include "api/buildings.hpp"
 #include "base/error.hpp"
 #include "base/parallel_for.hpp"
+#include "graph/label.hpp"
 #include "forward/primitive_sources.hpp"
 #include "forward/variants.hpp"
 #include "inverse/load/examples_of_files.hpp"
@@ -20,6 +23,40 @@ const std::string& Example::source() const { return data_->example.source; }
 const std::vector<ExamplePart>& Example::parts() const { return data_->parts; }
 const std::vector<std::string>& Example::notes() const { return data_->notes; }
 Example::Example(std::shared_ptr<const detail::ExampleData> data) : data_(std::move(data)) {}
+
+Example Example::from_parts(std::vector<ExamplePart> parts, std::string source) {
+  return detail::guarded([&] {
+    if (parts.empty())
+      vern::fail(vern::ErrorKind::Input, source, {}, "has no parts", "give the example at least one labelled box");
+    vern::Example e;
+    e.source = source;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      ExamplePart& p = parts[i];
+      const std::string name = p.object.empty() ? p.label + "." + std::to_string(i) : p.object;
+      vern::LabelledBox b;
+      b.label = vern::read_label(p.label, vern::NameOf::Part, source, {}, "part " + std::to_string(i) + "'s label");
+      for (int a = 0; a < 3; ++a) {
+        const auto k = static_cast<std::size_t>(a);
+        if (!std::isfinite(p.min[k]) || !std::isfinite(p.max[k]) || p.min[k] > p.max[k])
+          vern::fail(vern::ErrorKind::Input, source, {},
+                     "part " + std::to_string(i) + " ('" + name + "') is no box: min must be <= max on every axis, finite",
+                     "give each part its lowest and highest corner");
+        b.min[a] = p.min[k];
+        b.max[a] = p.max[k];
+      }
+      b.object = name;
+      p.object = name;
+      b.group = static_cast<std::uint32_t>(i);
+      e.boxes.push_back(std::move(b));
+    }
+    vern::update_bounds(e);
+    vern::refuse_points(e, 0);
+    auto data = std::make_shared<detail::ExampleData>();
+    data->example = std::move(e);
+    data->parts = std::move(parts);
+    return Example(std::move(data));
+  });
+}
 
 namespace {
 

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <vernacular/vernacular.hpp>
 
 namespace fs = std::filesystem;
@@ -65,6 +66,42 @@ TEST(ApiIo, BuildingsAreWrittenByTheExtensionAndOtherExtensionsRefused) {
   }
   EXPECT_FALSE(fs::exists(dir / "houses.stl"));
   fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(ApiIo, AnExampleMadeInMemoryInfersAsItsFileWould) {
+  // Three houses as boxes: a wall and a roof, widths 6, 8 and 10.
+  std::vector<vernacular::Example> examples;
+  for (double width : {6.0, 8.0, 10.0}) {
+    std::vector<vernacular::ExamplePart> parts;
+    parts.push_back({"wall", "", {0, 0, 0}, {width, 4, 2.7}});
+    parts.push_back({"roof", "", {0, 0, 2.7}, {width, 4, 3.9}});
+    examples.push_back(vernacular::Example::from_parts(parts, "house_" + std::to_string(int(width))));
+  }
+  EXPECT_EQ(examples[1].source(), "house_8");
+  EXPECT_EQ(examples[1].parts()[1].object, "roof.1");
+  const vernacular::InferResult style = vernacular::infer(examples);
+  for (const vernacular::Example& e : examples) EXPECT_TRUE(vernacular::check(style.grammar, e).derivable) << e.source();
+  EXPECT_NE(style.grammar.text().find("I(roof)"), std::string::npos) << style.grammar.text();
+}
+
+TEST(ApiIo, AnExampleInMemoryThatIsNoBoxIsAnInputError) {
+  for (const vernacular::ExamplePart& bad :
+       {vernacular::ExamplePart{"wall", "", {0, 0, 0}, {-1, 4, 3}}, vernacular::ExamplePart{"wall", "", {0, 0, 0}, {0, 0, 0}},
+        vernacular::ExamplePart{"", "", {0, 0, 0}, {1, 1, 1}},
+        vernacular::ExamplePart{"wall", "", {0, 0, 0}, {std::numeric_limits<double>::infinity(), 1, 1}}}) {
+    try {
+      vernacular::Example::from_parts({bad}, "mine");
+      FAIL() << "a bad part was taken: " << bad.label;
+    } catch (const vernacular::Failure& f) {
+      EXPECT_EQ(f.error().kind, vernacular::ErrorKind::Input) << f.what();
+      EXPECT_EQ(f.error().location.file, "mine") << f.what();
+    }
+  }
+  EXPECT_THROW(vernacular::Example::from_parts({}, "none"), vernacular::Failure);
 }
 
 }  // namespace

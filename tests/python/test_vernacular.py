@@ -79,3 +79,18 @@ def test_wrong_arguments_and_missing_files_raise_their_kinds(tmp_path):
 
 def test_the_version_is_the_packages():
     assert vernacular.__version__.count(".") == 2
+
+
+def test_an_example_made_from_boxes_infers_as_a_file_would():
+    examples = []
+    for width in (6.0, 8.0, 10.0):
+        boxes = numpy.array([[[0, 0, 0], [width, 4, 2.7]], [[0, 0, 2.7], [width, 4, 3.9]]])
+        examples.append(vernacular.Example.from_boxes(["wall", "roof"], boxes, source=f"house_{width:g}"))
+    assert examples[0].source == "house_6" and examples[0].labels == ["wall", "roof"]
+    numpy.testing.assert_allclose(examples[2].boxes[1], [[0, 0, 2.7], [10, 4, 3.9]])
+    style = vernacular.infer(examples)
+    assert all(vernacular.check(style.grammar, e) for e in examples)
+    with pytest.raises(vernacular.UsageError):
+        vernacular.Example.from_boxes(["wall"], numpy.zeros((2, 2, 3)))
+    with pytest.raises(vernacular.InputError):
+        vernacular.Example.from_boxes(["wall"], numpy.array([[[0, 0, 0], [-1, 1, 1]]]), source="mine")

@@ -119,10 +119,8 @@ std::string what_sets_the_tolerance(const Example& ex) {
 // end of what doubles hold: ratios and sums of its sizes would be noise.
 constexpr double kSmallestExample = 1e-6;
 
-// A part may be flat (a facade panel has no thickness), but a part no
-// larger than the tolerance on every axis is a point that no scope can be
-// fitted to; an example too small for its sizes to be told apart is refused
-// whole.
+}  // namespace
+
 void refuse_points(const Example& ex, double given_tolerance) {
   const double tolerance = example_tolerance(ex, given_tolerance);
   for (const LabelledBox& b : ex.boxes) {
@@ -154,8 +152,6 @@ void refuse_points(const Example& ex, double given_tolerance) {
          "the example is " + approx(across) + " m across: too small for a building in metres",
          "scale the model to metres (coordinates are read as metres)");
 }
-
-}  // namespace
 
 Example load_example(const fs::path& path, const ExampleLimits& limits, unsigned threads) {
   std::error_code ec;

@@ -127,6 +127,12 @@ std::vector<std::filesystem::path> example_files(const std::vector<std::string>&
 // The bounds of all boxes (both zero when there are none).
 void update_bounds(Example& example);
 
+// Throws vern::Error (Input) for a part no larger than the tolerance on
+// every axis (a point no scope can be fitted to; a part may be flat: a
+// facade panel has no thickness), or an example too small for its sizes
+// to be told apart. given_tolerance: as example_tolerance takes it.
+void refuse_points(const Example& example, double given_tolerance);
+
 // The example's extent: max - min.
 glm::dvec3 example_size(const Example& example);
 
