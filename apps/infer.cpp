@@ -179,10 +179,7 @@ int run(int argc, char** argv) {
   // Done with the examples (their boxes, positions and meshes: 115 MB at
   // a million parts), freed before the derivation and the text take theirs.
   examples = {};
-  TestBuildingsOptions tests;
-  tests.first_seed = seed;
-  tests.count = parts > 100'000 ? 1 : 8;
-  tests.example_parts = largest;
+  const TestBuildingsOptions tests = test_buildings_for(parts, largest, seed);
   result.grammar.primitives = path_from(output, prims);
   // generate follows @primitives only into the grammar's own folder.
   if (!quiet && !path_in_folder(output.parent_path(), result.grammar.primitives))

@@ -18,16 +18,9 @@ const char* to_string(ErrorKind kind) {
   return "internal";
 }
 
+// The commands' form, written by the one formatter they use.
 std::string Error::text() const {
-  std::string out = location.file;
-  if (location.line != 0) {
-    out += (out.empty() ? "" : ":") + std::to_string(location.line);
-    if (location.column != 0) out += ":" + std::to_string(location.column);
-  }
-  if (!out.empty()) out += ": ";
-  out += "error: " + message;
-  if (!hint.empty()) out += "\n  hint: " + hint;
-  return out;
+  return vern::format_message(location.file, vern::SourceLoc{location.line, location.column}, message, hint);
 }
 
 Failure::Failure(Error error) : error_(std::move(error)), text_(error_.text()) {}

@@ -45,9 +45,12 @@ InferResult infer(const std::vector<Example>& examples, const InferOptions& opti
                              " parts whose mesh is not their label's turned by quarter turns: written unturned");
     // A grammar that cannot derive is a bug, better found here than by the
     // user: derive a few buildings (as infer does) and pass on what they say.
-    vern::TestBuildingsOptions tests;
-    tests.count = 8;
-    for (const vern::Example& e : internal) tests.example_parts = std::max(tests.example_parts, e.boxes.size());
+    std::size_t parts = 0, largest = 0;
+    for (const vern::Example& e : internal) {
+      parts += e.boxes.size();
+      largest = std::max(largest, e.boxes.size());
+    }
+    const vern::TestBuildingsOptions tests = vern::test_buildings_for(parts, largest, 1);
     for (std::string& w : vern::derive_test_buildings(r.grammar, tests)) out.warnings.push_back(std::move(w));
     auto data = std::make_shared<detail::GrammarData>();
     data->grammar = std::move(r.grammar);

@@ -67,4 +67,12 @@ std::vector<std::string> derive_test_buildings(const Grammar& grammar, const Tes
   return {};
 }
 
+TestBuildingsOptions test_buildings_for(std::size_t parts, std::size_t largest, std::uint64_t first_seed) {
+  TestBuildingsOptions tests;
+  tests.first_seed = first_seed;
+  tests.count = parts > kJudgedParts ? 1 : 8;
+  tests.example_parts = largest;
+  return tests;
+}
+
 }  // namespace vern

@@ -38,4 +38,10 @@ inline constexpr std::size_t kJudgedParts = 100'000;
 // first fault. Throws vern::Error for any other failure of derive().
 std::vector<std::string> derive_test_buildings(const Grammar& grammar, const TestBuildingsOptions& options);
 
+// The test buildings for examples of `parts` parts in all, the largest of
+// `largest`: eight from first_seed, or one alone past kJudgedParts in all
+// (a million parts: a third of a second each). infer and the library's
+// infer() both derive these.
+TestBuildingsOptions test_buildings_for(std::size_t parts, std::size_t largest, std::uint64_t first_seed);
+
 }  // namespace vern
