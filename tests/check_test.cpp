@@ -225,6 +225,31 @@ TEST(CheckSplit, OneCommonScaleForRelativeParts) {
   EXPECT_NE(bad.mismatch.find("cuts at x = 0, 5, 9"), std::string::npos) << bad.mismatch;
 }
 
+// The mismatch named is the one of the attempt that got furthest, not
+// the deepest: here a wing that matches on its second alternative (the
+// first fails five splits down) comes before a house whose ground floor
+// is too tall, and the house is what the grammar does not derive.
+TEST(CheckSplit, NamesTheFailureFurthestAlongNotTheDeepest) {
+  const std::string g =
+      "p --> split(x){ 4 : w | ~1 : h }\n"
+      "w --> split(y){ ~1 : split(z){ ~1 : split(y){ 1 : I(a) | ~1 : I(b) } } } : 1\n"
+      "w --> split(y){ ~1 : I(c) | ~1 : I(c) } : 1\n"
+      "h --> split(z){ 2 : I(g) | ~1 : I(s) }";
+  const std::vector<LabelledBox> wing{box("c", {0, 0, 0}, {4, 1, 5}), box("c", {0, 1, 0}, {4, 2, 5})};
+  auto with_ground = [&](double height) {
+    std::vector<LabelledBox> boxes = wing;
+    boxes.push_back(box("g", {4, 0, 0}, {10, 2, height}));
+    boxes.push_back(box("s", {4, 0, height}, {10, 2, 5}));
+    return check_text(g, boxes, {10, 2, 5});
+  };
+  const auto ok = with_ground(2);
+  EXPECT_TRUE(ok.derivable) << ok.mismatch;
+  const auto bad = with_ground(3);
+  EXPECT_FALSE(bad.derivable);
+  EXPECT_NE(bad.mismatch.find("at h (4:1), split(z)"), std::string::npos) << bad.mismatch;
+  EXPECT_NE(bad.mismatch.find("cuts at z = 0, 3, 5"), std::string::npos) << bad.mismatch;
+}
+
 TEST(CheckSplit, AbsoluteSizesLeaveSpaceAtTheEndOrShrink) {
   // 2 + 3 on 10: the last 5 m are empty.
   const std::string g = "p --> split(x){ 2 : I(a) | 3 : I(b) }";

@@ -29,7 +29,8 @@ struct Verdict {
   // Derivable: the choices and values that reproduce the example, one a
   // line, in derivation order ("plot: alternative 2 of 2 (split(x) at 24:10)").
   std::vector<std::string> witness;
-  // Not derivable: where the deepest-reaching attempt failed, and why.
+  // Not derivable: where the attempt that got furthest (the most boxes in
+  // parts it had finished, then the deepest) failed, and why.
   std::string reason;
 };
 

@@ -87,10 +87,10 @@ class Checker {
     try {
       p = possible_values(k.value, lookup);
     } catch (const EvaluationError& e) {
-      return note({0, "the constant '" + k.name + "' cannot be evaluated (" + e.message + "), so derive() fails"});
+      return note({0, 0, "the constant '" + k.name + "' cannot be evaluated (" + e.message + "), so derive() fails"});
     } catch (const NotCheckable& e) {
       uncheckable_ = "the constant '" + k.name + "': " + e.message;
-      return note({0, "cannot check: the constant '" + k.name + "': " + e.message});
+      return note({0, 0, "cannot check: the constant '" + k.name + "': " + e.message});
     }
     if (p.exact) {
       c.slots.push_back({p.value, -1});
@@ -146,7 +146,7 @@ class Checker {
   }
 
   void note(const Mismatch& m) {
-    if (m.depth > best_.depth) best_ = m;
+    if (m.further_than(best_)) best_ = m;
   }
 
   const Grammar& g_;

@@ -156,7 +156,8 @@ struct CheckResult {
   std::vector<MatchedPart> parts;
   // When derivable: its choices, values and repeats, in order.
   std::vector<CheckStep> steps;
-  // When not: where the deepest-reaching attempt failed and why, e.g.
+  // When not: where the attempt that got furthest (the most boxes in parts
+  // it had finished, then the deepest) failed and why, e.g.
   //   "at house (25:1), split(z) at 25:10 on x 0..6.66667, y 0..10, z 0..10: no placement of the
   //    parts on the cuts of the example's boxes fits sizes ~2 : ~1 (cuts at z = 0, 6.5, 10)"
   // prefixed by "with N = 9, M = 8: " when random constants were tried

@@ -230,8 +230,11 @@ bool Matcher::match_comp(NodeId id, const Comp& op, const Scope& s, const BoxLis
     }
     if (!placed) return recording() && fail(id, s, "the box " + box_text(b) + " lies on none of the faces");
   }
-  for (std::size_t i = 0; i < op.parts.size(); ++i)
+  Finished finished(*this);
+  for (std::size_t i = 0; i < op.parts.size(); ++i) {
     if (!match(op.parts[i].child, faces[i], parts[i])) return false;
+    finished.add(parts[i].size());
+  }
   return true;
 }
 

@@ -50,10 +50,19 @@ inline constexpr std::size_t kMaxEnumerated = 64;
 // Repeat tile counts tried for one random tile size.
 inline constexpr double kMaxTileCounts = 100000;
 
-// Why the deepest attempt failed.
+// Why the attempt that got furthest failed: the one that had matched the
+// most boxes in parts it had finished (a split's earlier parts, a
+// repeat's earlier tiles), then the deepest. Depth alone named a wing's
+// door bay tried at the wrong index, deep in a part that matched later,
+// where the house failed in its storeys, one part on.
 struct Mismatch {
+  std::size_t progress = 0;
   int depth = -1;
   std::string message;
+
+  bool further_than(const Mismatch& o) const {
+    return progress != o.progress ? progress > o.progress : depth > o.depth;
+  }
 };
 
 // The boxes of a repeat's tiles: the tile each box lies in, by tile (the
@@ -139,7 +148,23 @@ class Matcher {
   std::string list_boxes(const BoxList& list) const;
   // Would a failure here be recorded? Messages are built only then: most
   // attempts fail, and their text would cost more than the attempt.
-  bool recording() const { return quiet_ == 0 && depth_ > best_.depth; }
+  bool recording() const { return quiet_ == 0 && here().further_than(best_); }
+  // Where the match stands now, as a mismatch here would rank.
+  Mismatch here() const { return {progress_, depth_, {}}; }
+  // Counts the boxes of the parts a match finishes towards progress_,
+  // for as long as the guard lives (a split's or a repeat's children).
+  class Finished {
+   public:
+    explicit Finished(Matcher& m) : m_(m), base_(m.progress_) {}
+    ~Finished() { m_.progress_ = base_; }
+    Finished(const Finished&) = delete;
+    Finished& operator=(const Finished&) = delete;
+    void add(std::size_t boxes) { m_.progress_ += boxes; }
+
+   private:
+    Matcher& m_;
+    std::size_t base_;
+  };
   // Records why a match failed, keeping the deepest; length queries
   // (quiet) record nothing: their failures are not the example's.
   bool fail(NodeId id, const Scope& s, const std::string& what);
@@ -277,6 +302,7 @@ class Matcher {
   bool answer_only_ = false;
   int depth_ = 0;
   int quiet_ = 0;
+  std::size_t progress_ = 0;  // boxes in finished parts on the current path (Finished)
 };
 
 // ---- the member templates that two files use ----

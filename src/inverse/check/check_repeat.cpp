@@ -187,8 +187,13 @@ bool Matcher::match_repeat(NodeId id, const Scope& s, const BoxList& inside) {
     if (tiles_fit(inside, *st->am, length, n, tiles)) {
       const double tile = length / c.n;
       bool ok = true;
-      for (std::uint64_t i = 0; i < n && ok; ++i)
-        ok = match(st->child, s.slice(st->axis, tile * static_cast<double>(i), tile), tiles.take(i));
+      Finished finished(*this);
+      for (std::uint64_t i = 0; i < n && ok; ++i) {
+        const BoxList& boxes = tiles.take(i);
+        const std::size_t count = boxes.size();
+        ok = match(st->child, s.slice(st->axis, tile * static_cast<double>(i), tile), boxes);
+        finished.add(count);
+      }
       if (ok) return true;
     } else if (tried.size() < 200) {
       tried += (tried.empty() ? "" : ", ") + num(c.n);

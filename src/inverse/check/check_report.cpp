@@ -1,5 +1,5 @@
-// What the matcher reports (check_matcher.hpp): why the deepest attempt
-// failed, kept as text only when it is the deepest so far, and the
+// What the matcher reports (check_matcher.hpp): why the attempt that got
+// furthest failed (Mismatch), kept as text only when it is the furthest so far, and the
 // witness lines of a success.
 #include "inverse/check/check_matcher.hpp"
 
@@ -78,7 +78,7 @@ std::string Matcher::list_boxes(const BoxList& list) const {
 
 bool Matcher::fail(NodeId id, const Scope& s, const std::string& what) {
   if (quiet_ > 0) return false;
-  if (depth_ > best_.depth) best_ = {depth_, where(id, s) + ": " + what};
+  if (here().further_than(best_)) best_ = {progress_, depth_, where(id, s) + ": " + what};
   return false;
 }
 

@@ -204,6 +204,7 @@ bool SplitSearch::complete(const ScaleState& sized) {
 }
 
 bool SplitSearch::children_match(bool lone_runs) {
+  Matcher::Finished finished(m_);
   for (std::size_t i = 0; i < parts_.size(); ++i) {
     const Placement& pl = placement_[i];
     if (!pl.filled) continue;
@@ -215,6 +216,7 @@ bool SplitSearch::children_match(bool lone_runs) {
       if (hit != memo_.end()) {
         if (!hit->second.first) return false;
         m_.witness_.insert(m_.witness_.end(), hit->second.second.begin(), hit->second.second.end());
+        finished.add(cuts_.between(pl.from, pl.to));
         continue;
       }
     }
@@ -227,6 +229,7 @@ bool SplitSearch::children_match(bool lone_runs) {
                                         : std::vector<WitnessLine>(m_.witness_.begin() + static_cast<std::ptrdiff_t>(mark),
                                                                    m_.witness_.end())};
     if (!ok) return false;
+    finished.add(cuts_.between(pl.from, pl.to));
   }
   if (!lone_runs) return true;
   for (const Run& r : runs()) {
