@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <optional>
+#include <set>
 #include <utility>
 
 #include "forward/derive.hpp"
@@ -407,6 +408,46 @@ feature --> split(x){ ~1 : I(brick) | 1.4 : I(balcony) | ~1 : I(brick) }
     }
     ASSERT_GT(ground, 0) << seed;
     EXPECT_NEAR(roof - ground, 1.5 * ground + 2.5, 1e-6) << "seed " << seed << "\n" << write_grammar(inferred.grammar);
+  }
+}
+
+TEST(JointSizes, ASizeEveryTileOfABuildingKeepsIsDrawnOncePerBuilding) {
+  // Each house has one window width, kept on every storey; the widths
+  // differ from house to house. Merging writes the width inside the
+  // storeys' repeat, where each storey drew its own; every storey of a
+  // variant keeps one width, as every storey of an example did.
+  const Grammar source = parse_grammar(R"(
+@start house
+@scope rand(10, 16), 8, rand(12, 20)
+house --> body(rand(0.8, 1.8))
+body(w) --> split(z){ 4 : I(ground) | ~1 : repeat(z, 3){ storey(w) } | 1 : I(roof) }
+storey(w) --> split(x){ ~1 : I(wall) | w : I(window) | ~1 : I(wall) }
+)", "house.grm");
+  const Inference inferred = infer(test::derived_examples(source, 10), {});
+  std::size_t measured = 0, mixed = 0;
+  std::set<double> widths;
+  for (std::uint64_t seed = 101; seed <= 140; ++seed) {
+    std::optional<double> first;
+    bool same = true;
+    std::size_t windows = 0;
+    for (const LabelledBox& b : test::derived_parts(inferred.grammar, seed)) {
+      if (b.label != "window") continue;
+      ++windows;
+      const double w = b.max.x - b.min.x;
+      if (!first) first = w;
+      same = same && std::abs(w - *first) <= 1e-6;
+    }
+    if (windows < 2) continue;
+    ++measured;
+    widths.insert(std::round(*first * 1000) / 1000);
+    mixed += same ? 0 : 1;
+  }
+  EXPECT_GE(measured, 30u) << write_grammar(inferred.grammar);
+  EXPECT_EQ(mixed, 0u) << write_grammar(inferred.grammar);
+  EXPECT_GT(widths.size(), 5u) << write_grammar(inferred.grammar);  // still drawn, per building
+  for (const Example& e : test::derived_examples(source, 10)) {
+    const CheckResult r = check_example(inferred.grammar, e.boxes, example_size(e));
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(inferred.grammar);
   }
 }
 

@@ -525,6 +525,11 @@ class Joiner {
     std::vector<std::size_t> drawn_at;  // the occurrence that first uses it
     std::vector<std::size_t> leaders;   // quantities that are parameters
     std::vector<std::size_t> leader_param;
+    // Per parameter: drawn inside a repeat's tiles, where every tile of a
+    // building showed the same value (a door bay's place on every storey,
+    // a balcony kept on every floor): drawn once per building, by the
+    // region, not anew in each tile where it stood.
+    std::vector<bool> per_building;
     std::size_t gained = 0, linked = 0;
     FitOptions fit;
     fit.resolution = opt_.tolerance;
@@ -592,6 +597,7 @@ class Joiner {
           drawn.push_back(Distribution{DistributionKind::Uniform, {}, -e, e});
           drawn_values.push_back(std::move(misses));
           drawn_at.push_back(Q.occurrence);
+          per_building.push_back(r.splits[Q.occurrence].tiled);
         }
         formula[Q.occurrence][Q.part] = f;
         ++gained;
@@ -617,12 +623,13 @@ class Joiner {
       drawn.push_back(among ? *as_written : fit_distribution(obs, fit));
       drawn_values.push_back(seen_values);
       drawn_at.push_back(Q.occurrence);
+      per_building.push_back(r.splits[Q.occurrence].tiled);
       f.add(leader_param.back(), 1);
       formula[Q.occurrence][Q.part] = f;
     }
     // Splits that vary on their own are share_splits' (one rule each, not
     // one per region).
-    if (linked == 0) return std::nullopt;
+    if (linked == 0 && std::ranges::none_of(per_building, [](bool b) { return b; })) return std::nullopt;
     // A slot pooled: every alternative's split sized as its leader's.
     for (std::size_t o = 0; o < at.size(); ++o)
       if (leader_of[o] != o) formula[o] = formula[leader_of[o]];
@@ -674,6 +681,7 @@ class Joiner {
       drawn.push_back(fit_distribution(obs, fit));
       drawn_values.push_back(seen_values);
       drawn_at.push_back(rest.occurrence);
+      per_building.push_back(r.splits[rest.occurrence].tiled);
       uses.push_back(1);
     }
     std::vector<std::pair<double, double>> ranges;
@@ -696,7 +704,7 @@ class Joiner {
     std::vector<std::string> names;
     std::vector<std::size_t> brought(r.splits.size(), 0);
     for (std::size_t k = 0; k < drawn.size(); ++k) {
-      if (uses[k] < 2) continue;
+      if (uses[k] < 2 && !(uses[k] == 1 && per_building[k])) continue;
       param[k] = static_cast<std::uint32_t>(args.size());
       args.push_back(distribution_expr(short_decimals(drawn[k], opt_.tolerance / 4)));
       names.push_back("s" + std::to_string(args.size()));

@@ -26,7 +26,11 @@
 //     five examples or more) is that function plus a drawn deviation
 //     `s2 = rand(-e, e)` as wide as the examples' largest; one the region's
 //     examples all show the same is that constant; any other is drawn,
-//     `s2`, from the distribution its values fit best (fit_distribution).
+//     `s2`, from the distribution its values fit best (fit_distribution);
+//   - a size inside a repeat that every tile of a building shows the same
+//     (the window width kept on every storey, a door bay's place), while
+//     buildings differ, is drawn once per building by the region, not
+//     anew in each tile, whether or not another size follows it.
 // A region with something to join becomes a rule with those draws as
 // parameters, `buildingSizes(s1, e1) --> split(x){ ... }`, called where
 // the region stood with the draws as arguments; the rules it called are
