@@ -376,6 +376,34 @@ TEST(BoxSplit, EndWallsThroughEveryStoreyAreCutFirst) {
   ASSERT_TRUE(cut_along(t, 0, 3));
 }
 
+TEST(BoxSplit, BaysThatLineUpThroughStoreysUnderARoofWaitForTheStoreys) {
+  // Piers full height at both ends; between them a ground floor and two
+  // storeys of three aligned 4 m bays, and a roof within the middle bay
+  // with air beside it. Cuts along x run beside the piers along faces from the
+  // bottom to the top; those between the outer bays stop at the storeys'
+  // top on both sides and run on through the air beside the roof. The
+  // piers are cut off first, and the front between them into its storeys
+  // (each then a row of bays), not into columns that each keep storey
+  // heights of their own.
+  std::vector<LabelledBox> boxes{part("pier", {0, 0, 0}, {0.6, 1, 14}), part("pier", {12.6, 0, 0}, {13.2, 1, 14}),
+                                 part("roof", {5.2, 0, 10}, {8, 1, 14})};
+  for (int storey = 0; storey < 3; ++storey)
+    for (int bay = 0; bay < 3; ++bay) {
+      const double x = 0.6 + 4 * bay, z = storey == 0 ? 0 : 1 + 3.0 * storey, top = 4 + 3.0 * storey;
+      boxes.push_back(part("rect", {x, 0, z}, {x + 1, 1, top}));
+      boxes.push_back(part(storey == 0 ? "shop" : "window", {x + 1, 0, z}, {x + 3, 1, top}));
+      boxes.push_back(part("rect", {x + 3, 0, z}, {x + 4, 1, top}));
+    }
+  const SplitTree t = split(test::numbered(boxes));
+  ASSERT_TRUE(cut_along(t, 0, 3));
+  ASSERT_TRUE(cut_along(t.children[1], 2, 4));
+  // A row of houses of different heights, one box each, keeps its houses:
+  // no storey line runs through the lower ones.
+  const SplitTree row = split(test::numbered({part("rect", {0, 0, 0}, {4, 1, 6}), part("rect", {4, 0, 0}, {8, 1, 9}),
+                                              part("rect", {8, 0, 0}, {12, 1, 14})}));
+  ASSERT_TRUE(cut_along(row, 0, 3));
+}
+
 TEST(BoxSplit, AnOnlyCutThatPeelsAirOffIsStillMade) {
   // A box under air along z, with nothing beside it: z is the only cut.
   const SplitTree t = split({part("rect", {0, 0, 0}, {2, 2, 1}, 0), part("rect", {0, 2, 0}, {2, 4, 3}, 1)});

@@ -358,6 +358,7 @@ class Splitter {
           cut_along(w, a, Peel::Upper);
           return;
         }
+        group_partial_height_pieces(w, a);
         cut_along(w, a);
         return;
       }
@@ -504,6 +505,49 @@ class Splitter {
   // yard behind it) is there only because bays happened to line up with
   // the yard's edge. Leaves pieces_ as they are.
   bool cuts_along_faces(const Work& w, int a, int b) {
+    faces_right_across(w, a, b, across_);
+    return std::all_of(across_.begin(), across_.end(), [](bool f) { return f; });
+  }
+
+  // Is the run of pieces_[first..last] of the last sweep along a storeys:
+  // its boxes divide along z (a storey line runs right across the run) and
+  // the lowest storey, at the container's bottom, fills the run right
+  // across (a ground floor, not buildings of different heights side by
+  // side)?
+  bool storeyed_run(const Work& w, int a, std::size_t first, std::size_t last) const {
+    const auto ax = static_cast<std::size_t>(a), bx = static_cast<std::size_t>(1 - a);
+    std::vector<std::uint32_t> boxes;
+    const Event* events = events_[ax].data();
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const Event e = events[i];
+      if ((e & 1u) != 0) continue;
+      const std::uint32_t p = target_[span_of_[e >> 1]];
+      if (p >= first && p <= last) boxes.push_back(e >> 1);
+    }
+    std::sort(boxes.begin(), boxes.end(), [&](std::uint32_t x, std::uint32_t y) { return lo_[2][x] < lo_[2][y]; });
+    if (boxes.empty() || lo_[2][boxes.front()] != w.lo[2]) return false;
+    // The lowest storey: boxes from the bottom until a storey line.
+    Rank reach = w.lo[2];
+    double top = w.lo_val[2], volume = 0;
+    std::size_t k = 0;
+    for (; k < boxes.size() && lo_[2][boxes[k]] < std::max(reach, w.lo[2] + 1); ++k) {
+      const LabelledBox& b = boxes_[boxes[k]];
+      if (hi_[2][boxes[k]] > reach) {
+        reach = hi_[2][boxes[k]];
+        top = b.max.z;
+      }
+      volume += (b.max.x - b.min.x) * (b.max.y - b.min.y) * (b.max.z - b.min.z);
+    }
+    if (k == boxes.size() || reach >= w.hi[2]) return false;  // no storey line
+    const double along = pieces_[last].hi_val - pieces_[first].lo_val, across = w.hi_val[bx] - w.lo_val[bx];
+    const double slab = along * across * (top - w.lo_val[2]);
+    return slab > 0 && volume >= slab * (1 - 1e-6);
+  }
+
+  // Per cut of the last sweep along a (between pieces_[c] and
+  // pieces_[c + 1]): is it met by parts along the whole container on
+  // axis b, from one side at least? Leaves pieces_ as they are.
+  void faces_right_across(const Work& w, int a, int b, std::vector<bool>& out) {
     const auto ax = static_cast<std::size_t>(a), bx = static_cast<std::size_t>(b);
     const std::size_t cuts = pieces_.size() - 1;
     // Per cut and side (0: the piece before it, 1: the one after), the
@@ -533,9 +577,60 @@ class Splitter {
       }
       return reached >= w.hi[bx];
     };
-    for (std::size_t c = 0; c < cuts; ++c)
-      if (!covers(faces[c][0]) && !covers(faces[c][1])) return false;
-    return true;
+    out.assign(cuts, false);
+    for (std::size_t c = 0; c < cuts; ++c) out[c] = covers(faces[c][0]) || covers(faces[c][1]);
+  }
+
+  // Columns that only line up (issue 23: bays aligned through every
+  // storey). Where some cuts along a horizontal axis run along faces from
+  // the container's bottom to its top (a pier, a building's end wall) and
+  // others between touching pieces stop short of it on both sides (bays
+  // of storeys beside a roof that crosses the others: the cut runs
+  // through the air over the storeys), only the first are cut now; each
+  // run of pieces between them is one piece, cut again later along the
+  // other axes first. A facade of aligned bays under a roof is then
+  // storeys, each a row of bays, and not columns each with its own
+  // storey heights, which variants draw apart. Only runs that are
+  // storeys are joined (storeyed_run): a row of houses of different
+  // heights keeps its houses, and a city block its buildings.
+  void group_partial_height_pieces(const Work& w, int a) {
+    if (a == 2 || pieces_.size() < 3 || w.lo[2] == w.hi[2]) return;
+    faces_right_across(w, a, 2, across_);
+    const std::size_t n = pieces_.size();
+    std::vector<bool> joins(n, false);
+    bool any_full = false, any_joined = false;
+    for (std::size_t c = 0; c + 1 < n; ++c) {
+      const bool touching = pieces_[c].hi == pieces_[c + 1].lo;
+      any_full = any_full || across_[c] || !touching;
+      joins[c + 1] = touching && !across_[c];
+    }
+    for (std::size_t first = 0; first < n;) {
+      std::size_t last = first;
+      while (last + 1 < n && joins[last + 1]) ++last;
+      if (last > first && !storeyed_run(w, a, first, last))
+        for (std::size_t i = first + 1; i <= last; ++i) joins[i] = false;
+      any_joined = any_joined || last > first;
+      first = last + 1;
+    }
+    any_joined = std::any_of(joins.begin(), joins.end(), [](bool j) { return j; });
+    if (!any_full || !any_joined) return;
+    if (compound_.size() != n) compound_.assign(n, false);
+    std::vector<std::uint32_t> into(n);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (joins[i]) {
+        pieces_[kept - 1].absorb(pieces_[i]);
+        compound_[kept - 1] = true;
+      } else {
+        pieces_[kept] = pieces_[i];
+        compound_[kept] = compound_[i];
+        ++kept;
+      }
+      into[i] = static_cast<std::uint32_t>(kept - 1);
+    }
+    pieces_.resize(kept);
+    compound_.resize(kept);
+    for (std::uint32_t& t : target_) t = into[t];
   }
 
   // The first horizontal axis's cuts are not all along faces, and the
@@ -970,6 +1065,7 @@ class Splitter {
   std::vector<double> fill_;                  // storeys_first's piece fills (reused)
   std::vector<std::uint64_t> faces_;          // cuts_line_up_by_chance's (piece, rank) pairs (reused)
   std::vector<std::array<std::vector<std::pair<Rank, Rank>>, 2>> cut_faces_;  // cuts_along_faces's (reused)
+  std::vector<bool> across_;  // faces_right_across's answer (reused)
   std::vector<Work> stack_;                   // containers still to cut
   std::vector<std::vector<std::uint32_t>> groups_;  // unsplittable containers' boxes
   std::vector<std::pair<std::uint32_t, std::uint32_t>>* overlaps_ = nullptr;  // collect_overlaps
