@@ -615,22 +615,7 @@ class Splitter {
     any_joined = std::any_of(joins.begin(), joins.end(), [](bool j) { return j; });
     if (!any_full || !any_joined) return;
     if (compound_.size() != n) compound_.assign(n, false);
-    std::vector<std::uint32_t> into(n);
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (joins[i]) {
-        pieces_[kept - 1].absorb(pieces_[i]);
-        compound_[kept - 1] = true;
-      } else {
-        pieces_[kept] = pieces_[i];
-        compound_[kept] = compound_[i];
-        ++kept;
-      }
-      into[i] = static_cast<std::uint32_t>(kept - 1);
-    }
-    pieces_.resize(kept);
-    compound_.resize(kept);
-    for (std::uint32_t& t : target_) t = into[t];
+    join_pieces(joins);
   }
 
   // The first horizontal axis's cuts are not all along faces, and the
@@ -852,8 +837,15 @@ class Splitter {
     // Nothing joined, or everything (a peel of the whole container, which
     // uniform_peel takes where it is the only cut).
     if (kept == n || kept == 1) return;
+    join_pieces(joins);
+  }
+
+  // Joins each piece whose joins[i] is set into the one before it: one
+  // piece, cut again later (compound_), along the other axes first.
+  void join_pieces(const std::vector<bool>& joins) {
+    const std::size_t n = pieces_.size();
     std::vector<std::uint32_t> into(n);
-    kept = 0;
+    std::size_t kept = 0;
     for (std::size_t i = 0; i < n; ++i) {
       if (joins[i]) {
         pieces_[kept - 1].absorb(pieces_[i]);
