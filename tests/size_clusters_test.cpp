@@ -165,3 +165,32 @@ TEST(SizeClusters, AirLeftAboveAPartMakesNoKind) {
 
 }  // namespace
 }  // namespace vern
+
+namespace vern {
+namespace {
+
+TEST(SizeClusters, ARunOfTilesMakesNoKind) {
+  // A door bay after one, two or three bays of 3.5 m, two examples each:
+  // the run before the door is 3.5, 7 or 10.5 m long, kinds far apart by
+  // their lengths, but a run of tiles is as long as its count makes it.
+  // One front, its run ranging over the three, not one front per count.
+  Grammar g;
+  std::vector<std::string> texts;
+  for (int bays : {1, 2, 3, 1, 2, 3}) {
+    const double run = 3.5 * bays, rest = 21 - run - 3.5;
+    texts.push_back("split(x){ ~" + std::to_string(run) + " : repeat(x, 3.5){ split(x){ ~1 : I(wall) | ~1.5 : " +
+                    "I(window) | ~1 : I(wall) } } | ~1 : I(wall) | ~1.5 : I(door) | ~1 : I(wall) | ~" +
+                    std::to_string(rest) + " : repeat(x, 3.5){ split(x){ ~1 : I(wall) | ~1.5 : I(window) | ~1 : " +
+                    "I(wall) } } }");
+  }
+  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), test::uniform_merge());
+  const auto* front = std::get_if<Split>(&g.op(merged));
+  ASSERT_NE(front, nullptr) << write_grammar(rules_for(g, merged, {}));
+  const auto run = literal_range(front->parts[0].size.value);
+  ASSERT_TRUE(run);
+  EXPECT_NEAR(run->lo, 3.5, 1e-9);
+  EXPECT_NEAR(run->hi, 10.5, 1e-9);
+}
+
+}  // namespace
+}  // namespace vern

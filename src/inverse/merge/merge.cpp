@@ -368,7 +368,11 @@ class Unifier {
         }
         if (!literal) m.total = 0;
         for (std::size_t i = 0; i < s->parts.size(); ++i) {
-          if (std::holds_alternative<Nil>(g_.op(s->parts[i].child))) m.sizes[i].reset();
+          // Nor is a run of tiles: bays before a door bay, two in one
+          // example and four in the next, are as long as their count
+          // makes them, one kind of run.
+          const Operation& child = g_.op(s->parts[i].child);
+          if (std::holds_alternative<Nil>(child) || std::holds_alternative<Repeat>(child)) m.sizes[i].reset();
           // An absolute part is a length, not a share.
           else if (!s->parts[i].size.relative && m.total > 0) m.total = -1;
         }

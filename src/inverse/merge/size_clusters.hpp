@@ -22,7 +22,8 @@
 // however their metres clump; a shop window always 2.8 m and an upper
 // window always 1.4 m stay two kinds however their shares overlap). Members are one kind where every part
 // agrees; parts holding empty space have no say (merge.cpp): air is what
-// the other parts leave.
+// the other parts leave; nor have runs of tiles (a part that is a
+// repeat): bays before a door bay are as long as their count makes them.
 #pragma once
 
 #include <cstddef>
