@@ -1,6 +1,7 @@
 #include "inverse/merge/merge.hpp"
 
 #include "inverse/merge/equal_options.hpp"
+#include "inverse/merge/empty_runs.hpp"
 #include "inverse/merge/generalise.hpp"
 #include "inverse/merge/inset_runs.hpp"
 #include "inverse/merge/repeat_folding.hpp"
@@ -934,9 +935,14 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
       const TileChoiceUnion united = unite_tile_choices(g, merged);
       carry_notes(united.replaced, book, tile_counts);
       merged = united.root;
-      if (!changed && united.replaced.empty()) break;
+      // A door bay at the start beside one after some bays: one split.
+      const EmptyRuns runs = pad_empty_runs(g, merged, book, rows);
+      carry_notes(runs.replaced, book, tile_counts);
+      merged = runs.root;
+      if (!changed && united.replaced.empty() && runs.padded == 0) break;
       carry_rows(rebuilt, rows);
       carry_rows(united.replaced, rows);
+      carry_rows(runs.replaced, rows);
       merged = Unifier(g, options, book, rows, tile_counts, counts, copied).run(merged);
     }
   };

@@ -686,19 +686,33 @@ class Joiner {
     }
     std::vector<std::pair<double, double>> ranges;
     for (const Distribution& d : drawn) ranges.push_back(support(d));
-    for (const auto& parts : formula)
-      for (const auto& f : parts)
-        if (f && !(lowest(*f, ranges) > 0)) {
-          // Variants would get no room: keep to the values seen.
-          for (std::size_t k = 0; k < drawn.size(); ++k) {
-            const auto [lo, hi] = std::ranges::minmax(drawn_values[k]);
-            drawn[k] = Distribution{DistributionKind::Uniform, {}, lo, hi};
-            ranges[k] = {lo, hi};
-          }
-        }
-    for (const auto& parts : formula)
-      for (const auto& f : parts)
-        if (f && !(lowest(*f, ranges) > 0)) return std::nullopt;
+    // Room for every part: a size no example showed at 0 stays above it;
+    // one shown at 0 (a run of no tiles before a door bay at the start,
+    // empty_runs.hpp) may be 0.
+    auto no_room = [&](std::size_t o, std::size_t i) {
+      const auto& f = formula[o][i];
+      if (!f) return false;
+      const double low = lowest(*f, ranges);
+      const auto& shown = at[leader_of[o]].length[i];
+      const bool zero_seen =
+          std::ranges::any_of(shown, [&](double v) { return !std::isnan(v) && std::abs(v) <= opt_.tolerance; });
+      return zero_seen ? low < -opt_.tolerance : !(low > 0);
+    };
+    auto any_without_room = [&] {
+      for (std::size_t o = 0; o < formula.size(); ++o)
+        for (std::size_t i = 0; i < formula[o].size(); ++i)
+          if (no_room(o, i)) return true;
+      return false;
+    };
+    if (any_without_room()) {
+      // Variants would get no room: keep to the values seen.
+      for (std::size_t k = 0; k < drawn.size(); ++k) {
+        const auto [lo, hi] = std::ranges::minmax(drawn_values[k]);
+        drawn[k] = Distribution{DistributionKind::Uniform, {}, lo, hi};
+        ranges[k] = {lo, hi};
+      }
+    }
+    if (any_without_room()) return std::nullopt;
     std::vector<std::optional<std::uint32_t>> param(drawn.size());
     std::vector<Expr> args;
     std::vector<std::string> names;
