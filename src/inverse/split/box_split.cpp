@@ -437,6 +437,7 @@ class Splitter {
     constexpr double kFull = 1 - 1e-6;
     piece_fill(w, a, fill_);
     const bool whole = std::all_of(fill_.begin(), fill_.end(), [](double f) { return f >= kFull; });
+    pieces_fill_ = fill_;
     const std::size_t cuts_along_a = pieces_.size() - 1;
     if (w.hi[2] > w.lo[2] && find_pieces(w, 2) && pieces_.size() > 1) {
       if (!whole) {
@@ -515,30 +516,33 @@ class Splitter {
   // across (a ground floor, not buildings of different heights side by
   // side)?
   bool storeyed_run(const Work& w, int a, std::size_t first, std::size_t last) const {
-    const auto ax = static_cast<std::size_t>(a), bx = static_cast<std::size_t>(1 - a);
-    std::vector<std::uint32_t> boxes;
-    const Event* events = events_[ax].data();
-    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+    const auto bx = static_cast<std::size_t>(1 - a);
+    // The container's events along z are in order: a sweep over the run's
+    // boxes finds its lowest storey, where no box of the run is open.
+    const Event* events = events_[2].data();
+    int open = 0;
+    bool started = false;
+    double volume = 0, top = w.lo_val[2];
+    std::uint32_t i = w.begin;
+    for (; i < w.end; ++i) {
       const Event e = events[i];
-      if ((e & 1u) != 0) continue;
-      const std::uint32_t p = target_[span_of_[e >> 1]];
-      if (p >= first && p <= last) boxes.push_back(e >> 1);
-    }
-    std::sort(boxes.begin(), boxes.end(), [&](std::uint32_t x, std::uint32_t y) { return lo_[2][x] < lo_[2][y]; });
-    if (boxes.empty() || lo_[2][boxes.front()] != w.lo[2]) return false;
-    // The lowest storey: boxes from the bottom until a storey line.
-    Rank reach = w.lo[2];
-    double top = w.lo_val[2], volume = 0;
-    std::size_t k = 0;
-    for (; k < boxes.size() && lo_[2][boxes[k]] < std::max(reach, w.lo[2] + 1); ++k) {
-      const LabelledBox& b = boxes_[boxes[k]];
-      if (hi_[2][boxes[k]] > reach) {
-        reach = hi_[2][boxes[k]];
-        top = b.max.z;
+      const std::uint32_t box = e >> 1;
+      const std::uint32_t p = target_[span_of_[box]];
+      if (p < first || p > last) continue;
+      if ((e & 1u) == 0) {
+        if (!started && lo_[2][box] != w.lo[2]) return false;  // air under the run
+        started = true;
+        ++open;
+        continue;
       }
+      const LabelledBox& b = boxes_[box];
       volume += (b.max.x - b.min.x) * (b.max.y - b.min.y) * (b.max.z - b.min.z);
+      top = std::max(top, b.max.z);
+      if (--open == 0) break;
     }
-    if (k == boxes.size() || reach >= w.hi[2]) return false;  // no storey line
+    // Every box of the run closed there: where its last box ends is its
+    // lowest storey's top; none below the container's top, no storey line.
+    if (!started || i == w.end || hi_[2][events[i] >> 1] >= w.hi[2]) return false;
     const double along = pieces_[last].hi_val - pieces_[first].lo_val, across = w.hi_val[bx] - w.lo_val[bx];
     const double slab = along * across * (top - w.lo_val[2]);
     return slab > 0 && volume >= slab * (1 - 1e-6);
@@ -595,6 +599,14 @@ class Splitter {
   // heights keeps its houses, and a city block its buildings.
   void group_partial_height_pieces(const Work& w, int a) {
     if (a == 2 || pieces_.size() < 3 || w.lo[2] == w.hi[2]) return;
+    // A piece its boxes fill (storeys_first's fills, for these pieces)
+    // meets its neighbours at faces right across: only two touching
+    // pieces neither of which is full may meet short of the top.
+    constexpr double kFull = 1 - 1e-6;
+    bool maybe = false;
+    for (std::size_t c = 0; c + 1 < pieces_.size() && c + 1 < pieces_fill_.size() && !maybe; ++c)
+      maybe = pieces_[c].hi == pieces_[c + 1].lo && pieces_fill_[c] < kFull && pieces_fill_[c + 1] < kFull;
+    if (!maybe) return;
     faces_right_across(w, a, 2, across_);
     const std::size_t n = pieces_.size();
     std::vector<bool> joins(n, false);
@@ -1058,6 +1070,7 @@ class Splitter {
   std::vector<std::uint64_t> faces_;          // cuts_line_up_by_chance's (piece, rank) pairs (reused)
   std::vector<std::array<std::vector<std::pair<Rank, Rank>>, 2>> cut_faces_;  // cuts_along_faces's (reused)
   std::vector<bool> across_;  // faces_right_across's answer (reused)
+  std::vector<double> pieces_fill_;  // storeys_first: the fills of its sweep's pieces along a horizontal axis
   std::vector<Work> stack_;                   // containers still to cut
   std::vector<std::vector<std::uint32_t>> groups_;  // unsplittable containers' boxes
   std::vector<std::pair<std::uint32_t, std::uint32_t>>* overlaps_ = nullptr;  // collect_overlaps
