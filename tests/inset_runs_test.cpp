@@ -61,6 +61,31 @@ TEST(InsetRuns, MarginsThatDoNotStepAreLeftAlone) {
   EXPECT_EQ(nest_inset_runs(g, g.rules[0].body, 1e-6), g.rules[0].body);
 }
 
+TEST(InsetRuns, ACapSetInAllRoundOnOneTierIsAStackOfOneLevel) {
+  // Storeys, a band, a drum and a cap set in 1 m all round on the drum:
+  // the drum and its cap are one part, as a stack of more tiers is (a
+  // drum under an inset holding the rest), so that a front with two
+  // tiers and one with three hold the same thing above their band.
+  const std::string tiers = "a --> split(z){ ~4 : I(ground) | ~3 : I(storey) | ~3 : I(storey) | ~0.5 : I(band) | ~2 : "
+                            "I(drum) | ~2 : " + inset(1, 10, 8, "I(hip)") + " }\n";
+  Grammar g = parse_grammar(tiers);
+  const NodeId nested = nest_inset_runs(g, g.rules[0].body, 1e-6);
+  const std::string out = flat(write_operation(g, nested, {}));
+  const auto* s = std::get_if<Split>(&g.op(nested));
+  ASSERT_NE(s, nullptr) << out;
+  ASSERT_EQ(s->parts.size(), 5u) << out;
+  EXPECT_EQ(s->parts[4].size.value.literal(), 4.0) << out;
+  EXPECT_NE(out.find("~4 : split(z){ ~2 : I(drum) | ~2 : split(x){ ~1 : nil"), std::string::npos) << out;
+  // Storeys under a roof set in from their eaves stay storeys; a roof
+  // centred along one axis only is no tier.
+  for (const std::string& text : std::vector<std::string>
+       {"a --> split(z){ ~4 : I(ground) | ~3 : I(storey) | ~3 : I(storey) | ~2 : " + inset(1, 10, 8, "I(hip)") + " }\n",
+        "a --> split(z){ ~4 : I(ground) | ~0.5 : I(band) | ~2 : split(x){ ~3 : nil | ~4 : I(roof) | ~3 : nil } }\n"}) {
+    Grammar other = parse_grammar(text);
+    EXPECT_EQ(nest_inset_runs(other, other.rules[0].body, 1e-6), other.rules[0].body) << text;
+  }
+}
+
 TEST(InsetRuns, APagodaOfTwoToFiveTiersInfersAsOneRecursion) {
   // Each tier set in 0.7 m: in every example a stack along z whose k-th
   // drum is set in k times 0.7 m. Read flat, each tier count was an

@@ -173,6 +173,27 @@ class Nester {
       for (std::size_t i = first + k; i < s.parts.size(); ++i) out.parts.push_back(s.parts[i]);
       return g_.intern({std::move(out), g_.node(id).loc});
     }
+    // A stack of one level: a top set in all round on the part it stands
+    // on, by one margin on each axis (a cap on the last tier), is one part
+    // with it, as a stack of more levels is, where that part is not one of
+    // a run below it (storeys under a roof set in from their eaves stay
+    // storeys). A roof centred along one axis only is no tier.
+    if (*a == 2 && s.parts.size() >= 3) {
+      const std::size_t top = s.parts.size() - 1;
+      const NodeId below = s.parts[top - 1].child, under = s.parts[top - 2].child;
+      const auto cap = inset_of(s.parts[top].child, *a);
+      const bool all_round = cap && cap->c && std::abs(cap->margins[0] - cap->margins[1]) <= tol_ &&
+                             std::abs(cap->margins[2] - cap->margins[3]) <= tol_;
+      if (all_round && !inset_of(below, *a) && !is_nil(below) && below != under &&
+          !structurally_equal(g_, below, g_, under)) {
+        const double own = *length(s.parts[top - 1]), capped = *length(s.parts[top]);
+        const NodeId stack = split(*a, {{own, below}, {capped, s.parts[top].child}});
+        Split out{s.axis, {}};
+        for (std::size_t i = 0; i + 1 < top; ++i) out.parts.push_back(s.parts[i]);
+        out.parts.push_back({{Expr::number(own + capped), true}, stack});
+        return g_.intern({std::move(out), g_.node(id).loc});
+      }
+    }
     return id;
   }
 
