@@ -202,6 +202,22 @@ side --> split(z){ ~1.8 : I(wall) | ~1 : I(hip) }
   EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130));
 }
 
+TEST(SelfNesting, MarginsTheSameAtEveryLevelAreMetresOnPlotsOfOneDepth) {
+  // Towers on plots all 10 m deep: every tower's first tier is as deep,
+  // so the examples alone do not show the 1.2 m margins along y as
+  // metres, and merging left them shares (~1.2 : nil | ~choice(2.8, 5.2,
+  // 7.6) : ...), which set deeper tiers in by the wrong amount. The
+  // levels, each set in inside the one below, show it.
+  const Grammar source = parse_grammar(R"(
+@start front
+@scope rand(12, 20), 10, rand(8, 14)
+front --> split(z){ 4 : I(base) | ~1 : tiers(randint(2, 4)) }
+)" + set_in_tiers("tiers", "drum", "1.2", "I(hip)"), "towers.grm");
+  const Inference inferred = infer(test::derived_examples(source, 30), {});
+  EXPECT_GE(recursions(inferred.grammar), 1u) << write_grammar(inferred.grammar);
+  EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130));
+}
+
 TEST(SelfNesting, TiersEndingInDifferentCapsAreOneRecursion) {
   // A pagoda of two to five tiers whose top is a roof, a hip or a
   // pyramid: one recursion whose last step chooses the cap. Folded cap by

@@ -10,6 +10,7 @@
 #include "inverse/merge/substitute.hpp"
 #include "inverse/sizes/fit_distribution.hpp"
 #include "inverse/sizes/levels_left.hpp"
+#include "inverse/sizes/size_plan.hpp"
 
 namespace vern {
 
@@ -426,6 +427,7 @@ class Nester {
         if (all) s.parts[q].size.value = range_expr(*all, tol_);
         if (!known || !all) kept[i][q].clear();
       }
+      fix_across_levels(s, members[i], kept[i]);
       levels.push_back(std::move(s));
     }
     const NodeId base = base_of(group);
@@ -448,6 +450,33 @@ class Nester {
     nest.options.push_back({Expr{}, Expr::number(went_on), inner});
     g_.rules[rule].body = g_.intern({std::move(nest), {}});
     return Nest{rule, false};
+  }
+
+  // A part of the same length at every level while the levels' lengths
+  // differ (a tier's margins, 1.2 m at each level set in) is that length
+  // in metres. The examples alone may not say so: on plots of one depth
+  // every tower's first level is as deep, and merging left the margins
+  // shares; the levels, set in one inside the other, show it.
+  void fix_across_levels(Split& s, const std::vector<NodeId>& members,
+                         std::vector<std::vector<Observation>>& kept) const {
+    std::vector<std::vector<double>> rows;
+    for (const NodeId m : members) {
+      std::vector<double> row;
+      for (const SplitPart& part : std::get<Split>(g_.op(m)).parts) {
+        const auto r = literal_range(part.size.value);
+        if (!r || r->hi - r->lo > tol_) return;
+        row.push_back(r->lo);
+      }
+      rows.push_back(std::move(row));
+    }
+    if (rows.size() < 2) return;
+    const auto plan = plan_sizes(rows, tol_);
+    if (!plan) return;
+    for (std::size_t q = 0; q < s.parts.size() && q < plan->size(); ++q) {
+      if (!(*plan)[q].absolute || !(*plan)[q].fixed) continue;
+      s.parts[q].size = {Expr::number((*plan)[q].value), false};
+      kept[q] = {{(*plan)[q].value, 1}};
+    }
   }
 
   // nest(n) --> B where n <= 0, F[nest(n - 1)] where n > 0, with F's
