@@ -260,6 +260,21 @@ TEST(BoxSplit, AYardBeforeAWholeBuildingIsOneEmptyPart) {
   EXPECT_EQ(leaves(house.children[1]), (std::vector<std::uint32_t>{1, 2}));
 }
 
+TEST(BoxSplit, AYardBeforeABuildingWhoseTiersAreSetBackIsOneEmptyPart) {
+  // The same house with a tier set back 1 m on every side above its
+  // storeys: the tier does not border the yard, but the storeys' front
+  // runs right across the house at the bottom, so the yard is still the
+  // whole building's, one empty part (and the tier stays set in on its
+  // storeys by 1 m, not by the yard and 1 m).
+  const SplitTree t = split({part("wing", {0, 0, 0}, {2, 10, 9}, 0), part("storey", {2, 4, 0}, {8, 10, 3}, 1),
+                             part("storey", {2, 4, 3}, {8, 10, 6}, 2), part("tier", {3, 5, 6}, {7, 9, 9}, 3)});
+  ASSERT_TRUE(cut_along(t, 0, 2));
+  const SplitTree& house = t.children[1];
+  ASSERT_TRUE(cut_along(house, 1, 2));
+  EXPECT_EQ(house.children[0].kind, Kind::Empty);
+  EXPECT_EQ(leaves(house.children[1]), (std::vector<std::uint32_t>{1, 2, 3}));
+}
+
 TEST(BoxSplit, AHouseBehindItsYardBetweenTwoWingsIsOnePiece) {
   // Two wings right across the plot's depth and, between them, a house of
   // two bays and two storeys set back 4 m: its bays are set back alike,

@@ -379,18 +379,51 @@ class Splitter {
   // row: one empty part, peeled first, where waiting would give every part
   // of the building its own strip of it (each leaf a split with a nil) and
   // the examples as many sizes to join as they have parts.
+  //
+  // Along a horizontal axis, a building whose upper parts are set back
+  // (tiers above a ground floor) borders its yard alike too where its
+  // front at the bottom runs right across: the boxes standing on the
+  // container's bottom that meet the space cover the other horizontal
+  // axis from end to end.
   bool uniform_peel(const Work& w, int a) const {
     const auto ax = static_cast<std::size_t>(a);
     const Span& piece = pieces_[0];
     const bool before = piece.lo != w.lo[ax], after = piece.hi != w.hi[ax];
+    bool alike_before = true, alike_after = true;
     const Event* events = events_[ax].data();
     for (std::uint32_t i = w.begin; i < w.end; ++i) {
       const Event e = events[i];
       const bool is_max = (e & 1u) != 0;
-      if (!is_max && before && rank_of(ax, e) != piece.lo) return false;
-      if (is_max && after && rank_of(ax, e) != piece.hi) return false;
+      if (!is_max && before && rank_of(ax, e) != piece.lo) alike_before = false;
+      if (is_max && after && rank_of(ax, e) != piece.hi) alike_after = false;
     }
-    return before || after;
+    if (a != 2 && before && !alike_before) alike_before = front_right_across(w, a, false);
+    if (a != 2 && after && !alike_after) alike_after = front_right_across(w, a, true);
+    return (before || after) && (!before || alike_before) && (!after || alike_after);
+  }
+
+  // Do the boxes on the container's bottom that start where the one piece
+  // along a starts (end where it ends: back) cover the other horizontal
+  // axis from end to end?
+  bool front_right_across(const Work& w, int a, bool back) const {
+    const auto ax = static_cast<std::size_t>(a), bx = static_cast<std::size_t>(1 - a);
+    const Span& piece = pieces_[0];
+    std::vector<std::pair<Rank, Rank>> spans;
+    const Event* events = events_[ax].data();
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const Event e = events[i];
+      if (((e & 1u) != 0) != back) continue;
+      const std::uint32_t box = e >> 1;
+      if (lo_[2][box] != w.lo[2] || rank_of(ax, e) != (back ? piece.hi : piece.lo)) continue;
+      spans.emplace_back(lo_[bx][box], hi_[bx][box]);
+    }
+    std::sort(spans.begin(), spans.end());
+    Rank reached = w.lo[bx];
+    for (const auto& [lo, hi] : spans) {
+      if (lo > reached) return false;
+      reached = std::max(reached, hi);
+    }
+    return reached >= w.hi[bx];
   }
 
   // How much of each piece of the last sweep along a its boxes fill, as a
