@@ -417,13 +417,18 @@ class Splitter {
       if (lo_[2][box] != w.lo[2] || rank_of(ax, e) != (back ? piece.hi : piece.lo)) continue;
       spans.emplace_back(lo_[bx][box], hi_[bx][box]);
     }
-    std::sort(spans.begin(), spans.end());
-    Rank reached = w.lo[bx];
-    for (const auto& [lo, hi] : spans) {
-      if (lo > reached) return false;
-      reached = std::max(reached, hi);
+    return covers(spans, w.lo[bx], w.hi[bx]);
+  }
+
+  // Do the intervals (sorted here) cover [lo, hi] without a gap?
+  static bool covers(std::vector<std::pair<Rank, Rank>>& intervals, Rank lo, Rank hi) {
+    std::sort(intervals.begin(), intervals.end());
+    Rank reached = lo;
+    for (const auto& [from, to] : intervals) {
+      if (from > reached) return false;
+      reached = std::max(reached, to);
     }
-    return reached >= w.hi[bx];
+    return reached >= hi;
   }
 
   // How much of each piece of the last sweep along a its boxes fill, as a
@@ -605,17 +610,9 @@ class Splitter {
         faces[piece - 1][1].push_back(along_b);
       }
     }
-    auto covers = [&](std::vector<std::pair<Rank, Rank>>& intervals) {
-      std::sort(intervals.begin(), intervals.end());
-      Rank reached = w.lo[bx];
-      for (const auto& [lo, hi] : intervals) {
-        if (lo > reached) return false;
-        reached = std::max(reached, hi);
-      }
-      return reached >= w.hi[bx];
-    };
     out.assign(cuts, false);
-    for (std::size_t c = 0; c < cuts; ++c) out[c] = covers(faces[c][0]) || covers(faces[c][1]);
+    for (std::size_t c = 0; c < cuts; ++c)
+      out[c] = covers(faces[c][0], w.lo[bx], w.hi[bx]) || covers(faces[c][1], w.lo[bx], w.hi[bx]);
   }
 
   // Columns that only line up (issue 23: bays aligned through every
