@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "inverse/merge/merge.hpp"
 #include "support/example_graphs.hpp"
@@ -113,18 +115,14 @@ TEST(SettleRepeats, OneTileSizeThatDoesNotGiveTheCountsSeenIsMovedToOneThatDoes)
   }
 }
 
-TEST(SettleRepeats, RepeatsOfTheSameTilesShareOneTileSize) {
-  // Storeys of balconies and windows in two alternatives of a door bay's
-  // place, 3.3 and 3.6 m as merged. Each size gives its own examples'
-  // counts (2 storeys on 6.2 m, 3 on 8.5 m...), so each was kept, and a
-  // house of one alternative stacked a storey more than one of the other
-  // on the same height. Together they take one size that gives every
-  // count of both. A repeat of other parts keeps its own.
+// Two rows of storeys along z, as merging kept them (3.3 and 3.6 m), and
+// a brick course of 3.6 m, settled with the counts each was seen with:
+// the three tile sizes. Each storey size gives its own examples' counts
+// (2 storeys on 6.2 m, 3 on 8.5 m...).
+std::vector<double> settled_tiles(const std::string& first_storey, const std::string& second_storey) {
   Grammar g;
-  const NodeId root = test::example_graphs(
-      g, {"split(x){ ~1 : repeat(z, 3.3){ split(x){ ~1 : I(balcony) | ~1 : I(window) } } | "
-          "~1 : repeat(z, 3.6){ split(x){ ~2 : I(window) | ~1 : I(balcony) } } | "
-          "~1 : repeat(z, 3.6){ I(brick) } }"})[0];
+  const NodeId root = test::example_graphs(g, {"split(x){ ~1 : repeat(z, 3.3){ " + first_storey + " } | ~1 : repeat(z, 3.6){ " +
+                                                   second_storey + " } | ~1 : repeat(z, 3.6){ I(brick) } }"})[0];
   const auto& parts = std::get<Split>(g.op(root)).parts;
   const TileCounts counts{{parts[0].child, {{2, 6.2}, {3, 8.5}, {3, 9.0}}},
                           {parts[1].child, {{2, 5.7}, {3, 9.4}, {2, 6.0}}},
@@ -134,10 +132,30 @@ TEST(SettleRepeats, RepeatsOfTheSameTilesShareOneTileSize) {
   const auto& settled = std::get<Split>(g.op(out)).parts;
   std::vector<double> tiles;
   for (const auto& p : settled) tiles.push_back(*std::get<Repeat>(g.op(p.child)).size.literal());
-  EXPECT_EQ(tiles[0], tiles[1]);
   // Every count still comes out on its length.
-  for (std::size_t i = 0; i < 2; ++i)
+  for (std::size_t i = 0; i < 3; ++i)
     for (const TileSeen& t : counts.at(parts[i].child)) EXPECT_EQ(repeat_tile_count(t.length, tiles[i]), t.count) << i;
+  return tiles;
+}
+
+TEST(SettleRepeats, RepeatsOfTheSameTilesShareOneTileSize) {
+  // Storeys of balconies and windows in two alternatives of a door bay's
+  // place: each size was kept, and a house of one alternative stacked a
+  // storey more than one of the other on the same height. Together they
+  // take one size that gives every count of both. A repeat of other parts
+  // keeps its own.
+  const auto tiles = settled_tiles("split(x){ ~1 : I(balcony) | ~1 : I(window) }",
+                                   "split(x){ ~2 : I(window) | ~1 : I(balcony) }");
+  EXPECT_EQ(tiles[0], tiles[1]);
+  EXPECT_EQ(tiles[2], 3.6);
+}
+
+TEST(SettleRepeats, StoreysOfOneShapeShareOneTileSizeWhateverTheirBays) {
+  // The same with balconies in one alternative and infill panels in the
+  // other: rows cut along x, made of different parts, still storeys.
+  const auto tiles = settled_tiles("split(x){ ~1 : I(balcony) | ~1 : I(window) }",
+                                   "split(x){ ~2 : I(infill) | ~1 : I(casement) }");
+  EXPECT_EQ(tiles[0], tiles[1]);
   EXPECT_EQ(tiles[2], 3.6);
 }
 

@@ -71,6 +71,23 @@ std::vector<std::uint64_t> made_of(const Grammar& g, const Repeat& r) {
 // one kind of length (tile_lengths.hpp: plots and strips a quarter as wide
 // stay apart) are a pool where there are two or more and they differ in
 // size; alike in size, each is settled as it is.
+// A repeat's tile's shape, coarser than made_of: the operation it is and
+// its axis (a split along x: a row of bays of any kind), or its label (a
+// brick course).
+std::vector<std::uint64_t> tile_shape(const Grammar& g, const Repeat& r) {
+  const auto axis = r.axis.literal_axis();
+  std::vector<std::uint64_t> key{axis ? static_cast<std::uint64_t>(*axis) : 99, g.op(r.child).index()};
+  if (const auto* s = std::get_if<Split>(&g.op(r.child))) {
+    const auto a = s->axis.literal_axis();
+    key.push_back(a ? static_cast<std::uint64_t>(*a) : 99);
+  } else if (const auto* p = std::get_if<Primitive>(&g.op(r.child))) {
+    key.push_back(p->label);
+  } else {
+    key.push_back(r.child);  // anything else: alike only as one node
+  }
+  return key;
+}
+
 std::unordered_map<NodeId, double> pooled_tiles(const Grammar& g, NodeId root, const TileCounts& tile_counts,
                                                 double tolerance) {
   // The repeats below root whose counts are known, by axis and kind of
@@ -93,21 +110,35 @@ std::unordered_map<NodeId, double> pooled_tiles(const Grammar& g, NodeId root, c
                        [&](NodeId id) { return !(std::get<Repeat>(g.op(id)).size == first); });
   };
   std::unordered_map<NodeId, double> out;
-  for (auto& [axis_and_kind, candidates] : coarse) {
-    if (!differ(candidates)) continue;
-    std::map<std::vector<std::uint64_t>, std::vector<NodeId>> pools;
-    for (const NodeId id : candidates) pools[made_of(g, std::get<Repeat>(g.op(id)))].push_back(id);
-    for (auto& [key, members] : pools) {
+  auto common = [&](const std::vector<NodeId>& members) {
+    std::vector<TileSeen> all;
+    for (NodeId id : members) {
+      const auto& seen = tile_counts.at(id);
+      all.insert(all.end(), seen.begin(), seen.end());
+    }
+    return common_tile(all, tolerance);
+  };
+  auto settle_pools = [&](const std::map<std::vector<std::uint64_t>, std::vector<NodeId>>& pools) {
+    for (const auto& [key, members] : pools) {
       if (!differ(members)) continue;
-      std::vector<TileSeen> all;
-      for (NodeId id : members) {
-        const auto& seen = tile_counts.at(id);
-        all.insert(all.end(), seen.begin(), seen.end());
-      }
-      const auto one = common_tile(all, tolerance);
+      const auto one = common(members);
       if (!one) continue;
       for (NodeId id : members) out[id] = *one;
     }
+  };
+  for (auto& [axis_and_kind, candidates] : coarse) {
+    if (!differ(candidates)) continue;
+    // Repeats whose tiles are of one shape (rows cut along one axis:
+    // storeys, whatever bays they hold) take one size where one explains
+    // every count they made: each alternative's own examples allowed 3 m
+    // in one and 3.5 m in another. Else pools of repeats made alike.
+    std::map<std::vector<std::uint64_t>, std::vector<NodeId>> shapes;
+    for (const NodeId id : candidates) shapes[tile_shape(g, std::get<Repeat>(g.op(id)))].push_back(id);
+    settle_pools(shapes);
+    std::map<std::vector<std::uint64_t>, std::vector<NodeId>> pools;
+    for (const NodeId id : candidates)
+      if (!out.count(id)) pools[made_of(g, std::get<Repeat>(g.op(id)))].push_back(id);
+    settle_pools(pools);
   }
   return out;
 }

@@ -34,6 +34,10 @@ std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tole
 //     between them would make more tiles, on average, than the examples
 //     had. L/(n - 1/2) makes the same n tiles on L, and so does the
 //     shortest decimal near it.
+// Repeats of one axis and length kind whose tiles are of one shape (rows
+// cut along one axis: storeys, whatever bays they hold) share one size
+// where one gives every count they made; else those made of the same
+// parts do.
 // A repeat of one tile size already keeps it where it gives every count
 // seen, and still on a length a tolerance longer (or one it divides
 // exactly); else it takes common_tile's: merging may have made one size
