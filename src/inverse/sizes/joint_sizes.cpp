@@ -718,7 +718,8 @@ class Joiner {
     std::vector<std::string> names;
     std::vector<std::size_t> brought(r.splits.size(), 0);
     for (std::size_t k = 0; k < drawn.size(); ++k) {
-      if (uses[k] < 2 && !(uses[k] == 1 && per_building[k])) continue;
+      // Used once and drawn per tile: drawn where it stands.
+      if (uses[k] == 0 || (uses[k] == 1 && !per_building[k])) continue;
       param[k] = static_cast<std::uint32_t>(args.size());
       args.push_back(distribution_expr(short_decimals(drawn[k], opt_.tolerance / 4)));
       names.push_back("s" + std::to_string(args.size()));

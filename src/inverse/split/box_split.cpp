@@ -431,6 +431,9 @@ class Splitter {
     return reached >= hi;
   }
 
+  // A piece at least this much of whose volume its boxes fill is full.
+  static constexpr double kFull = 1 - 1e-6;
+
   // How much of each piece of the last sweep along a its boxes fill, as a
   // share of the piece's volume (of its area, in a container flat on an
   // axis).
@@ -472,7 +475,6 @@ class Splitter {
   // Leaves pieces_ as the sweep along z found them when it says so, else as
   // the sweep along a found them.
   bool storeys_first(const Work& w, int a) {
-    constexpr double kFull = 1 - 1e-6;
     piece_fill(w, a, fill_);
     const bool whole = std::all_of(fill_.begin(), fill_.end(), [](double f) { return f >= kFull; });
     pieces_fill_ = fill_;
@@ -632,7 +634,6 @@ class Splitter {
     // A piece its boxes fill (storeys_first's fills, for these pieces)
     // meets its neighbours at faces right across: only two touching
     // pieces neither of which is full may meet short of the top.
-    constexpr double kFull = 1 - 1e-6;
     bool maybe = false;
     for (std::size_t c = 0; c + 1 < pieces_.size() && c + 1 < pieces_fill_.size() && !maybe; ++c)
       maybe = pieces_[c].hi == pieces_[c + 1].lo && pieces_fill_[c] < kFull && pieces_fill_[c + 1] < kFull;
@@ -640,7 +641,7 @@ class Splitter {
     faces_right_across(w, a, 2, across_);
     const std::size_t n = pieces_.size();
     std::vector<bool> joins(n, false);
-    bool any_full = false, any_joined = false;
+    bool any_full = false;
     for (std::size_t c = 0; c + 1 < n; ++c) {
       const bool touching = pieces_[c].hi == pieces_[c + 1].lo;
       any_full = any_full || across_[c] || !touching;
@@ -651,11 +652,9 @@ class Splitter {
       while (last + 1 < n && joins[last + 1]) ++last;
       if (last > first && !storeyed_run(w, a, first, last))
         for (std::size_t i = first + 1; i <= last; ++i) joins[i] = false;
-      any_joined = any_joined || last > first;
       first = last + 1;
     }
-    any_joined = std::any_of(joins.begin(), joins.end(), [](bool j) { return j; });
-    if (!any_full || !any_joined) return;
+    if (!any_full || std::none_of(joins.begin(), joins.end(), [](bool j) { return j; })) return;
     if (compound_.size() != n) compound_.assign(n, false);
     join_pieces(joins);
   }
