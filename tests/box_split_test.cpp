@@ -292,6 +292,61 @@ TEST(BoxSplit, AHouseBehindItsYardBetweenTwoWingsIsOnePiece) {
   EXPECT_EQ(leaves(house.children[1]), (std::vector<std::uint32_t>{2, 3, 4, 5}));
 }
 
+TEST(BoxSplit, ACourtyardIsItsFrontAndBackRangesAndItsSideRangesBetween) {
+  // A 13 x 13 courtyard: ranges 3 deep in 3.25 m bays along the front and
+  // back, and side ranges between them in 3.5 m bays along y. Both axes
+  // cut through the yard (the x cuts between the front's bays past the
+  // side ranges, the y cuts between the side ranges' bays, which line up
+  // with each other), but only the y cuts at 3 and 10 run along faces
+  // right across: the courtyard is cut there first, and its middle is
+  // the two side ranges and the yard between them.
+  std::vector<LabelledBox> boxes;
+  std::uint32_t id = 0;
+  for (const double y : {0.0, 10.0})
+    for (int i = 0; i < 4; ++i) boxes.push_back(part("bay", {3.25 * i, y, 0}, {3.25 * (i + 1), y + 3, 4}, id++));
+  for (const double x : {0.0, 10.0})
+    for (int i = 0; i < 2; ++i) boxes.push_back(part("bay", {x, 3 + 3.5 * i, 0}, {x + 3, 3 + 3.5 * (i + 1), 4}, id++));
+  const SplitTree t = split(boxes);
+  ASSERT_TRUE(cut_along(t, 1, 3));
+  EXPECT_EQ(leaves(t.children[0]), (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  const SplitTree& middle = t.children[1];
+  ASSERT_TRUE(cut_along(middle, 0, 3));
+  EXPECT_EQ(leaves(middle.children[0]), (std::vector<std::uint32_t>{8, 9}));
+  EXPECT_EQ(middle.children[1].kind, Kind::Empty);
+  EXPECT_EQ(leaves(middle.children[2]), (std::vector<std::uint32_t>{10, 11}));
+}
+
+TEST(BoxSplit, TiersOfTwoBandsNestUpToTheTopTier) {
+  // Three tiers, each a wall (2 m) under an eaves band (1 m) of one
+  // footprint, set in by 1 m on every side, the roof on the top tier's
+  // footprint. Each tier's two bands are its lowest tier, the rest one
+  // piece; the top two tiers narrow only once, inside the stack, and
+  // still nest.
+  std::vector<LabelledBox> boxes;
+  std::uint32_t id = 0;
+  for (int t = 0; t < 3; ++t) {
+    const double in = t, z = 3.0 * t;
+    boxes.push_back(part("rect", {in, in, z}, {12 - in, 12 - in, z + 2}, id++));
+    boxes.push_back(part("eave", {in, in, z + 2}, {12 - in, 12 - in, z + 3}, id++));
+  }
+  boxes.push_back(part("roof", {2, 2, 9}, {10, 10, 11}, id++));
+  const SplitTree t = split(boxes);
+  ASSERT_TRUE(cut_along(t, 2, 3));
+  EXPECT_EQ(t.children[0].box, 0u);
+  EXPECT_EQ(t.children[1].box, 1u);
+  // The rest: the air round it peeled along x, then y, then the next tier.
+  const SplitTree* rest = &t.children[2];
+  for (int level = 1; level <= 2; ++level) {
+    ASSERT_TRUE(cut_along(*rest, 0, 3)) << "level " << level;
+    ASSERT_TRUE(cut_along(rest->children[1], 1, 3)) << "level " << level;
+    const SplitTree& tier = rest->children[1].children[1];
+    ASSERT_TRUE(cut_along(tier, 2, 3)) << "level " << level;
+    EXPECT_EQ(tier.children[0].box, 2u * static_cast<std::uint32_t>(level));
+    rest = &tier.children[2];
+  }
+  EXPECT_EQ(rest->box, 6u);  // the roof, on the top tier's footprint
+}
+
 TEST(BoxSplit, ATieredTowerIsCutAsTiersStandingOnTiers) {
   // Three tiers, each inset in the one below: cut at the lowest tier only,
   // then the air round the rest peeled (x, y), then the next tier, so each

@@ -539,17 +539,6 @@ class Splitter {
     return false;
   }
 
-  // Is every cut of the last sweep along a met by parts along the whole
-  // container on the other horizontal axis b, from one side at least? A
-  // cut along a building's face is; one that runs through open air for
-  // part of its length (between two bays of a front, across the empty
-  // yard behind it) is there only because bays happened to line up with
-  // the yard's edge. Leaves pieces_ as they are.
-  bool cuts_along_faces(const Work& w, int a, int b) {
-    faces_right_across(w, a, b, across_);
-    return std::all_of(across_.begin(), across_.end(), [](bool f) { return f; });
-  }
-
   // Is the run of pieces_[first..last] of the last sweep along a storeys:
   // its boxes divide along z (a storey line runs right across the run) and
   // the lowest storey, at the container's bottom, fills the run right
@@ -662,18 +651,39 @@ class Splitter {
   // The first horizontal axis's cuts are not all along faces, and the
   // other horizontal axis, still to be tried, divides the container with
   // cuts that all are (a front across an L plan's plot, its wing behind
-  // beside empty space): the container is cut there first. Leaves
-  // pieces_ as find_pieces(w, axes[i]) found them when it does not cut.
+  // beside empty space): the container is cut there first. Where none of
+  // the first axis's cuts is along faces, the other axis is cut at those
+  // of its cuts that are, each run of pieces between them one piece cut
+  // again later: a courtyard is its front and back ranges and, between
+  // them, its side ranges round the yard, even where the side ranges'
+  // bays line up with each other across the yard (and the ranges' bays
+  // with the side ranges' ends) so that either axis cuts through open
+  // air. Leaves pieces_ as find_pieces(w, axes[i]) found them when it
+  // does not cut.
   bool cut_along_faces_across(const Work& w, int i) {
     const int a = w.axes[static_cast<std::size_t>(i)];
     const int b = 1 - a;
     bool later = false;
     for (int j = i + 1; j < w.tries; ++j) later = later || w.axes[static_cast<std::size_t>(j)] == b;
     if (!later || w.lo[static_cast<std::size_t>(b)] == w.hi[static_cast<std::size_t>(b)]) return false;
-    if (cuts_along_faces(w, a, b)) return false;
-    if (find_pieces(w, b) && pieces_.size() > 1 && cuts_along_faces(w, b, a)) {
-      cut_along(w, b);
-      return true;
+    faces_right_across(w, a, b, across_);
+    if (std::all_of(across_.begin(), across_.end(), [](bool f) { return f; })) return false;
+    const bool a_has_none = std::none_of(across_.begin(), across_.end(), [](bool f) { return f; });
+    if (find_pieces(w, b) && pieces_.size() > 1) {
+      faces_right_across(w, b, a, across_);
+      const std::size_t along = static_cast<std::size_t>(std::count(across_.begin(), across_.end(), true));
+      if (along == across_.size()) {
+        cut_along(w, b);
+        return true;
+      }
+      if (a_has_none && along > 0) {
+        std::vector<bool> joins(pieces_.size(), false);
+        for (std::size_t c = 0; c < across_.size(); ++c) joins[c + 1] = !across_[c];
+        if (compound_.size() != pieces_.size()) compound_.assign(pieces_.size(), false);
+        join_pieces(joins);
+        cut_along(w, b);
+        return true;
+      }
     }
     find_pieces(w, a);
     return false;
@@ -681,8 +691,9 @@ class Splitter {
 
   // A stack that narrows upwards twice over (a tiered tower: each tier
   // within the footprint of the one below, the second tier and the rest
-  // both leaving empty space round them) is cut at its lowest storey only:
-  // the rest is one piece, whose empty space is peeled before it is cut
+  // both leaving empty space round them) is cut at its lowest tier only
+  // (a tier: the storeys of one footprint, a wall and its eaves band): the
+  // rest is one piece, whose empty space is peeled before it is cut
   // again, and so on up. Each tier then stands on the one below, inset in
   // it, as a person models a tiered tower (tiered(n) --> split(z){ rect |
   // inset(tiered(n - 1)) }), and merging sees one structure nested, not a
@@ -690,25 +701,42 @@ class Splitter {
   // varies into tiers wider than the ones they stand on (the thesis's
   // floating tiers, figure 12.10). Storeys of one footprint on a wider
   // base (a house on its slab) stay a plain stack: they narrow once.
-  // Joins pieces_[1..] into one when it applies.
+  // Joins the pieces above the lowest tier into one when it applies.
   bool narrowing_stack(const Work& w) {
     if (pieces_.size() < 3) return false;
-    // The x, y rank extents of the lowest piece, the second, and the rest.
+    // The x, y rank extents of each piece.
     constexpr Rank kMax = std::numeric_limits<Rank>::max();
     using Extent = std::array<std::array<Rank, 2>, 2>;
-    std::array<Extent, 3> ext;
-    for (Extent& e : ext) e = {{{kMax, 0}, {kMax, 0}}};
+    std::vector<Extent> ext(pieces_.size(), Extent{{{kMax, 0}, {kMax, 0}}});
     const Event* events = events_[2].data();
     for (std::uint32_t i = w.begin; i < w.end; ++i) {
       const Event e = events[i];
       if ((e & 1u) == 0) continue;
       const std::uint32_t b = e >> 1;
-      Extent& x = ext[std::min<std::uint32_t>(target_[span_of_[b]], 2)];
+      Extent& x = ext[target_[span_of_[b]]];
       for (std::size_t a = 0; a < 2; ++a) {
         x[a][0] = std::min(x[a][0], lo_[a][b]);
         x[a][1] = std::max(x[a][1], hi_[a][b]);
       }
     }
+    // A tier is a run of pieces of one footprint (a tier of a wall and its
+    // eaves band is two pieces): the lowest tier, the second, and the rest.
+    auto tier_end = [&](std::size_t from) {
+      std::size_t to = from + 1;
+      while (to < ext.size() && ext[to] == ext[from]) ++to;
+      return to;
+    };
+    const std::size_t second = tier_end(0), rest = second < ext.size() ? tier_end(second) : ext.size();
+    if (second >= ext.size()) return false;
+    auto hull = [&](std::size_t from, std::size_t to) {
+      Extent h = ext[from];
+      for (std::size_t p = from + 1; p < to; ++p)
+        for (std::size_t a = 0; a < 2; ++a) {
+          h[a][0] = std::min(h[a][0], ext[p][a][0]);
+          h[a][1] = std::max(h[a][1], ext[p][a][1]);
+        }
+      return h;
+    };
     // inner stands within outer, and strictly inside within's bounds somewhere.
     auto inset = [](const Extent& inner, const Extent& outer, const std::array<Rank, 3>& lo,
                     const std::array<Rank, 3>& hi) {
@@ -719,17 +747,20 @@ class Splitter {
       }
       return strictly;
     };
-    Extent upper = ext[1];
-    for (std::size_t a = 0; a < 2; ++a) {
-      upper[a][0] = std::min(upper[a][0], ext[2][a][0]);
-      upper[a][1] = std::max(upper[a][1], ext[2][a][1]);
-    }
-    const std::array<Rank, 3> second_lo{ext[1][0][0], ext[1][1][0], 0}, second_hi{ext[1][0][1], ext[1][1][1], 0};
-    if (!inset(upper, ext[0], w.lo, w.hi) || !inset(ext[2], ext[1], second_lo, second_hi)) return false;
-    for (std::size_t p = 2; p < pieces_.size(); ++p) pieces_[1].absorb(pieces_[p]);
-    pieces_.resize(2);
-    compound_.assign(2, false);
-    for (std::uint32_t& t : target_) t = std::min<std::uint32_t>(t, 1);
+    const Extent& second_ext = ext[second];
+    const std::array<Rank, 3> second_lo{second_ext[0][0], second_ext[1][0], 0},
+        second_hi{second_ext[0][1], second_ext[1][1], 0};
+    // Inside a stack found narrowing (the rest of one: peel_first), the
+    // last two tiers narrow only once and are still tiers: the top tier of
+    // a pagoda nests like every other.
+    const bool narrows_again =
+        rest < ext.size() ? inset(hull(rest, ext.size()), second_ext, second_lo, second_hi) : w.peel_first;
+    if (!narrows_again || !inset(hull(second, ext.size()), ext[0], w.lo, w.hi)) return false;
+    std::vector<bool> joins(pieces_.size(), false);
+    for (std::size_t p = second + 1; p < pieces_.size(); ++p) joins[p] = true;
+    compound_.assign(pieces_.size(), false);
+    join_pieces(joins);
+    compound_.assign(pieces_.size(), false);
     return true;
   }
 
@@ -995,7 +1026,7 @@ class Splitter {
       child.hi_val[ax] = piece.hi_val;
       child.axes = axes_after(a);
       child.tries = compound_[p] ? 3 : 2;  // a run of touching pieces is cut along a again, last
-      child.peel_first = peel == Peel::KeepPeeling || (peel == Peel::Upper && p == 1);
+      child.peel_first = peel == Peel::KeepPeeling || (peel == Peel::Upper && p + 1 == pieces_.size());
       stack_.push_back(child);
       previous = piece.hi;
       previous_val = piece.hi_val;
