@@ -164,5 +164,26 @@ TEST(ShareSplits, LengthsInMetresInOneProportionBecomeOneDraw) {
   }
 }
 
+TEST(ShareSplits, ASplitInACountedRecursionTakesTheCountOn) {
+  // A tower of n tiers, each tier's share of its storey and the rest
+  // drawn: the split holds the call tower(n - 1), so the rule it becomes
+  // takes n on before its share, tier(n, s1). Given only the share, n
+  // read the share (tower(s1 - 1)) and no example derived any more, so
+  // nothing was shared.
+  Grammar g = parse_grammar(R"(
+@scope 12, 8, 10
+b --> tower(randint(1, 3))
+tower(n) : n <= 0 --> I(roof)
+tower(n) : n > 0 --> split(z){ ~rand(1, 3) : I(rect) | ~rand(4, 6) : tower(n - 1) }
+)",
+                            "tower.grm");
+  const std::vector<Example> examples = examples_of(g);
+  EXPECT_EQ(shared_splits(g, examples), 1u);
+  const auto tier = std::ranges::find_if(g.rules, [](const Rule& r) { return r.params.size() == 2; });
+  ASSERT_NE(tier, g.rules.end()) << write_grammar(g);
+  EXPECT_EQ(tier->params, (std::vector<std::string>{"n", "s1"})) << write_grammar(g);
+  for (const CheckResult& r : checked(g, examples)) EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(g);
+}
+
 }  // namespace
 }  // namespace vern

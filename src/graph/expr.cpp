@@ -227,6 +227,13 @@ bool Expr::uses_params() const {
   return std::ranges::any_of(nodes(), [](const ExprNode& n) { return n.kind == ExprKind::Param; });
 }
 
+std::size_t Expr::params_read() const {
+  std::size_t out = 0;
+  for (const ExprNode& n : nodes())
+    if (n.kind == ExprKind::Param) out = std::max<std::size_t>(out, n.index + 1);
+  return out;
+}
+
 std::size_t Expr::hash() const {
   std::size_t h = nodes().size();
   for (const auto& n : nodes()) {

@@ -117,6 +117,8 @@ class Expr {
   std::optional<std::uint8_t> literal_axis() const;
   bool draws_random() const;
   bool uses_params() const;
+  // 1 + the highest parameter index read, 0 when none is.
+  std::size_t params_read() const;
 
   std::size_t hash() const;
   friend bool operator==(const Expr& a, const Expr& b) { return std::ranges::equal(a.nodes(), b.nodes()); }

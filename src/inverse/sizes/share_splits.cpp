@@ -17,6 +17,37 @@ namespace vern {
 
 namespace {
 
+// How many parameters of the rule it is written in a node and the nodes
+// below it read (calls not entered): 1 + the highest index. A split deep
+// in a counted recursion, nest(n), holds the call nest(n - 1): the rule it
+// becomes takes n on, before its share.
+std::size_t params_read_below(const Grammar& g, NodeId id, std::unordered_map<NodeId, std::size_t>& memo) {
+  if (const auto known = memo.find(id); known != memo.end()) return known->second;
+  const Operation& op = g.op(id);
+  std::size_t out = 0;
+  for (const Expr* e : node_expressions(op)) out = std::max(out, e->params_read());
+  if (!std::holds_alternative<Call>(op))
+    for_each_child(op, [&](NodeId c) { out = std::max(out, params_read_below(g, c, memo)); });
+  memo[id] = out;
+  return out;
+}
+
+// The rule each node is written in (first rule by id that holds it, calls
+// not entered): where the names of the parameters it reads come from.
+std::unordered_map<NodeId, RuleId> rules_written_in(const Grammar& g) {
+  std::unordered_map<NodeId, RuleId> out;
+  for (RuleId r = 0; r < g.rules.size(); ++r) {
+    std::vector<NodeId> stack{g.rules[r].body};
+    while (!stack.empty()) {
+      const NodeId id = stack.back();
+      stack.pop_back();
+      if (!out.emplace(id, r).second) continue;
+      if (!std::holds_alternative<Call>(g.op(id))) for_each_child(g.op(id), [&](NodeId c) { stack.push_back(c); });
+    }
+  }
+  return out;
+}
+
 // The lines of one run of a split (a repeat runs it once per tile, on one
 // path): each starts where the part index does not go up.
 struct SplitRun {
@@ -180,6 +211,13 @@ void splits_below(const Grammar& g, NodeId id, std::unordered_set<NodeId>& out) 
   for_each_child(g.op(id), [&](NodeId c) { splits_below(g, c, out); });
 }
 
+// The parameters a changed split's rule carries on, passed as they are.
+std::vector<Expr> carried_args(std::size_t m) {
+  std::vector<Expr> args;
+  for (std::size_t k = 0; k < m; ++k) args.push_back(Expr::param(static_cast<std::uint32_t>(k)));
+  return args;
+}
+
 // A split whose draw, in every run, is a straight line of the draw of the
 // split it runs inside (a tier's inset along y, the same share as its
 // inset along x, in towers of every tier count): it takes that line of
@@ -189,7 +227,8 @@ void splits_below(const Grammar& g, NodeId id, std::unordered_set<NodeId>& out) 
 // same example (four pairs or more showing a line, or two or more equal).
 void link_nested_shares(Grammar& g, const std::unordered_map<NodeId, RuleId>& rule_of,
                         const std::unordered_map<RuleId, NodeId>& body_of,
-                        const std::unordered_map<NodeId, std::vector<DrawnAt>>& values, std::vector<NodeId>& replace,
+                        const std::unordered_map<NodeId, std::vector<DrawnAt>>& values,
+                        const std::unordered_map<NodeId, std::size_t>& carried, std::vector<NodeId>& replace,
                         double tol) {
   // How many places hold each node, and call each rule, over what the
   // rules reach.
@@ -267,9 +306,11 @@ void link_nested_shares(Grammar& g, const std::unordered_map<NodeId, RuleId>& ru
       const Fit line = short_line(x, y, f, tol / 4);
       Linear passed;
       passed.c0 = line.a;
-      passed.add(0, line.b);
+      passed.add(carried.at(outer), line.b);  // the outer rule's share, after what it carries
       const RuleId callee = rule_of.at(inner);
-      replace[where] = g.intern({Call{callee, {linear_expr(passed)}}, g.node(where).loc});
+      std::vector<Expr> args = carried_args(carried.at(inner));
+      args.push_back(linear_expr(passed));
+      replace[where] = g.intern({Call{callee, std::move(args)}, g.node(where).loc});
     }
   }
 }
@@ -417,14 +458,34 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
   // the grammar changed here, in that order.
   std::vector<std::optional<SharePlan>> plans(order.size());
   parallel_for(order.size(), opt.threads, [&](std::size_t i) { plans[i] = plan_shares(seen.at(order[i]), opt); });
+  std::unordered_map<NodeId, std::size_t> read_memo, carried;  // changed split -> parameters it carries on
+  const std::unordered_map<NodeId, RuleId> written_in = rules_written_in(g);
   for (std::size_t i = 0; i < order.size(); ++i) {
     if (!plans[i]) continue;
     const NodeId id = order[i];
+    // A split below which its rule's parameters are read becomes a rule
+    // taking them on, before the share; it is never a rule's own body
+    // (those rules take none).
+    const std::size_t m = params_read_below(g, id, read_memo);
+    if (m > 0 && !bodies[id].empty()) continue;
+    std::vector<std::string> params;
+    if (m > 0) {
+      const auto in = written_in.find(id);
+      if (in == written_in.end() || g.rules[in->second].params.size() < m) continue;
+      params.assign(g.rules[in->second].params.begin(), g.rules[in->second].params.begin() + static_cast<std::ptrdiff_t>(m));
+    }
+    std::string share = "s1";
+    for (int n = 2; std::ranges::find(params, share) != params.end(); ++n) share = "s" + std::to_string(n);
+    params.push_back(share);
     SharePlan& plan = *plans[i];
     const std::size_t k = plan.lines.size();
     Split split = std::get<Split>(g.op(id));
     const std::vector<std::size_t> relative = drawn_shares(split)->parts;
-    for (std::size_t j = 0; j < k; ++j) split.parts[relative[j]].size = Size{linear_expr(plan.lines[j]), !plan.metric};
+    for (std::size_t j = 0; j < k; ++j) {
+      Linear line = plan.lines[j];
+      if (!line.c.empty()) line.c.insert(line.c.begin(), m, 0.0);  // the share after what is carried
+      split.parts[relative[j]].size = Size{linear_expr(line), !plan.metric};
+    }
     const SourceLoc loc = g.node(id).loc;
     const NodeId shared = g.intern({std::move(split), loc});
     RuleId rule;
@@ -434,11 +495,14 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
       rule = static_cast<RuleId>(g.rules.size());
       g.rules.push_back(Rule{free_label(g, node_name(g, id)), {}, shared, loc});
     }
-    g.rules[rule].params = {"s1"};
+    g.rules[rule].params = std::move(params);
     rule_of[id] = rule;
     body_of[rule] = shared;
+    carried[id] = m;
     const Distribution d = short_decimals(plan.d, opt.tolerance / 4);
-    const NodeId call = g.intern({Call{rule, {distribution_expr(d)}}, loc});
+    std::vector<Expr> args = carried_args(m);
+    args.push_back(distribution_expr(d));
+    const NodeId call = g.intern({Call{rule, std::move(args)}, loc});
     if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
     replace[id] = call;
     const Seen& s = seen.at(id);
@@ -449,7 +513,7 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
   for (NodeId id = 0; id < replace.size(); ++id)
     if (const auto* c = std::get_if<Call>(&g.op(id)); c && c->args.empty() && body_of.count(c->rule))
       replace[id] = replace[g.rules[c->rule].body];
-  link_nested_shares(g, rule_of, body_of, values, replace, opt.tolerance);
+  link_nested_shares(g, rule_of, body_of, values, carried, replace, opt.tolerance);
   for (RuleId r = 0; r < g.rules.size(); ++r) {
     const auto own = body_of.find(r);
     g.rules[r].body = substitute(g, own != body_of.end() ? own->second : g.rules[r].body, replace);
