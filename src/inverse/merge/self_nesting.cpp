@@ -361,9 +361,10 @@ class Nester {
     return g_.intern({std::move(bases), {}});
   }
 
-  // The rule for one group of keys: nest --> B | F[nest], or its counted
-  // form, B the choice of their bases; nullopt when some level's sizes are
-  // not ranges to widen.
+  // The rule for one group of keys: its counted form where every level
+  // has one count of levels left, else nest --> B | F[nest]; B the choice
+  // of their bases. Nullopt when some level's sizes are not ranges to
+  // widen.
   std::optional<Nest> recursive_rule(const std::vector<std::size_t>& group) {
     const std::vector<Operation>& context = keys_[group.front()].context;
     const std::size_t p = context.size();
@@ -431,9 +432,7 @@ class Nester {
       levels.push_back(std::move(s));
     }
     const NodeId base = base_of(group);
-    if (counted) {
-      if (const auto rule = counted_rule(context, base, members, left, levels, kept)) return Nest{*rule, true};
-    }
+    if (counted) return Nest{counted_rule(context, base, members, left, levels, kept), true};
     // The rule first, so that F's innermost level can call it.
     const auto rule = static_cast<RuleId>(g_.rules.size());
     g_.rules.push_back({"nest", {}, 0, {}});
@@ -481,9 +480,12 @@ class Nester {
 
   // nest(n) --> B where n <= 0, F[nest(n - 1)] where n > 0, with F's
   // sizes in n where they follow the count of levels left
-  // (levels_left.hpp), and each chain a call nest(k): none when no size
-  // follows the count.
-  std::optional<RuleId> counted_rule(const std::vector<Operation>& context, NodeId base,
+  // (levels_left.hpp), else their ranges, and each chain a call nest(k),
+  // k drawn from the counts the examples show. Counted even where no size
+  // follows n: a pagoda of three to six tiers has three to six, where
+  // stopping at each level with the odds seen gives towers of one tier
+  // and of ten.
+  RuleId counted_rule(const std::vector<Operation>& context, NodeId base,
                                      const std::vector<std::vector<NodeId>>& members,
                                      const std::unordered_map<NodeId, int>& left, const std::vector<Split>& ranged,
                                      const std::vector<std::vector<std::vector<Observation>>>& kept) {
@@ -516,8 +518,11 @@ class Nester {
         }
       }
     }
-    const auto sizes = sizes_by_levels_left(levels, tol_);
-    if (!sizes) return std::nullopt;
+    auto sizes = sizes_by_levels_left(levels, tol_);
+    if (!sizes) {
+      sizes.emplace(p);
+      for (std::size_t i = 0; i < p; ++i) (*sizes)[i].resize(levels[i].size());
+    }
     const auto rule = static_cast<RuleId>(g_.rules.size());
     g_.rules.push_back({"nest", {"n"}, 0, {}});
     const Expr n = Expr::param(0);

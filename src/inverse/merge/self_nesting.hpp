@@ -8,12 +8,18 @@
 // out its tiers. Here a chain of one context F repeated, F[F[...F[B]]],
 // is found along a node's spine (its one child that is a split, followed
 // down), and every chain of the same F and innermost piece B, seen nested
-// twice over somewhere, becomes one recursive rule
+// twice over somewhere, becomes one recursive rule with a counter
+//     nest(n) : n <= 0 --> B
+//     nest(n) : n > 0 --> F[nest(n - 1)]
+// called nest(k), k drawn from the chain lengths seen (a pagoda of three
+// to six tiers has three to six, where stopping at each level with the
+// odds seen gave towers of one tier and of ten), with F's sizes in n
+// where they follow the levels left (levels_left.hpp), else ranging over
+// every level of every chain. Every example stays derivable: each of its
+// chains is F applied k times to B, each level's sizes in F's ranges.
+// Where one node is seen at two counts (a chain inside another at another
+// depth), the rule stops and goes on with the odds seen instead:
 //     nest --> B | F[nest]
-// weighted by how often the examples stopped and went on (one more tier:
-// the periods seen; stopping: the chains seen), with F's sizes ranging
-// over every level of every chain. Every example stays derivable: each of
-// its chains is F applied k times to B, each level's sizes in F's ranges.
 #pragma once
 
 #include <utility>
