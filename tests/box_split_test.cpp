@@ -11,6 +11,8 @@
 #include <limits>
 #include <numeric>
 #include <random>
+#include <string>
+#include <tuple>
 
 #include "base/error.hpp"
 #include "support/example_helpers.hpp"
@@ -345,6 +347,28 @@ TEST(BoxSplit, TiersOfTwoBandsNestUpToTheTopTier) {
     rest = &tier.children[2];
   }
   EXPECT_EQ(rest->box, 6u);  // the roof, on the top tier's footprint
+}
+
+TEST(BoxSplit, ATerraceOfEqualHousesIsCutIntoHouses) {
+  // Three houses 6 m wide, each a door bay (wall, door, wall) and a
+  // window bay (wall, window, wall) under a roof band of a chimney and
+  // its roof: the party walls run through the storey and the roof band,
+  // which share no other boundary. The cuts at every party wall are the
+  // houses', not bays and chimneys lining up by chance: houses first,
+  // each its storey and roof band.
+  std::vector<LabelledBox> boxes;
+  std::uint32_t id = 0;
+  for (int h = 0; h < 3; ++h) {
+    const double x = 6.0 * h;
+    for (const auto& [from, to, label] : std::vector<std::tuple<double, double, std::string>>{
+             {0, 1, "wall"}, {1, 2, "door"}, {2, 3, "wall"}, {3, 3.8, "wall"}, {3.8, 5.2, "window"}, {5.2, 6, "wall"}})
+      boxes.push_back(part(label, {x + from, 0, 0}, {x + to, 10, 6}, id++));
+    boxes.push_back(part("chimney", {x, 0, 6}, {x + 0.8, 10, 9}, id++));
+    boxes.push_back(part("roof", {x + 0.8, 0, 6}, {x + 6, 10, 9}, id++));
+  }
+  const SplitTree t = split(boxes);
+  ASSERT_TRUE(cut_along(t, 0, 3));
+  for (const SplitTree& house : t.children) EXPECT_TRUE(cut_along(house, 2, 2));
 }
 
 TEST(BoxSplit, ATieredTowerIsCutAsTiersStandingOnTiers) {

@@ -182,7 +182,7 @@ void radix_sort(std::vector<Bound>& bounds) {
 class Splitter {
  public:
   Splitter(const std::vector<LabelledBox>& boxes, double tolerance, const std::string& source)
-      : boxes_(boxes), source_(source), span_of_(boxes.size(), 0) {
+      : boxes_(boxes), source_(source), tolerance_(tolerance), span_of_(boxes.size(), 0) {
     // One pass over the boxes (they are large; the bounds are not): check
     // them, measure the root, and list every axis's bounds to sort.
     const std::size_t n = boxes.size();
@@ -479,6 +479,15 @@ class Splitter {
     const bool whole = std::all_of(fill_.begin(), fill_.end(), [](double f) { return f >= kFull; });
     pieces_fill_ = fill_;
     const std::size_t cuts_along_a = pieces_.size() - 1;
+    cut_ranks_.clear();
+    alike_pieces_ = true;
+    const double first_length = pieces_[0].hi_val - pieces_[0].lo_val;
+    for (std::size_t i = 0; i < pieces_.size(); ++i) {
+      alike_pieces_ = alike_pieces_ && std::abs(pieces_[i].hi_val - pieces_[i].lo_val - first_length) <= 2 * tolerance_;
+      if (i + 1 == pieces_.size()) continue;
+      cut_ranks_.push_back(pieces_[i].hi);
+      cut_ranks_.push_back(pieces_[i + 1].lo);
+    }
     if (w.hi[2] > w.lo[2] && find_pieces(w, 2) && pieces_.size() > 1) {
       if (!whole) {
         piece_fill(w, 2, fill_);
@@ -493,7 +502,13 @@ class Splitter {
 
   // After a sweep along z: does every piece have more than twice `cuts`
   // boundaries of its own along a (its boxes' faces strictly inside the
-  // container)?
+  // container)? Not where two cuts or more (cut_ranks_) make pieces of
+  // one length (alike_pieces_) and run through every storey while the
+  // storeys share no other boundary: storeys drawn apart (a door bay and
+  // a window bay under a chimney and its roof) line up at one place by
+  // chance, not at every party wall of a terrace of equal houses;
+  // storeys that share their other boundaries too (aligned bays) are a
+  // grid, read as storeys.
   bool cuts_line_up_by_chance(const Work& w, int a, std::size_t cuts) {
     const auto ax = static_cast<std::size_t>(a);
     faces_.clear();
@@ -508,7 +523,16 @@ class Splitter {
     faces_.erase(std::unique(faces_.begin(), faces_.end()), faces_.end());
     std::vector<std::size_t> own(pieces_.size(), 0);
     for (const std::uint64_t f : faces_) ++own[static_cast<std::size_t>(f >> 32)];
-    return std::all_of(own.begin(), own.end(), [&](std::size_t n) { return n > 2 * cuts; });
+    if (!std::all_of(own.begin(), own.end(), [&](std::size_t n) { return n > 2 * cuts; })) return false;
+    if (cuts < 2 || !alike_pieces_) return true;
+    // Is some boundary other than the cuts in two storeys?
+    std::vector<Rank> ranks;
+    for (const std::uint64_t f : faces_) {
+      const auto r = static_cast<Rank>(f & 0xffffffffu);
+      if (std::find(cut_ranks_.begin(), cut_ranks_.end(), r) == cut_ranks_.end()) ranks.push_back(r);
+    }
+    std::sort(ranks.begin(), ranks.end());
+    return std::adjacent_find(ranks.begin(), ranks.end()) != ranks.end();
   }
 
   // Is there empty space between two of the pieces find_pieces found?
@@ -1119,6 +1143,7 @@ class Splitter {
 
   const std::vector<LabelledBox>& boxes_;
   const std::string& source_;
+  double tolerance_;  // metres: what snapping joins
   std::array<std::vector<Rank>, 3> lo_, hi_;  // per axis, per box: ranks of its bounds
   std::array<Rank, 3> ranks_{};               // per axis: how many ranks
   std::array<double, 3> root_lo_{}, root_hi_{};  // the bounds of all boxes
@@ -1130,6 +1155,8 @@ class Splitter {
   std::vector<std::uint64_t> faces_;          // cuts_line_up_by_chance's (piece, rank) pairs (reused)
   std::vector<std::array<std::vector<std::pair<Rank, Rank>>, 2>> cut_faces_;  // cuts_along_faces's (reused)
   std::vector<bool> across_;  // faces_right_across's answer (reused)
+  std::vector<Rank> cut_ranks_;  // storeys_first: the ranks of the cuts along a horizontal axis it weighs
+  bool alike_pieces_ = false;    // storeys_first: whether those cuts make pieces of one length
   std::vector<double> pieces_fill_;  // storeys_first: the fills of its sweep's pieces along a horizontal axis
   std::vector<Work> stack_;                   // containers still to cut
   std::vector<std::vector<std::uint32_t>> groups_;  // unsplittable containers' boxes
