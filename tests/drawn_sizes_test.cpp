@@ -51,5 +51,21 @@ belvedere --> split(x){ ~0.9 : nil | ~1 : I(pyramid) | ~0.9 : nil }
   EXPECT_EQ(kept, 40u) << write_grammar(inferred.grammar);
 }
 
+TEST(DrawnSizes, TwoRunsInOneRowNestInTurn) {
+  // A house of two halves, a door bay and a window bay, each wall, an
+  // opening of fixed width, wall: the examples show six parts in a row.
+  // One run nested (the door bay) left the window bay's walls beside it
+  // as shares that no width keeps (a door bay drawn from 5 to 45); both
+  // nested, the house is two halves.
+  const Grammar source = parse_grammar(R"(
+@start house
+@scope rand(6, 14), 8, 6
+house --> split(x){ ~1 : split(x){ ~1 : I(wall) | 1 : I(door) | ~1 : I(wall) } | ~1 : split(x){ ~1 : I(render) | 1.4 : I(window) | ~1 : I(render) } }
+)",
+                                       "house.grm");
+  const Inference inferred = infer(test::derived_examples(source, 10), {});
+  EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130)) << write_grammar(inferred.grammar);
+}
+
 }  // namespace
 }  // namespace vern

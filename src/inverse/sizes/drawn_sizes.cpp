@@ -62,6 +62,12 @@ std::optional<DrawnSplit> nested_split(Grammar& g, const Split& split, const std
       outer.parts.push_back(split.parts[i]);
     }
   }
+  // The outer split may hold another run (a house's door bay and window
+  // bay, each three parts, halves of the house): nested in turn while
+  // that draws fewer sizes still.
+  const std::vector<std::vector<double>> outer_rows = outer_lengths(lengths, *run);
+  if (auto again = nested_split(g, outer, rows, outer_rows, plan_sizes(outer_rows, tolerance), book, tolerance))
+    return again;
   return drawn_split(std::move(outer), run->outer, rows, tolerance);
 }
 
