@@ -451,5 +451,72 @@ storey(w) --> split(x){ ~1 : I(wall) | w : I(window) | ~1 : I(wall) }
   }
 }
 
+// A block whose two fronts take one storey height, drawn once per
+// building (as data/styles/dev/storey_kept.grm).
+constexpr const char* kStoreysKept = R"(
+@start block
+@scope rand(20, 30), rand(12, 16), rand(12, 20)
+block --> body(rand(2.8, 3.6))
+body(s) --> split(y){ ~1 : front(s) | ~1.5 : I(core) | ~1 : front(s) }
+front(s) --> split(z){ 4 : I(shop) | ~1 : repeat(z, s){ repeat(x, 3){ split(x){ ~1 : I(wall) | 1.2 : I(window) | ~1 : I(wall) } } } }
+)";
+
+// The heights of a building's window rows on the front at y = 0 and on
+// the one behind, sorted.
+std::pair<std::vector<double>, std::vector<double>> window_rows(const Grammar& g, std::uint64_t seed) {
+  std::set<double> front, back;
+  for (const LabelledBox& b : test::derived_parts(g, seed)) {
+    if (b.label != "window") continue;
+    (b.min.y < 1e-6 ? front : back).insert(std::round(b.min.z * 1e6) / 1e6);
+  }
+  return {{front.begin(), front.end()}, {back.begin(), back.end()}};
+}
+
+TEST(JointSizes, ATileSizeBothFrontsKeepIsDrawnOncePerBuilding) {
+  // Merged, each front's storeys were repeat(z, rand(...)), drawn apart:
+  // the fronts of one variant stood in storeys of different heights.
+  const Grammar source = parse_grammar(kStoreysKept, "block.grm");
+  const Inference inferred = infer(test::derived_examples(source, 10), {});
+  std::size_t apart = 0;
+  for (std::uint64_t seed = 101; seed <= 140; ++seed) {
+    const auto [front, back] = window_rows(inferred.grammar, seed);
+    apart += front == back ? 0 : 1;
+  }
+  EXPECT_EQ(apart, 0u) << write_grammar(inferred.grammar);
+  for (const Example& e : test::derived_examples(source, 10)) {
+    const CheckResult r = check_example(inferred.grammar, e.boxes, example_size(e));
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(inferred.grammar);
+  }
+}
+
+TEST(JointSizes, ADrawnTileSizeIsDrawnFromTheSizesThatGaveTheTiles) {
+  // A storey height s drawn from 2.8 to 3.6 m gives ceil(L / s) storeys
+  // of L / n, lower than s: drawn from the storeys' heights (2.25 to
+  // 3.39 m), variants had storeys the style never makes. The sizes that
+  // gave each building's storeys span the style's range.
+  const Grammar source = parse_grammar(kStoreysKept, "block.grm");
+  const Inference inferred = infer(test::derived_examples(source, 30), {});
+  std::size_t outside = 0, measured = 0;
+  double lowest = 10, highest = 0;
+  for (std::uint64_t seed = 101; seed <= 160; ++seed) {
+    DeriveOptions o;
+    o.seed = seed;
+    const Derivation d = derive(inferred.grammar, o);
+    const auto [front, back] = window_rows(inferred.grammar, seed);
+    if (front.size() < 2) continue;
+    ++measured;
+    // Storeys from the shop's top (4 m) to the building's top, n of them.
+    const double top = d.start.size.z, storey = front[1] - front[0], n = std::round((top - 4) / storey);
+    // Some s in [2.8, 3.6] gives n storeys: ceil((top - 4) / s) == n.
+    const double lo = (top - 4) / n, hi = n > 1 ? (top - 4) / (n - 1) : 1e9;
+    outside += hi > 2.8 && lo <= 3.6 ? 0 : 1;
+    lowest = std::min(lowest, storey);
+    highest = std::max(highest, storey);
+  }
+  EXPECT_GE(measured, 50u);
+  EXPECT_EQ(outside, 0u) << write_grammar(inferred.grammar);
+  EXPECT_GT(highest - lowest, 0.4) << write_grammar(inferred.grammar);  // still drawn
+}
+
 }  // namespace
 }  // namespace vern

@@ -120,7 +120,9 @@ inline std::uint64_t derivation_path(std::uint64_t parent, NodeId node, std::uin
 }
 
 // One part of a split with a random size, as the derivation that
-// reproduces an example places it.
+// reproduces an example places it; also a repeat whose tile size draws,
+// as a split of one part: `split` the repeat, part 0, `length` the tiles'
+// length and `value` their count.
 struct MatchedPart {
   std::uint64_t path = 0;  // the split's derivation_path
   NodeId split = 0;

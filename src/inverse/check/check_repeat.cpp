@@ -175,6 +175,7 @@ bool Matcher::match_repeat(NodeId id, const Scope& s, const BoxList& inside) {
       w.size = c.size;
       w.spelled = st->random;
       w.length = c.n > 0 ? length / c.n : 0.0;
+      w.path = path_.back();
       witness_.push_back(std::move(w));
     }
     if (c.n <= 0) {

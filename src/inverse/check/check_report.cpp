@@ -14,8 +14,13 @@ namespace vern::check_detail {
 
 std::vector<MatchedPart> Matcher::matched_parts() const {
   std::vector<MatchedPart> out;
-  for (const WitnessLine& w : witness_)
+  for (const WitnessLine& w : witness_) {
     if (w.kind == WitnessLine::Kind::Part) out.push_back({w.path, w.node, w.index, w.length, w.value, w.spelled});
+    // A repeat whose tile size draws: its tiles' length, as a part of one,
+    // and their count as its value.
+    if (w.kind == WitnessLine::Kind::Tiles && w.spelled && w.value > 0 && std::holds_alternative<Repeat>(g_.op(w.node)))
+      out.push_back({w.path, w.node, 0, w.length, w.value, true});
+  }
   return out;
 }
 

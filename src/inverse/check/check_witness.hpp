@@ -30,7 +30,7 @@ struct WitnessLine {
   std::size_t index = 0, count = 0;  // alternative index of count; part index
   double value = 0, size = 0;        // the value; Tiles: the count and a tile size (0: repeatN)
   double length = 0;                 // Part: its length in metres
-  std::uint64_t path = 0;            // Part: the split's derivation_path
+  std::uint64_t path = 0;            // Part, Tiles: the split's or repeat's derivation_path
   std::string name;                  // Value: the parameter or constant
   Origin origin;                     // Value: what drew it
   bool spelled = true;               // false: data only (a repeat whose count no draw chose)

@@ -90,6 +90,17 @@ bool draws(const Split& s) {
   return std::ranges::any_of(s.parts, [](const SplitPart& p) { return p.size.value.draws_random(); });
 }
 
+// A slot's sizes: a split's parts, or a repeat's tile size as a split of
+// one part in metres. A tile size drawn once per building and used by the
+// repeats of several subtrees (both fronts' storeys of a block) is a size
+// like any other: check reports its tiles' length (MatchedPart), and the
+// repeats that show the same length in every building draw it once.
+Split sized_view(const Operation& op) {
+  if (const auto* s = std::get_if<Split>(&op)) return *s;
+  const Repeat& r = std::get<Repeat>(op);
+  return Split{r.axis, {SplitPart{Size{r.size, false}, r.child}}};
+}
+
 // The regions of a grammar, and a region's nodes rebuilt with new sizes.
 // Both follow the nodes in the order check() matches them, computing the
 // same derivation_path.
@@ -159,6 +170,10 @@ class Regions {
                std::holds_alternative<Rotate>(op)) {
       collect(node_children(op)[0], path, 0, open, rule, tiled);
     } else if (std::holds_alternative<Repeat>(op) || std::holds_alternative<RepeatN>(op)) {
+      if (const auto* r = std::get_if<Repeat>(&op); r && r->size.draws_random()) {
+        const std::size_t ordinal = regions_[open.back()].splits.size();
+        for (std::size_t k : open) regions_[k].splits.push_back({path, id, tiled, open.back(), ordinal});
+      }
       // Tiles draw anew, but a size every tile of a building shows the
       // same (the storeys' door bay above the ground floor's) may follow
       // a size outside: region() keeps such sizes and leaves the others.
@@ -194,6 +209,10 @@ class Regions {
       std::vector<Expr> args;
       for (std::size_t k = 0; k < params_->size(); ++k) args.push_back(Expr::param(static_cast<std::uint32_t>(k)));
       return g_.intern({Call{called, std::move(args)}, loc});
+    }
+    if (auto* r = std::get_if<Repeat>(&op); r && r->size.draws_random()) {
+      const auto& mine = sizes[next++];
+      if (mine[0]) r->size = mine[0]->value;
     }
     if (std::holds_alternative<Translate>(op) || std::holds_alternative<Scale>(op) ||
         std::holds_alternative<Rotate>(op) || std::holds_alternative<Repeat>(op) || std::holds_alternative<RepeatN>(op)) {
@@ -424,7 +443,7 @@ class Joiner {
     // Per occurrence: per part, its length in each example.
     std::vector<SplitLengths> at(r.splits.size());
     for (std::size_t o = 0; o < r.splits.size(); ++o) {
-      const Split split = std::get<Split>(g_.op(r.splits[o].split));
+      const Split split = sized_view(g_.op(r.splits[o].split));
       const std::size_t parts = split.parts.size();
       SplitLengths& s = at[o];
       s.length.assign(parts, std::vector<double>(n, kAbsent));
@@ -553,10 +572,20 @@ class Joiner {
       std::optional<std::size_t> best;
       Fit best_fit;
       std::vector<double> best_x, best_y;
+      // A repeat's tiles are no draw (ceil(L / s) tiles of L / n): tile
+      // sizes follow only one another, where equal (the storeys of both
+      // fronts), and no other size follows them.
+      const bool tiles = is_tile_size(r, Q.occurrence);
       for (std::size_t l = 0; l < leaders.size(); ++l) {
+        if (is_tile_size(r, quantities[leaders[l]].occurrence) != tiles) continue;
         auto [x, y] = paired(quantities[leaders[l]].values, Q.values);
         Fit t;
-        if (x.size() >= opt_.min_examples && shows_a_line(x, opt_.tolerance)) {
+        if (tiles) {
+          if (x.size() < opt_.min_equal || worst_miss(x, y, 0, 1) > opt_.tolerance / 4 || !varies(x, opt_.tolerance))
+            continue;
+          t.b = 1;
+          t.r = 1;
+        } else if (x.size() >= opt_.min_examples && shows_a_line(x, opt_.tolerance)) {
           t = line_fit(x, y);
         } else if (((x.size() >= opt_.min_examples && worst_miss(x, y, 0, 1) <= opt_.tolerance / 4) ||
                     (n < opt_.min_examples && x.size() >= opt_.min_equal)) &&
@@ -580,7 +609,7 @@ class Joiner {
         }
       }
       const bool exact = best && best_fit.worst <= opt_.tolerance / 4;
-      const bool loose = best && !exact && std::abs(best_fit.r) >= kCorrelated && best_x.size() >= kMinNoisy &&
+      const bool loose = best && !exact && !tiles && std::abs(best_fit.r) >= kCorrelated && best_x.size() >= kMinNoisy &&
                          quantities[leaders[*best]].occurrence != Q.occurrence;
       if (exact || loose) {
         const Quantity& L = quantities[leaders[*best]];
@@ -614,13 +643,15 @@ class Joiner {
       // place the same piece stood: a door bay after one, two or three
       // bays) keeps it, where the region's examples took only those; a
       // region's few examples would fit a range.
-      const SplitPart& written = std::get<Split>(g_.op(r.splits[Q.occurrence].split)).parts[Q.part];
+      const SplitPart written = sized_view(g_.op(r.splits[Q.occurrence].split)).parts[Q.part];
       const auto as_written = written.size.relative == Q.relative ? written_distribution(written.size.value) : std::nullopt;
       const bool among = as_written && as_written->kind == DistributionKind::Choice &&
                          std::ranges::all_of(seen_values, [&](double v) {
                            return std::ranges::any_of(as_written->values, [&](double c) { return std::abs(c - v) <= opt_.tolerance; });
                          });
-      drawn.push_back(among ? *as_written : fit_distribution(obs, fit));
+      drawn.push_back(among   ? *as_written
+                      : tiles ? tile_size_draw(at[Q.occurrence], fit, obs)
+                              : fit_distribution(obs, fit));
       drawn_values.push_back(seen_values);
       drawn_at.push_back(Q.occurrence);
       per_building.push_back(r.splits[Q.occurrence].tiled);
@@ -728,7 +759,7 @@ class Joiner {
 
     std::vector<std::vector<std::optional<Size>>> sizes(r.splits.size());
     for (std::size_t o = 0; o < r.splits.size(); ++o) {
-      const Split& split = std::get<Split>(g_.op(r.splits[o].split));
+      const Split split = sized_view(g_.op(r.splits[o].split));
       sizes[o].resize(split.parts.size());
       for (std::size_t i = 0; i < split.parts.size(); ++i) {
         const auto& f = formula[o][i];
@@ -775,7 +806,7 @@ class Joiner {
     std::vector<std::size_t> leader_of(at.size());
     for (std::size_t o = 0; o < at.size(); ++o) leader_of[o] = o;
     auto form = [&](std::size_t o) {
-      const Split& s = std::get<Split>(g_.op(r.splits[o].split));
+      const Split s = sized_view(g_.op(r.splits[o].split));
       std::vector<double> key{static_cast<double>(s.axis.literal_axis().value_or(99)),
                               static_cast<double>(s.parts.size())};
       for (const SplitPart& p : s.parts) {
@@ -820,6 +851,83 @@ class Joiner {
       }
     }
     return leader_of;
+  }
+
+  bool is_tile_size(const Region& r, std::size_t occurrence) const {
+    return std::holds_alternative<Repeat>(g_.op(r.splits[occurrence].split));
+  }
+
+  // The draw of a repeat's tile size: a size s gives ceil(L / s) tiles of
+  // L / n, so a building whose n tiles are t long drew s somewhere in
+  // [t, t n / (n - 1)), and t itself is no draw: fitted to the tiles'
+  // lengths (the lowest ends of those intervals), variants got storeys
+  // lower than any the style makes. The range is the uniform one most
+  // likely to have given every building's interval (each building's
+  // chance: the share of the range its interval covers), its ends among
+  // the intervals' ends. Where a building shows one tile (any size above
+  // L gives it), the lengths are fitted as other sizes are.
+  Distribution tile_size_draw(const SplitLengths& s, const FitOptions& fit, const std::vector<Observation>& lengths) const {
+    std::vector<std::pair<double, double>> intervals;
+    for (std::size_t e = 0; e < s.length[0].size(); ++e) {
+      const double t = s.length[0][e], n = s.value[0][e];
+      if (std::isnan(t) || std::isnan(n)) continue;
+      if (n < 2) return fit_distribution(lengths, fit);
+      intervals.emplace_back(t, t * n / (n - 1));
+    }
+    // A range meeting every interval starts below the least upper end and
+    // ends above the greatest lower end: its ends are taken from those
+    // (at most kEnds of each, evenly: a real facade set has hundreds).
+    double least_upper = std::numeric_limits<double>::infinity(), greatest_lower = 0;
+    for (const auto& [a, b] : intervals) {
+      least_upper = std::min(least_upper, b);
+      greatest_lower = std::max(greatest_lower, a);
+    }
+    std::vector<double> lows, highs;
+    for (const auto& [a, b] : intervals)
+      for (const double v : {a, b}) {
+        if (v <= least_upper) lows.push_back(v);
+        if (v >= greatest_lower) highs.push_back(v);
+      }
+    constexpr std::size_t kEnds = 48;
+    auto thinned = [](std::vector<double> v) {
+      std::ranges::sort(v);
+      v.erase(std::unique(v.begin(), v.end()), v.end());
+      if (v.size() <= kEnds) return v;
+      std::vector<double> out;
+      for (std::size_t k = 0; k < kEnds; ++k) out.push_back(v[k * (v.size() - 1) / (kEnds - 1)]);
+      return out;
+    };
+    lows = thinned(std::move(lows));
+    highs = thinned(std::move(highs));
+    double best = -std::numeric_limits<double>::infinity(), lo = 0, hi = 0;
+    for (const double from : lows)
+      for (const double to : highs) {
+        if (!(to > from)) continue;
+        double log_likelihood = 0;
+        for (const auto& [a, b] : intervals) {
+          const double covered = std::min(b, to) - std::max(a, from);
+          if (!(covered > 0)) {
+            log_likelihood = -std::numeric_limits<double>::infinity();
+            break;
+          }
+          log_likelihood += std::log(covered / (to - from));
+        }
+        if (log_likelihood > best) {
+          best = log_likelihood;
+          lo = from;
+          hi = to;
+        }
+      }
+    if (!std::isfinite(best)) return fit_distribution(lengths, fit);
+    // In short decimals, moved inwards by at most a hundredth of the range,
+    // still meeting every interval by the tolerance.
+    const double slack = (hi - lo) / 100;
+    auto shortest_in = [](double a, double b, double otherwise) {
+      return a < b ? shortest_decimal((a + b) / 2, (b - a) / 2) : otherwise;
+    };
+    const double from = shortest_in(lo, std::min(lo + slack, least_upper - opt_.tolerance), lo);
+    const double to = shortest_in(std::max(hi - slack, greatest_lower + opt_.tolerance), hi, hi);
+    return Distribution{DistributionKind::Uniform, {}, from, to};
   }
 
   Grammar& g_;

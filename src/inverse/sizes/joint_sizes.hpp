@@ -30,7 +30,13 @@
 //   - a size inside a repeat that every tile of a building shows the same
 //     (the window width kept on every storey, a door bay's place), while
 //     buildings differ, is drawn once per building by the region, not
-//     anew in each tile, whether or not another size follows it.
+//     anew in each tile, whether or not another size follows it;
+//   - a repeat's drawn tile size is a size too (check reports its tiles'
+//     length and count): repeats that show one length in every building
+//     (both fronts' storeys) take one draw, and a drawn tile size is
+//     drawn from the range most likely to have given each building's
+//     tile count (s in [t, t n / (n - 1)) gives n tiles of t), not from
+//     the tiles' lengths, which are shorter than the sizes drawn.
 // A region with something to join becomes a rule with those draws as
 // parameters, `buildingSizes(s1, e1) --> split(x){ ... }`, called where
 // the region stood with the draws as arguments; the rules it called are
