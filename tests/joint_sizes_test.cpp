@@ -518,5 +518,29 @@ TEST(JointSizes, ADrawnTileSizeIsDrawnFromTheSizesThatGaveTheTiles) {
   EXPECT_GT(highest - lowest, 0.4) << write_grammar(inferred.grammar);  // still drawn
 }
 
+TEST(JointSizes, APieceInTwoPlacesKeepsEachPlacesOwnSize) {
+  // One bay, wall, door, wall, with a 1.5 m door on the ground floor and
+  // a 1.2 m one on every storey: merged into one piece, its door was
+  // choice(1.2, 1.5), and variants put either anywhere.
+  const Grammar source = parse_grammar(R"(
+@start front
+@scope rand(10, 16), 1, rand(8, 12)
+front --> split(z){ 4 : repeat(x, 3){ bay(1.5) } | ~1 : repeat(z, 3){ repeat(x, 3){ bay(1.2) } } }
+bay(w) --> split(x){ ~1 : I(wall) | w : I(door) | ~1 : I(wall) }
+)",
+                                       "front.grm");
+  const Inference inferred = infer(test::derived_examples(source, 10), {});
+  std::size_t doors = 0, misplaced = 0;
+  for (std::uint64_t seed = 101; seed <= 130; ++seed)
+    for (const LabelledBox& b : test::derived_parts(inferred.grammar, seed)) {
+      if (b.label != "door") continue;
+      ++doors;
+      const double width = b.max.x - b.min.x, expected = b.min.z < 1e-6 ? 1.5 : 1.2;
+      misplaced += std::abs(width - expected) <= 1e-6 ? 0 : 1;
+    }
+  EXPECT_GE(doors, 100u);
+  EXPECT_EQ(misplaced, 0u) << write_grammar(inferred.grammar);
+}
+
 }  // namespace
 }  // namespace vern

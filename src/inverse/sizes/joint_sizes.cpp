@@ -549,7 +549,11 @@ class Joiner {
     // a balcony kept on every floor): drawn once per building, by the
     // region, not anew in each tile where it stood.
     std::vector<bool> per_building;
-    std::size_t gained = 0, linked = 0;
+    // Draws that are one number at their place, seen there in enough
+    // examples: a door merged from two places (1.5 m on the ground floor,
+    // 1.2 m on the balconies) is written choice(1.2, 1.5), and each place
+    // keeps its own.
+    std::size_t gained = 0, linked = 0, fixed_in_place = 0;
     FitOptions fit;
     fit.resolution = opt_.tolerance;
     fit.floor = 0;
@@ -566,6 +570,7 @@ class Joiner {
         f.c0 = shortest_decimal((lo + hi) / 2, opt_.tolerance / 4);
         formula[Q.occurrence][Q.part] = f;
         ++gained;
+        fixed_in_place += seen_values.size() >= opt_.min_examples ? 1 : 0;
         continue;
       }
       // Against each earlier drawn size, over the examples showing both.
@@ -660,7 +665,8 @@ class Joiner {
     }
     // Splits that vary on their own are share_splits' (one rule each, not
     // one per region).
-    if (linked == 0 && std::ranges::none_of(per_building, [](bool b) { return b; })) return std::nullopt;
+    if (linked == 0 && fixed_in_place == 0 && std::ranges::none_of(per_building, [](bool b) { return b; }))
+      return std::nullopt;
     // A slot pooled: every alternative's split sized as its leader's.
     for (std::size_t o = 0; o < at.size(); ++o)
       if (leader_of[o] != o) formula[o] = formula[leader_of[o]];

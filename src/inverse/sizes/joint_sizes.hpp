@@ -25,7 +25,10 @@
 //     that fewer show, two or more for equal sizes) is written as that function, `~(0.5 * s1)`; one that follows an earlier one closely (|correlation| >= 0.9,
 //     five examples or more) is that function plus a drawn deviation
 //     `s2 = rand(-e, e)` as wide as the examples' largest; one the region's
-//     examples all show the same is that constant; any other is drawn,
+//     examples all show the same is that constant (a piece merged from
+//     places that each show their own, `choice(1.2, 1.5)`, keeps each
+//     place's, and that alone is reason to rewrite the region where four
+//     examples show it); any other is drawn,
 //     `s2`, from the distribution its values fit best (fit_distribution);
 //   - a size inside a repeat that every tile of a building shows the same
 //     (the window width kept on every storey, a door bay's place), while
