@@ -67,5 +67,23 @@ house --> split(x){ ~1 : split(x){ ~1 : I(wall) | 1 : I(door) | ~1 : I(wall) } |
   EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130)) << write_grammar(inferred.grammar);
 }
 
+TEST(DrawnSizes, TwoWingsTurnedApartAreTwoWings) {
+  // The right wing is the left one turned half round: porch, body, main
+  // block, body, porch. Neither wing nested alone draws fewer sizes, so
+  // neither was nested, and the bodies drew shares no villa keeps
+  // (precision 0); nested together, the villa is two wings and its main
+  // block.
+  const Grammar source = parse_grammar(R"(
+@start villa
+@scope rand(30, 44), rand(12, 16), rand(8, 11)
+villa --> split(x){ ~1 : wing | ~1.6 : main | ~1 : R(z, pi){ wing } }
+wing --> split(x){ 2.5 : split(z){ 3 : I(porch) | ~1 : nil } | ~1 : split(z){ ~1 : I(wall) | 2.5 : I(roof) } }
+main --> split(z){ ~1 : I(wall) | 3 : I(roof) }
+)",
+                                       "villa.grm");
+  const Inference inferred = infer(test::derived_examples(source, 10), {});
+  EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130)) << write_grammar(inferred.grammar);
+}
+
 }  // namespace
 }  // namespace vern

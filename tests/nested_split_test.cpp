@@ -85,5 +85,32 @@ TEST(NestedSplit, ALodgeOfAnyWidthBesideTheFrontLeavesOnlyItsWidthDrawn) {
   EXPECT_TRUE(run->outer[0].fixed && run->outer[2].fixed);
 }
 
+// villa --> split(x){ ~1 : wing | ~1.6 : main | ~1 : R(z, pi){ wing } }
+// wing --> split(x){ 2.5 : porch | ~1 : body }
+// as the five lengths a villa of width w cuts: porch, body, main, body,
+// porch.
+std::vector<double> mirrored_wings(double w) {
+  const double wing = w / 3.6;
+  return {2.5, wing - 2.5, 1.6 * wing, wing - 2.5, 2.5};
+}
+
+TEST(NestedSplit, TwoWingsNestOnlyTogether) {
+  // Either wing nested alone leaves the other's body and porch beside the
+  // main block, drawing as many sizes as the row; both nested, the villa
+  // is ~1 : ~1.6 : ~1 and nothing is drawn.
+  const std::vector<std::vector<double>> lengths = {mirrored_wings(30), mirrored_wings(36), mirrored_wings(43)};
+  const auto whole = plan_sizes(lengths, 1e-6);
+  EXPECT_FALSE(find_nested_run(lengths, whole, 1e-6).has_value());
+  const auto run = find_fixed_run_leading_on(lengths, whole, 1e-6);
+  ASSERT_TRUE(run.has_value());
+  EXPECT_EQ(run->first, 0u);
+  EXPECT_EQ(run->last, 1u);
+  const auto second = find_nested_run(outer_lengths(lengths, *run), plan_sizes(outer_lengths(lengths, *run), 1e-6), 1e-6);
+  ASSERT_TRUE(second.has_value());
+  EXPECT_EQ(second->first, 2u);
+  EXPECT_EQ(second->last, 3u);
+  EXPECT_EQ(draws_of(second->inner) + draws_of(second->outer), 0u);
+}
+
 }  // namespace
 }  // namespace vern

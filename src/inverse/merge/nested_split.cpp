@@ -11,6 +11,9 @@ namespace {
 // the rest by chance of rounding. Past 32 parts (rows of windows) the
 // search, cubic in the parts, is not tried.
 constexpr std::size_t kFewestRows = 3, kMostParts = 32;
+// Runs nested in pairs are searched over rows of at most this many parts
+// (the search is of the fourth power in the parts).
+constexpr std::size_t kMostPairedParts = 12;
 
 // What the row as one split draws: its drawn plan's draws, else every
 // part plan_sizes leaves unfixed (the split keeps their ranges).
@@ -66,6 +69,37 @@ std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>&
       auto outer = planned_sizes(outer_lengths(lengths, run), tolerance);
       if (!outer || draws_of(*inner) + draws_of(*outer) >= fewest) continue;
       fewest = draws_of(*inner) + draws_of(*outer);
+      run.outer = std::move(*outer);
+      run.inner = std::move(*inner);
+      best = std::move(run);
+    }
+  }
+  return best;
+}
+
+std::optional<NestedRun> find_fixed_run_leading_on(const std::vector<std::vector<double>>& lengths,
+                                                   const std::optional<std::vector<PartPlan>>& whole,
+                                                   double tolerance) {
+  if (lengths.size() < kFewestRows) return std::nullopt;
+  const std::size_t parts = lengths[0].size();
+  if (parts < 4 || parts > kMostPairedParts) return std::nullopt;
+  for (const auto& row : lengths)
+    if (row.size() != parts) return std::nullopt;
+  if (!whole || std::all_of(whole->begin(), whole->end(), [](const PartPlan& p) { return p.fixed; }))
+    return std::nullopt;
+  std::size_t fewest = draws_of_whole(lengths, *whole, tolerance);
+  std::optional<NestedRun> best;
+  for (std::size_t length = 2; length + 1 < parts && fewest > 0; ++length) {
+    for (std::size_t first = 0; first + length <= parts && fewest > 0; ++first) {
+      NestedRun run{first, first + length - 1, {}, {}};
+      auto inner = planned_sizes(inner_lengths(lengths, run), tolerance);
+      if (!inner || draws_of(*inner) > 0) continue;
+      const std::vector<std::vector<double>> outer_rows = outer_lengths(lengths, run);
+      auto outer = planned_sizes(outer_rows, tolerance);
+      if (!outer) continue;
+      const auto second = find_nested_run(outer_rows, plan_sizes(outer_rows, tolerance), tolerance);
+      if (!second || draws_of(second->inner) + draws_of(second->outer) >= fewest) continue;
+      fewest = draws_of(second->inner) + draws_of(second->outer);
       run.outer = std::move(*outer);
       run.inner = std::move(*inner);
       best = std::move(run);

@@ -43,6 +43,16 @@ struct NestedRun {
 std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>& lengths,
                                          const std::optional<std::vector<PartPlan>>& whole, double tolerance);
 
+// Where no run alone draws fewer sizes: a run whose own split is fixed (a
+// wing, its 2.5 m porch and the rest), taken as one part, after which
+// another run nests (the other wing, its porch at the far end) so that
+// the two together draw fewer than the row (a villa of two wings and a
+// main block, ~1 : ~1.6 : ~1); the first of those, the other being
+// find_nested_run's in its outer rows. None past 12 parts.
+std::optional<NestedRun> find_fixed_run_leading_on(const std::vector<std::vector<double>>& lengths,
+                                                   const std::optional<std::vector<PartPlan>>& whole,
+                                                   double tolerance);
+
 // The rows with parts [run.first, run.last] summed into one.
 std::vector<std::vector<double>> outer_lengths(const std::vector<std::vector<double>>& lengths, NestedRun run);
 

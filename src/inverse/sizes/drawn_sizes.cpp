@@ -46,7 +46,8 @@ std::optional<DrawnSplit> nested_split(Grammar& g, const Split& split, const std
                                        const std::vector<std::vector<double>>& lengths,
                                        const std::optional<std::vector<PartPlan>>& whole, SampleBook& book,
                                        double tolerance) {
-  const auto run = find_nested_run(lengths, whole, tolerance);
+  auto run = find_nested_run(lengths, whole, tolerance);
+  if (!run) run = find_fixed_run_leading_on(lengths, whole, tolerance);
   if (!run) return std::nullopt;
   Split inner{split.axis, {}};
   for (std::size_t i = run->first; i <= run->last; ++i) inner.parts.push_back(split.parts[i]);
