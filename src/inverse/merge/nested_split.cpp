@@ -23,6 +23,20 @@ std::size_t draws_of_whole(const std::vector<std::vector<double>>& lengths, cons
   return static_cast<std::size_t>(std::count_if(whole.begin(), whole.end(), [](const PartPlan& p) { return !p.fixed; }));
 }
 
+// Rows worth searching: enough of them, of one part count in [fewest,
+// most], and only a row that one split cannot give with fixed sizes: a
+// row that varies in its totals (plan_sizes has a plan) and keeps a part
+// unfixed.
+bool worth_nesting(const std::vector<std::vector<double>>& lengths, const std::optional<std::vector<PartPlan>>& whole,
+                   std::size_t fewest, std::size_t most) {
+  if (lengths.size() < kFewestRows) return false;
+  const std::size_t parts = lengths[0].size();
+  if (parts < fewest || parts > most) return false;
+  for (const auto& row : lengths)
+    if (row.size() != parts) return false;
+  return whole && !std::all_of(whole->begin(), whole->end(), [](const PartPlan& p) { return p.fixed; });
+}
+
 }  // namespace
 
 std::vector<std::vector<double>> outer_lengths(const std::vector<std::vector<double>>& lengths, NestedRun run) {
@@ -50,15 +64,8 @@ std::vector<std::vector<double>> inner_lengths(const std::vector<std::vector<dou
 
 std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>& lengths,
                                          const std::optional<std::vector<PartPlan>>& whole, double tolerance) {
-  if (lengths.size() < kFewestRows) return std::nullopt;
+  if (!worth_nesting(lengths, whole, 3, kMostParts)) return std::nullopt;
   const std::size_t parts = lengths[0].size();
-  if (parts < 3 || parts > kMostParts) return std::nullopt;
-  for (const auto& row : lengths)
-    if (row.size() != parts) return std::nullopt;
-  // Only a row that one split cannot give with fixed sizes: a row that
-  // varies in its totals (plan_sizes has a plan) and keeps a part unfixed.
-  if (!whole || std::all_of(whole->begin(), whole->end(), [](const PartPlan& p) { return p.fixed; }))
-    return std::nullopt;
   std::size_t fewest = draws_of_whole(lengths, *whole, tolerance);
   std::optional<NestedRun> best;
   for (std::size_t length = 2; length < parts && fewest > 0; ++length) {
@@ -80,13 +87,8 @@ std::optional<NestedRun> find_nested_run(const std::vector<std::vector<double>>&
 std::optional<NestedRun> find_fixed_run_leading_on(const std::vector<std::vector<double>>& lengths,
                                                    const std::optional<std::vector<PartPlan>>& whole,
                                                    double tolerance) {
-  if (lengths.size() < kFewestRows) return std::nullopt;
+  if (!worth_nesting(lengths, whole, 4, kMostPairedParts)) return std::nullopt;
   const std::size_t parts = lengths[0].size();
-  if (parts < 4 || parts > kMostPairedParts) return std::nullopt;
-  for (const auto& row : lengths)
-    if (row.size() != parts) return std::nullopt;
-  if (!whole || std::all_of(whole->begin(), whole->end(), [](const PartPlan& p) { return p.fixed; }))
-    return std::nullopt;
   std::size_t fewest = draws_of_whole(lengths, *whole, tolerance);
   std::optional<NestedRun> best;
   for (std::size_t length = 2; length + 1 < parts && fewest > 0; ++length) {
