@@ -542,5 +542,21 @@ bay(w) --> split(x){ ~1 : I(wall) | w : I(door) | ~1 : I(wall) }
   EXPECT_EQ(misplaced, 0u) << write_grammar(inferred.grammar);
 }
 
+TEST(JointSizes, RunsOfTilesBesideASpecialTileTakeTheirCountFromTheirShare) {
+  // Six equal bays, the entrance at any of them: the runs before and
+  // after it were repeats of a drawn tile size, putting shop bays unlike
+  // the entrance beside it; their counts follow the runs' shares.
+  const Grammar source = parse_grammar(R"(
+@start row
+@scope rand(16, 36), 1, 4.2
+row --> bays(randint(0, 5))
+bays(k) --> split(x){ ~k : repeatN(x, k){ shop } | ~1 : split(x){ ~1 : I(wall) | 1.8 : I(entrance) | ~1 : I(wall) } | ~(5 - k) : repeatN(x, 5 - k){ shop } }
+shop --> split(x){ 0.3 : I(pier) | ~1 : I(shopwindow) | 0.3 : I(pier) }
+)",
+                                       "row.grm");
+  const Inference inferred = infer(test::derived_examples(source, 30), {});
+  EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130)) << write_grammar(inferred.grammar);
+}
+
 }  // namespace
 }  // namespace vern

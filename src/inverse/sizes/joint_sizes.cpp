@@ -7,6 +7,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <set>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -88,6 +89,32 @@ std::vector<bool> recursive_rules(const Grammar& g) {
 
 bool draws(const Split& s) {
   return std::ranges::any_of(s.parts, [](const SplitPart& p) { return p.size.value.draws_random(); });
+}
+
+// A count that is a line of sizes, as a person writes it: `s1 / 4.4`,
+// `5 - s1 / 4.4`, where a coefficient is one over a short decimal (to a
+// hundred-thousandth: counts are rounded).
+Expr count_expr(const Linear& f) {
+  Linear rest = f;
+  std::vector<std::pair<std::size_t, double>> divided;  // parameter, divisor
+  for (std::size_t k = 0; k < f.c.size(); ++k) {
+    if (f.c[k] == 0) continue;
+    const double d = std::abs(1 / f.c[k]), short_d = shortest_decimal(d, d * 1e-5);
+    if (short_d == shortest_decimal(d, d * 1e-3)) {  // as short as it gets
+      divided.emplace_back(k, f.c[k] < 0 ? -short_d : short_d);
+      rest.c[k] = 0;
+    }
+  }
+  if (divided.empty()) return linear_expr(f);
+  std::optional<Expr> out;
+  const bool any_left = rest.c0 != 0 || std::ranges::any_of(rest.c, [](double v) { return v != 0; });
+  if (any_left) out = linear_expr(rest);
+  for (const auto& [k, d] : divided) {
+    Expr term = Expr::binary(BinaryOp::Div, Expr::param(static_cast<std::uint32_t>(k)), Expr::number(std::abs(d)));
+    if (!out) out = d < 0 ? Expr::unary(UnaryOp::Neg, std::move(term)) : std::move(term);
+    else out = Expr::binary(d < 0 ? BinaryOp::Sub : BinaryOp::Add, std::move(*out), std::move(term));
+  }
+  return *out;
 }
 
 // A slot's sizes: a split's parts, or a repeat's tile size as a split of
@@ -212,7 +239,9 @@ class Regions {
     }
     if (auto* r = std::get_if<Repeat>(&op); r && r->size.draws_random()) {
       const auto& mine = sizes[next++];
-      if (mine[0]) r->size = mine[0]->value;
+      // A relative size is a count (Joiner::count_line): repeatN.
+      if (mine[0] && mine[0]->relative) op = RepeatN{r->axis, mine[0]->value, r->child};
+      else if (mine[0]) r->size = mine[0]->value;
     }
     if (std::holds_alternative<Translate>(op) || std::holds_alternative<Scale>(op) ||
         std::holds_alternative<Rotate>(op) || std::holds_alternative<Repeat>(op) || std::holds_alternative<RepeatN>(op)) {
@@ -554,6 +583,7 @@ class Joiner {
     // 1.2 m on the balconies) is written choice(1.2, 1.5), and each place
     // keeps its own.
     std::size_t gained = 0, linked = 0, fixed_in_place = 0;
+    std::set<std::size_t> counts;  // occurrences: repeats whose count is a line of a size (count_line)
     FitOptions fit;
     fit.resolution = opt_.tolerance;
     fit.floor = 0;
@@ -581,6 +611,15 @@ class Joiner {
       // sizes follow only one another, where equal (the storeys of both
       // fronts), and no other size follows them.
       const bool tiles = is_tile_size(r, Q.occurrence);
+      if (tiles) {
+        if (const auto counted = count_line(r, quantities, leaders, leader_param, at[Q.occurrence])) {
+          formula[Q.occurrence][Q.part] = *counted;
+          counts.insert(Q.occurrence);
+          ++gained;
+          ++linked;
+          continue;
+        }
+      }
       for (std::size_t l = 0; l < leaders.size(); ++l) {
         if (is_tile_size(r, quantities[leaders[l]].occurrence) != tiles) continue;
         auto [x, y] = paired(quantities[leaders[l]].values, Q.values);
@@ -728,7 +767,7 @@ class Joiner {
     // empty_runs.hpp) may be 0.
     auto no_room = [&](std::size_t o, std::size_t i) {
       const auto& f = formula[o][i];
-      if (!f) return false;
+      if (!f || counts.count(o)) return false;  // no tiles where the count is 0
       const double low = lowest(*f, ranges);
       const auto& shown = at[leader_of[o]].length[i];
       const bool zero_seen =
@@ -779,7 +818,9 @@ class Joiner {
           // drawn in place.
           else renamed.draws.push_back(distribution_expr(short_decimals(drawn[k], opt_.tolerance / 4)));
         }
-        sizes[o][i] = Size{linear_expr(renamed), at[o].relative[i]};
+        // A repeat's count is written as a relative size: rebuild makes
+        // the repeat a repeatN of it.
+        sizes[o][i] = counts.count(o) ? Size{count_expr(renamed), true} : Size{linear_expr(renamed), at[o].relative[i]};
       }
     }
     const NodeId body = regions.rebuild(r.root, sizes, names);
@@ -857,6 +898,33 @@ class Joiner {
       }
     }
     return leader_of;
+  }
+
+  // A run of tiles beside a special tile of the same length (shop bays
+  // before and after an entrance bay at any place): where the count of a
+  // repeat's tiles, in every example showing four or more, is a straight
+  // line of a size drawn before it (the run's share, ~s1 of a row of
+  // bays ~4.4 each: s1 / 4.4 tiles; the rest's, 5 - s1 / 4.4), the
+  // repeat takes that count, and its tiles are the run's own. Drawn, the
+  // tile size put runs of tiles unlike the entrance beside it.
+  std::optional<Linear> count_line(const Region& r, const std::vector<Quantity>& quantities,
+                                   const std::vector<std::size_t>& leaders,
+                                   const std::vector<std::size_t>& leader_param, const SplitLengths& tiles) const {
+    const std::vector<double>& count = tiles.value[0];
+    for (std::size_t l = 0; l < leaders.size(); ++l) {
+      const Quantity& L = quantities[leaders[l]];
+      if (is_tile_size(r, L.occurrence)) continue;
+      const auto [x, y] = paired(L.values, count);
+      if (x.size() < opt_.min_examples || !shows_a_line(x, opt_.tolerance) || !varies(y, 0.5)) continue;
+      const Fit fit = line_fit(x, y);
+      if (worst_miss(x, y, fit.a, fit.b) > 1e-6) continue;
+      const Fit s = short_line(x, y, Fit{fit.a, fit.b, 0, 1}, 1e-6);
+      Linear f;
+      f.c0 = s.a;
+      f.add(leader_param[l], s.b);
+      return f;
+    }
+    return std::nullopt;
   }
 
   bool is_tile_size(const Region& r, std::size_t occurrence) const {

@@ -39,7 +39,10 @@
 //     (both fronts' storeys) take one draw, and a drawn tile size is
 //     drawn from the range most likely to have given each building's
 //     tile count (s in [t, t n / (n - 1)) gives n tiles of t), not from
-//     the tiles' lengths, which are shorter than the sizes drawn.
+//     the tiles' lengths, which are shorter than the sizes drawn; a tile
+//     count that is a straight line of a size drawn before it (runs of
+//     bays beside an entrance at any place) makes the repeat a repeatN
+//     of that line.
 // A region with something to join becomes a rule with those draws as
 // parameters, `buildingSizes(s1, e1) --> split(x){ ... }`, called where
 // the region stood with the draws as arguments; the rules it called are
