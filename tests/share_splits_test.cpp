@@ -185,5 +185,36 @@ tower(n) : n > 0 --> split(z){ ~rand(1, 3) : I(rect) | ~rand(4, 6) : tower(n - 1
   for (const CheckResult& r : checked(g, examples)) EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(g);
 }
 
+TEST(ShareSplits, PartsInMetresThatFillTheirSplitInOneProportionAreShares) {
+  // A row of a tenth of its width, eight tenths and a tenth, as merging
+  // may write it (a tier set in on each side): three lengths in metres,
+  // drawn. Read as one draw, they were
+  // s1 : 8 * s1 : s1, with s1 drawn apart from the width they must fill;
+  // they always fill it, so they are shares, and nothing is drawn.
+  const Grammar source = parse_grammar(R"(
+@scope rand(10, 20), 8, 4
+b --> split(x){ ~1 : I(wall) | ~8 : I(rect) | ~1 : I(wall) }
+)",
+                                       "source.grm");
+  Grammar g = parse_grammar(R"(
+@scope 15, 8, 4
+b --> split(x){ rand(1, 2) : I(wall) | rand(8, 16) : I(rect) | rand(1, 2) : I(wall) }
+)",
+                            "metres.grm");
+  std::vector<CheckResult> results;
+  for (const Example& e : test::derived_examples(source, 6)) {
+    results.push_back(check_example(g, e.boxes, example_size(e)));
+    ASSERT_TRUE(results.back().derivable) << results.back().mismatch;
+  }
+  EXPECT_EQ(share_splits(g, results, {1e-6, false}), 1u);
+  const auto& split = std::get<Split>(g.op(g.rules[g.start_rule].body));
+  ASSERT_EQ(split.parts.size(), 3u) << write_grammar(g);
+  const std::vector<double> shares{1, 8, 1};
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_TRUE(split.parts[i].size.relative) << write_grammar(g);
+    EXPECT_EQ(split.parts[i].size.value.literal(), shares[i]) << write_grammar(g);
+  }
+}
+
 }  // namespace
 }  // namespace vern

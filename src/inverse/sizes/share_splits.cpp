@@ -400,6 +400,26 @@ std::optional<SharePlan> plan_shares(const Seen& s, const ShareOptions& opt) {
   return plan;
 }
 
+// A split whose drawn parts become lines in metres through 0 of one draw
+// (a tier set in by a tenth of its width on each side: s1 : nil | 8 * s1
+// : tier | s1 : nil) while no part is a share: the parts always fill the
+// split, so the draw is fixed by the split's length, and drawn on its own
+// it set parts that no longer fill it. The same split with those parts as
+// shares (~1 : ~8 : ~1) draws nothing; none where some line does not pass
+// through 0 or a part stays a share.
+std::optional<Split> proportional_split(Split split, const SharePlan& plan) {
+  if (!plan.metric) return std::nullopt;
+  const std::vector<std::size_t> drawing = drawn_shares(split)->parts;
+  for (std::size_t j = 0; j < plan.lines.size(); ++j) {
+    const Linear& line = plan.lines[j];
+    if (line.c0 != 0 || !line.draws.empty() || line.coefficient(0) <= 0) return std::nullopt;
+    split.parts[drawing[j]].size = Size{Expr::number(line.coefficient(0)), true};
+  }
+  for (std::size_t q = 0; q < split.parts.size(); ++q)
+    if (split.parts[q].size.relative && std::ranges::find(drawing, q) == drawing.end()) return std::nullopt;
+  return split;
+}
+
 }  // namespace
 
 std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, const ShareOptions& opt) {
@@ -459,10 +479,20 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
   std::vector<std::optional<SharePlan>> plans(order.size());
   parallel_for(order.size(), opt.threads, [&](std::size_t i) { plans[i] = plan_shares(seen.at(order[i]), opt); });
   std::unordered_map<NodeId, std::size_t> read_memo, carried;  // changed split -> parameters it carries on
+  std::size_t proportional = 0;  // splits made shares that draw nothing (proportional_split)
   const std::unordered_map<NodeId, RuleId> written_in = rules_written_in(g);
   for (std::size_t i = 0; i < order.size(); ++i) {
     if (!plans[i]) continue;
     const NodeId id = order[i];
+    // Parts all in metres, each a multiple of one draw: they fill the
+    // split, so the draw is its length's and the parts are its shares.
+    if (const auto fixed = proportional_split(std::get<Split>(g.op(id)), *plans[i])) {
+      const NodeId now = g.intern({*fixed, g.node(id).loc});
+      if (replace.size() < g.node_count()) replace.resize(g.node_count(), kNoReplacement);
+      replace[id] = now;
+      ++proportional;
+      continue;
+    }
     // A split below which its rule's parameters are read becomes a rule
     // taking them on, before the share; it is never a rule's own body
     // (those rules take none).
@@ -508,7 +538,7 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
     const Seen& s = seen.at(id);
     for (std::size_t r = 0; r < plan.drawn.size(); ++r) values[id].push_back({s.at[r], plan.drawn[r].value});
   }
-  if (rule_of.empty()) return 0;
+  if (rule_of.empty() && proportional == 0) return 0;
   // Calls of a rule that now takes the share: with it.
   for (NodeId id = 0; id < replace.size(); ++id)
     if (const auto* c = std::get_if<Call>(&g.op(id)); c && c->args.empty() && body_of.count(c->rule))
@@ -516,9 +546,11 @@ std::size_t share_splits(Grammar& g, const std::vector<CheckResult>& results, co
   link_nested_shares(g, rule_of, body_of, values, carried, replace, opt.tolerance);
   for (RuleId r = 0; r < g.rules.size(); ++r) {
     const auto own = body_of.find(r);
-    g.rules[r].body = substitute(g, own != body_of.end() ? own->second : g.rules[r].body, replace);
+    // Until settled: a split made shares in place holds splits that may
+    // be replaced in turn.
+    g.rules[r].body = substitute_until_settled(g, own != body_of.end() ? own->second : g.rules[r].body, replace);
   }
-  return rule_of.size();
+  return rule_of.size() + proportional;
 }
 
 }  // namespace vern

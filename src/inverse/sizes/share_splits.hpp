@@ -19,6 +19,10 @@
 // A split whose relative parts do not draw, and two or more of whose
 // lengths in metres do, is read the same way in metres: a window pair
 // seen in one proportion, `s1 : casement | 0.4 * s1 : mullion | s1 : ...`.
+// Where that leaves no share in the split and every line is a multiple
+// of s1, the parts always fill the split, so s1 is its length's: they
+// become shares that draw nothing (`~1 : nil | ~8 : tier | ~1 : nil`, a
+// tier set in by a tenth on each side).
 #pragma once
 
 #include <cstddef>
