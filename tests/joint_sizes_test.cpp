@@ -558,5 +558,44 @@ shop --> split(x){ 0.3 : I(pier) | ~1 : I(shopwindow) | 0.3 : I(pier) }
   EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130)) << write_grammar(inferred.grammar);
 }
 
+TEST(JointSizes, AWeightThatFollowsADrawInMetresIsASizeToo) {
+  // Storeys 2u + 4.5 m high over an arcade u high, gables above, beside
+  // two lodges: merging read the front's weights in the storeys' scale
+  // (they spread least), so the storeys were one weight (~14.6) beside
+  // the drawn arcade and gables, and joint sizes, which looked at draws
+  // only, never saw the line (no variant kept it from ten examples). A
+  // weight whose length varies may follow a draw. (A random style of
+  // evaluate --random-styles 300 --seed 999, style 151.)
+  const Grammar source = parse_grammar(R"(
+@start lot
+@scope rand(26.5, 40), rand(6.5, 8.5), rand(29, 39.5)
+lot --> split(x){ ~0.7 : lodge | ~1.1 : lodge | ~2.3 : front(rand(3.9, 6.2), randint(0, 1)) }
+front(u, b) --> split(x){ 1 : I(column) | ~1 : body(u, b) | 1 : I(column) }
+body(u, b) --> split(z){ u : arcade | 2 * u + 4.5 : repeat(z, 3.5){ level(b) } | ~1 : gables }
+arcade --> repeat(x, 4.5){ split(x){ ~1 : I(column) | ~8 : I(vitrine) | ~1 : I(column) } }
+level(b) --> repeat(x, 4.5){ travee(b) }
+travee(b) : b == 0 --> split(x){ ~1 : I(rect) | ~2.3 : I(panel) | ~1 : I(rect) }
+travee(b) : b == 1 --> split(x){ ~1 : I(rect) | ~2.3 : split(z){ ~1 : I(balcony) | ~2 : I(window) } | ~1 : I(rect) }
+gables --> I(roof) : 2
+gables --> I(hip) : 1
+lodge --> split(z){ ~2.8 : repeat(x, 4.5){ split(x){ ~1 : I(wall) | ~1.5 : I(window) | ~1 : I(wall) } } | ~1 : I(roof) }
+)",
+                                       "lot.grm");
+  const Inference inferred = infer(test::derived_examples(source, 10), {});
+  std::size_t measured = 0, kept = 0;
+  for (std::uint64_t seed = 101; seed <= 140; ++seed) {
+    double arcade = 0, top = 0;
+    for (const LabelledBox& b : test::derived_parts(inferred.grammar, seed)) {
+      if (b.label == "vitrine") arcade = b.max.z;
+      if (b.label == "rect") top = std::max(top, b.max.z);
+    }
+    if (arcade == 0 || top == 0) continue;
+    ++measured;
+    kept += std::abs(top - (3 * arcade + 4.5)) <= 1e-6 ? 1 : 0;
+  }
+  EXPECT_GE(measured, 30u);
+  EXPECT_EQ(kept, measured) << write_grammar(inferred.grammar);
+}
+
 }  // namespace
 }  // namespace vern

@@ -316,8 +316,11 @@ struct SplitLengths {
 // read in metres, leader and follower, where the shares do not say the
 // same already (two parts of one split in one proportion, or containers
 // that do not vary, are shares), and as long as every split keeps a share
-// to take the rest. The lines
-// themselves are then found, as any other, by the region's fit below.
+// to take the rest. The follower may be a share written as one weight
+// whose length still varies (check reports such sizes beside the draws:
+// the scale merging read the split's other weights in), the leader only a
+// draw. The lines themselves are then found, as any other, by the
+// region's fit below.
 std::vector<std::pair<std::size_t, std::size_t>> read_in_metres(const std::vector<SplitLengths>& at,
                                                                 std::size_t min_examples, double tolerance) {
   // Varying parts in derivation order, with the examples that show each
@@ -331,7 +334,13 @@ std::vector<std::pair<std::size_t, std::size_t>> read_in_metres(const std::vecto
   for (std::size_t o = 0; o < at.size(); ++o) {
     if (at[o].present < min_examples) continue;
     for (std::size_t i = 0; i < at[o].random.size(); ++i) {
-      if (!at[o].random[i]) continue;
+      // A share written as one weight whose length still varies (the
+      // scale the split's other weights were read in: storeys 2u + 4.5 m
+      // beside an arcade u high) may follow a drawn part too.
+      if (!at[o].random[i]) {
+        const std::vector<double> seen = present_values(at[o].length[i]);
+        if (!at[o].relative[i] || seen.empty() || !varies(seen, tolerance)) continue;
+      }
       const std::vector<double>& values = at[o].length[i];
       std::vector<std::uint64_t> bits((values.size() + 63) / 64, 0);
       std::size_t count = 0;
@@ -389,6 +398,7 @@ std::vector<std::pair<std::size_t, std::size_t>> read_in_metres(const std::vecto
     for (std::size_t p = 0; p < order.size(); ++p) {
       if (p == q) continue;
       const auto [po, pi] = order[p];
+      if (!at[po].random[pi]) continue;  // only a draw leads
       const bool p_share = at[po].relative[pi] && !metres[po][pi];
       // Each split keeps a share to take its rest.
       const std::size_t leaving_q = 1 + (p_share && po == qo ? 1 : 0);
@@ -494,6 +504,16 @@ class Joiner {
         std::vector<int> count(parts, 0);
         for (const MatchedPart& m : *rows[e][o]) {
           if (m.part >= parts) return std::nullopt;
+          if (!m.random) {
+            // A size written as a number, reported beside the draws (the
+            // scale they were read in): its first length, read only by
+            // read_in_metres.
+            if (!s.random[m.part] && std::isnan(s.length[m.part][e])) {
+              s.length[m.part][e] = m.length;
+              s.value[m.part][e] = m.value;
+            }
+            continue;
+          }
           if (count[m.part]++ > 0) {
             kept = kept && std::abs(m.length - s.length[m.part][e]) <= opt_.tolerance &&
                    std::abs(m.value - s.value[m.part][e]) <= opt_.tolerance;
@@ -517,7 +537,12 @@ class Joiner {
     // One slot in sibling alternatives is one set of sizes (pooled_slots).
     const std::vector<std::size_t> leader_of = pool_slots(regions, r, at, rows);
     // Shares that are metres: they leave the shares (see read_in_metres).
-    for (const auto& [o, i] : read_in_metres(at, opt_.min_examples, opt_.tolerance)) at[o].relative[i] = false;
+    // A weight that follows a draw in metres is a size like the draws.
+    std::set<std::pair<std::size_t, std::size_t>> weights_in_metres;
+    for (const auto& [o, i] : read_in_metres(at, opt_.min_examples, opt_.tolerance)) {
+      at[o].relative[i] = false;
+      if (!at[o].random[i]) weights_in_metres.insert({o, i});
+    }
     for (std::size_t o = 0; o < at.size(); ++o) at[o].relative = at[leader_of[o]].relative;
 
     std::vector<Quantity> quantities;
@@ -560,7 +585,7 @@ class Joiner {
         rests.push_back({o, relative.back(), total});
       }
       for (std::size_t i = 0; i < parts; ++i) {
-        if (!random[i] || (shares_only && i == relative.back())) continue;
+        if ((!random[i] && !weights_in_metres.count({o, i})) || (shares_only && i == relative.back())) continue;
         // A lone relative part takes the rest whatever its size says.
         if (s.relative[i] && relative.size() == 1) continue;
         quantities.push_back({o, i, s.relative[i], s.relative[i] ? value[i] : length[i]});
@@ -1032,7 +1057,6 @@ JointSizes join_sizes(Grammar& g, const std::vector<Example>& examples, const Jo
   Joiner::Runners runners;
   for (std::size_t i = 0; i < results.size(); ++i)
     for (const MatchedPart& m : results[i].parts) {
-      if (!m.random) continue;
       std::vector<MatchedPart>& at = seen[i][m.path];
       if (at.empty()) runners[m.path].push_back(i);
       at.push_back(m);

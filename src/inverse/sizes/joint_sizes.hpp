@@ -19,6 +19,10 @@
 // took it), and per region:
 //   - in a split whose relative parts all vary, only their shares are
 //     free: the last one is the rest, `~(10 - s1)`;
+//   - a share written as one weight whose length still varies (the scale
+//     merging read the split's other weights in) is a varying size too
+//     where it follows a draw in metres (storeys 2u + 4.5 m over an
+//     arcade u high);
 //   - each other varying size, in derivation order, is compared with the
 //     ones before it: one that is a straight-line function of an earlier
 //     one (within the tolerance; four examples or more, or, in a region
