@@ -17,6 +17,7 @@
 #include "inverse/merge/substitute.hpp"
 #include "inverse/sizes/fit_distribution.hpp"
 #include "inverse/sizes/linear_size.hpp"
+#include "inverse/sizes/tile_draws.hpp"
 #include "inverse/sizes/share_splits.hpp"
 #include "inverse/sizes/tidy_numbers.hpp"
 #include "inverse/write/rule_naming.hpp"
@@ -89,32 +90,6 @@ std::vector<bool> recursive_rules(const Grammar& g) {
 
 bool draws(const Split& s) {
   return std::ranges::any_of(s.parts, [](const SplitPart& p) { return p.size.value.draws_random(); });
-}
-
-// A count that is a line of sizes, as a person writes it: `s1 / 4.4`,
-// `5 - s1 / 4.4`, where a coefficient is one over a short decimal (to a
-// hundred-thousandth: counts are rounded).
-Expr count_expr(const Linear& f) {
-  Linear rest = f;
-  std::vector<std::pair<std::size_t, double>> divided;  // parameter, divisor
-  for (std::size_t k = 0; k < f.c.size(); ++k) {
-    if (f.c[k] == 0) continue;
-    const double d = std::abs(1 / f.c[k]), short_d = shortest_decimal(d, d * 1e-5);
-    if (short_d == shortest_decimal(d, d * 1e-3)) {  // as short as it gets
-      divided.emplace_back(k, f.c[k] < 0 ? -short_d : short_d);
-      rest.c[k] = 0;
-    }
-  }
-  if (divided.empty()) return linear_expr(f);
-  std::optional<Expr> out;
-  const bool any_left = rest.c0 != 0 || std::ranges::any_of(rest.c, [](double v) { return v != 0; });
-  if (any_left) out = linear_expr(rest);
-  for (const auto& [k, d] : divided) {
-    Expr term = Expr::binary(BinaryOp::Div, Expr::param(static_cast<std::uint32_t>(k)), Expr::number(std::abs(d)));
-    if (!out) out = d < 0 ? Expr::unary(UnaryOp::Neg, std::move(term)) : std::move(term);
-    else out = Expr::binary(d < 0 ? BinaryOp::Sub : BinaryOp::Add, std::move(*out), std::move(term));
-  }
-  return *out;
 }
 
 // A slot's sizes: a split's parts, or a repeat's tile size as a split of
@@ -845,7 +820,7 @@ class Joiner {
         }
         // A repeat's count is written as a relative size: rebuild makes
         // the repeat a repeatN of it.
-        sizes[o][i] = counts.count(o) ? Size{count_expr(renamed), true} : Size{linear_expr(renamed), at[o].relative[i]};
+        sizes[o][i] = counts.count(o) ? Size{count_line_expr(renamed), true} : Size{linear_expr(renamed), at[o].relative[i]};
       }
     }
     const NodeId body = regions.rebuild(r.root, sizes, names);
@@ -956,77 +931,12 @@ class Joiner {
     return std::holds_alternative<Repeat>(g_.op(r.splits[occurrence].split));
   }
 
-  // The draw of a repeat's tile size: a size s gives ceil(L / s) tiles of
-  // L / n, so a building whose n tiles are t long drew s somewhere in
-  // [t, t n / (n - 1)), and t itself is no draw: fitted to the tiles'
-  // lengths (the lowest ends of those intervals), variants got storeys
-  // lower than any the style makes. The range is the uniform one most
-  // likely to have given every building's interval (each building's
-  // chance: the share of the range its interval covers), its ends among
-  // the intervals' ends. Where a building shows one tile (any size above
-  // L gives it), the lengths are fitted as other sizes are.
+  // The draw of a repeat's tile size from its tiles (tile_draws.hpp).
   Distribution tile_size_draw(const SplitLengths& s, const FitOptions& fit, const std::vector<Observation>& lengths) const {
-    std::vector<std::pair<double, double>> intervals;
-    for (std::size_t e = 0; e < s.length[0].size(); ++e) {
-      const double t = s.length[0][e], n = s.value[0][e];
-      if (std::isnan(t) || std::isnan(n)) continue;
-      if (n < 2) return fit_distribution(lengths, fit);
-      intervals.emplace_back(t, t * n / (n - 1));
-    }
-    // A range meeting every interval starts below the least upper end and
-    // ends above the greatest lower end: its ends are taken from those
-    // (at most kEnds of each, evenly: a real facade set has hundreds).
-    double least_upper = std::numeric_limits<double>::infinity(), greatest_lower = 0;
-    for (const auto& [a, b] : intervals) {
-      least_upper = std::min(least_upper, b);
-      greatest_lower = std::max(greatest_lower, a);
-    }
-    std::vector<double> lows, highs;
-    for (const auto& [a, b] : intervals)
-      for (const double v : {a, b}) {
-        if (v <= least_upper) lows.push_back(v);
-        if (v >= greatest_lower) highs.push_back(v);
-      }
-    constexpr std::size_t kEnds = 48;
-    auto thinned = [](std::vector<double> v) {
-      std::ranges::sort(v);
-      v.erase(std::unique(v.begin(), v.end()), v.end());
-      if (v.size() <= kEnds) return v;
-      std::vector<double> out;
-      for (std::size_t k = 0; k < kEnds; ++k) out.push_back(v[k * (v.size() - 1) / (kEnds - 1)]);
-      return out;
-    };
-    lows = thinned(std::move(lows));
-    highs = thinned(std::move(highs));
-    double best = -std::numeric_limits<double>::infinity(), lo = 0, hi = 0;
-    for (const double from : lows)
-      for (const double to : highs) {
-        if (!(to > from)) continue;
-        double log_likelihood = 0;
-        for (const auto& [a, b] : intervals) {
-          const double covered = std::min(b, to) - std::max(a, from);
-          if (!(covered > 0)) {
-            log_likelihood = -std::numeric_limits<double>::infinity();
-            break;
-          }
-          log_likelihood += std::log(covered / (to - from));
-        }
-        if (log_likelihood > best) {
-          best = log_likelihood;
-          lo = from;
-          hi = to;
-        }
-      }
-    if (!std::isfinite(best)) return fit_distribution(lengths, fit);
-    // In short decimals, moved inwards by at most a hundredth of the range,
-    // still meeting every interval by the tolerance.
-    const double slack = (hi - lo) / 100;
-    auto shortest_in = [](double a, double b, double otherwise) {
-      return a < b ? shortest_decimal((a + b) / 2, (b - a) / 2) : otherwise;
-    };
-    const double from = shortest_in(lo, std::min(lo + slack, least_upper - opt_.tolerance), lo);
-    const double to = shortest_in(std::max(hi - slack, greatest_lower + opt_.tolerance), hi, hi);
-    return Distribution{DistributionKind::Uniform, {}, from, to};
+    std::vector<TileRun> runs;
+    for (std::size_t e = 0; e < s.length[0].size(); ++e)
+      if (!std::isnan(s.length[0][e]) && !std::isnan(s.value[0][e])) runs.push_back({s.length[0][e], s.value[0][e]});
+    return tile_size_distribution(runs, lengths, fit, opt_.tolerance);
   }
 
   Grammar& g_;
