@@ -371,6 +371,23 @@ TEST(BoxSplit, ATerraceOfEqualHousesIsCutIntoHouses) {
   for (const SplitTree& house : t.children) EXPECT_TRUE(cut_along(house, 2, 2));
 }
 
+TEST(BoxSplit, TouchingBuildingsBesideAGapAreCutIntoBuildingsBeforeStoreys) {
+  // A house, a gap, then two lodges of different widths touching, each a
+  // wall band under a roof band of one height: the lodges are one block
+  // beside the gap, and the block is its two lodges, each its wall and
+  // roof, not a band of both walls under a band of both roofs (whose
+  // party wall would then line up only by chance, band by band).
+  const SplitTree t = split({part("house", {0, 0, 0}, {10, 8, 7}, 0), part("wall", {12, 0, 0}, {17, 8, 5}, 1),
+                             part("roof", {12, 0, 5}, {17, 8, 7}, 2), part("wall", {17, 0, 0}, {23, 8, 5}, 3),
+                             part("roof", {17, 0, 5}, {23, 8, 7}, 4)});
+  ASSERT_TRUE(cut_along(t, 0, 3));  // the house, the gap, the block
+  EXPECT_EQ(t.children[1].kind, Kind::Empty);
+  const SplitTree& block = t.children[2];
+  ASSERT_TRUE(cut_along(block, 0, 2));
+  EXPECT_EQ(leaves(block.children[0]), (std::vector<std::uint32_t>{1, 2}));
+  EXPECT_EQ(leaves(block.children[1]), (std::vector<std::uint32_t>{3, 4}));
+}
+
 TEST(BoxSplit, ATieredTowerIsCutAsTiersStandingOnTiers) {
   // Three tiers, each inset in the one below: cut at the lowest tier only,
   // then the air round the rest peeled (x, y), then the next tier, so each

@@ -668,7 +668,7 @@ class Splitter {
       first = last + 1;
     }
     if (!any_full || std::none_of(joins.begin(), joins.end(), [](bool j) { return j; })) return;
-    if (compound_.size() != n) compound_.assign(n, false);
+    if (compound_.size() != n) compound_.assign(n, kNone);
     join_pieces(joins);
   }
 
@@ -703,7 +703,7 @@ class Splitter {
       if (a_has_none && along > 0) {
         std::vector<bool> joins(pieces_.size(), false);
         for (std::size_t c = 0; c < across_.size(); ++c) joins[c + 1] = !across_[c];
-        if (compound_.size() != pieces_.size()) compound_.assign(pieces_.size(), false);
+        if (compound_.size() != pieces_.size()) compound_.assign(pieces_.size(), kNone);
         join_pieces(joins);
         cut_along(w, b);
         return true;
@@ -782,9 +782,9 @@ class Splitter {
     if (!narrows_again || !inset(hull(second, ext.size()), ext[0], w.lo, w.hi)) return false;
     std::vector<bool> joins(pieces_.size(), false);
     for (std::size_t p = second + 1; p < pieces_.size(); ++p) joins[p] = true;
-    compound_.assign(pieces_.size(), false);
+    compound_.assign(pieces_.size(), kNone);
     join_pieces(joins);
-    compound_.assign(pieces_.size(), false);
+    compound_.assign(pieces_.size(), kNone);
     return true;
   }
 
@@ -879,7 +879,7 @@ class Splitter {
   // block is always a block, whether or not its strips of buildings
   // happen to line up into rows across it.
   void group_touching_pieces() {
-    compound_.assign(pieces_.size(), false);
+    compound_.assign(pieces_.size(), kNone);
     bool gap = false, touch = false;
     for (std::size_t i = 0; i + 1 < pieces_.size(); ++i) (pieces_[i].hi == pieces_[i + 1].lo ? touch : gap) = true;
     if (!gap || !touch) return;
@@ -888,10 +888,10 @@ class Splitter {
     for (std::size_t i = 0; i < pieces_.size(); ++i) {
       if (i > 0 && pieces_[kept - 1].hi == pieces_[i].lo) {
         pieces_[kept - 1].absorb(pieces_[i]);
-        compound_[kept - 1] = true;
+        compound_[kept - 1] = kBuildings;
       } else {
         pieces_[kept] = pieces_[i];
-        compound_[kept] = false;
+        compound_[kept] = kNone;
         ++kept;
       }
       into[i] = static_cast<std::uint32_t>(kept - 1);
@@ -945,7 +945,7 @@ class Splitter {
     for (std::size_t i = 0; i < n; ++i) {
       if (joins[i]) {
         pieces_[kept - 1].absorb(pieces_[i]);
-        compound_[kept - 1] = true;
+        compound_[kept - 1] = kRun;
       } else {
         pieces_[kept] = pieces_[i];
         compound_[kept] = compound_[i];
@@ -1049,7 +1049,12 @@ class Splitter {
       child.lo_val[ax] = piece.lo_val;
       child.hi_val[ax] = piece.hi_val;
       child.axes = axes_after(a);
-      child.tries = compound_[p] ? 3 : 2;  // a run of touching pieces is cut along a again, last
+      child.tries = compound_[p] != kNone ? 3 : 2;  // a run of pieces is cut along a again, last
+      // Touching buildings are cut into buildings before storeys: two
+      // lodges side by side are two lodges, not a band of their walls
+      // under a band of their roofs (whose party wall then lines up only
+      // by chance, in each band on its own).
+      if (compound_[p] == kBuildings && a != 2) child.axes = {1 - a, a, 2};
       child.peel_first = peel == Peel::KeepPeeling || (peel == Peel::Upper && p + 1 == pieces_.size());
       stack_.push_back(child);
       previous = piece.hi;
@@ -1163,7 +1168,12 @@ class Splitter {
   std::vector<std::pair<std::uint32_t, std::uint32_t>>* overlaps_ = nullptr;  // collect_overlaps
   // The current sweep's pieces (reused: nothing is allocated per container).
   std::vector<Span> spans_, pieces_;
-  std::vector<bool> compound_;  // per piece: a run of touching pieces joined by group_touching_pieces
+  // Per piece: kNone, or a run of pieces joined to be cut again later:
+  // kRun (along the other axes first, then this one), kBuildings (touching
+  // buildings, group_touching_pieces: the other horizontal axis, then this
+  // one, then z).
+  enum Compound : std::uint8_t { kNone, kRun, kBuildings };
+  std::vector<Compound> compound_;
   std::vector<std::uint32_t> starts_, target_, offsets_, next_, next2_;
 };
 
