@@ -597,5 +597,37 @@ lodge --> split(z){ ~2.8 : repeat(x, 4.5){ split(x){ ~1 : I(wall) | ~1.5 : I(win
   EXPECT_EQ(kept, measured) << write_grammar(inferred.grammar);
 }
 
+TEST(JointSizes, ASizeEqualToAnEarlierOneThatFollowsADrawIsTheSame) {
+  // A house h high, a shed and a store each within 0.3 m of half the
+  // house but as high as each other: the shed follows the house loosely
+  // (a line and a deviation drawn), the store is equal to the shed. It was
+  // compared with the draws only, so it followed the house with a
+  // deviation of its own, and a variant's shed and store differed.
+  const Grammar source = parse_grammar(R"(
+@scope 12, 8, 10
+b --> body(rand(4, 10), rand(-0.3, 0.3))
+body(h, e) --> split(x){
+    ~1 : I(rect) |
+    ~2 : split(z){ h : I(house) | ~1 : nil } |
+    ~1 : split(z){ h * 0.5 + e : I(shed) | ~1 : nil } |
+    ~1 : split(z){ h * 0.5 + e : I(store) | ~1 : nil } }
+)",
+                                       "sheds.grm");
+  const Inference inferred = infer(test::derived_examples(source, 10), {});
+  std::size_t measured = 0, apart = 0;
+  for (std::uint64_t seed = 101; seed <= 140; ++seed) {
+    std::optional<double> shed, store;
+    for (const LabelledBox& b : test::derived_parts(inferred.grammar, seed)) {
+      if (b.label == "shed") shed = b.max.z;
+      if (b.label == "store") store = b.max.z;
+    }
+    if (!shed || !store) continue;
+    ++measured;
+    apart += std::abs(*shed - *store) <= 1e-6 ? 0 : 1;
+  }
+  EXPECT_GE(measured, 30u);
+  EXPECT_EQ(apart, 0u) << write_grammar(inferred.grammar);
+}
+
 }  // namespace
 }  // namespace vern

@@ -653,6 +653,19 @@ class Joiner {
         }
       }
       const bool exact = best && best_fit.worst <= opt_.tolerance / 4;
+      // Equal, in every example showing both, to an earlier size that is
+      // itself a function of the draws (two lodges' party wall, cut in
+      // their storeys' band and again in their roofs' band, each a loose
+      // line of the lodges' width): the same function, so the cuts stay
+      // one.
+      if (!exact) {
+        if (const auto same = equal_to_earlier(q, quantities, formula, r)) {
+          formula[Q.occurrence][Q.part] = *same;
+          ++gained;
+          ++linked;
+          continue;
+        }
+      }
       const bool loose = best && !exact && !tiles && std::abs(best_fit.r) >= kCorrelated && best_x.size() >= kMinNoisy &&
                          quantities[leaders[*best]].occurrence != Q.occurrence;
       if (exact || loose) {
@@ -923,6 +936,25 @@ class Joiner {
       f.c0 = s.a;
       f.add(leader_param[l], s.b);
       return f;
+    }
+    return std::nullopt;
+  }
+
+  // The formula of an earlier quantity that Q equals in every example
+  // showing both (at least min_equal, while it varies), where that one is
+  // a function of the draws and not one itself; none else.
+  std::optional<Linear> equal_to_earlier(std::size_t q, const std::vector<Quantity>& quantities,
+                                         const std::vector<std::vector<std::optional<Linear>>>& formula,
+                                         const Region& r) const {
+    const Quantity& Q = quantities[q];
+    for (std::size_t e = 0; e < q; ++e) {
+      const Quantity& E = quantities[e];
+      const auto& f = formula[E.occurrence][E.part];
+      if (!f || f->c.empty() || is_tile_size(r, E.occurrence) != is_tile_size(r, Q.occurrence)) continue;
+      if (E.relative != Q.relative) continue;
+      const auto [x, y] = paired(E.values, Q.values);
+      if (x.size() < opt_.min_equal || !varies(x, opt_.tolerance)) continue;
+      if (worst_miss(x, y, 0, 1) <= opt_.tolerance / 4) return f;
     }
     return std::nullopt;
   }
