@@ -66,11 +66,6 @@ std::vector<std::uint64_t> made_of(const Grammar& g, const Repeat& r) {
   return key;
 }
 
-// One tile size for every repeat of a pool that some one size explains:
-// by repeat, that size. Repeats of what they are made of (made_of) and of
-// one kind of length (tile_lengths.hpp: plots and strips a quarter as wide
-// stay apart) are a pool where there are two or more and they differ in
-// size; alike in size, each is settled as it is.
 // A repeat's tile's shape, coarser than made_of: the operation it is and
 // its axis (a split along x: a row of bays of any kind), or its label (a
 // brick course).
@@ -88,6 +83,11 @@ std::vector<std::uint64_t> tile_shape(const Grammar& g, const Repeat& r) {
   return key;
 }
 
+// One tile size for every repeat of a pool that some one size explains:
+// by repeat, that size. Repeats of what they are made of (made_of) and of
+// one kind of length (tile_lengths.hpp: plots and strips a quarter as wide
+// stay apart) are a pool (first by tile_shape, then by made_of) where there are two or more and they differ in
+// size; alike in size, each is settled as it is.
 std::unordered_map<NodeId, double> pooled_tiles(const Grammar& g, NodeId root, const TileCounts& tile_counts,
                                                 double tolerance) {
   // The repeats below root whose counts are known, by axis and kind of
@@ -110,18 +110,15 @@ std::unordered_map<NodeId, double> pooled_tiles(const Grammar& g, NodeId root, c
                        [&](NodeId id) { return !(std::get<Repeat>(g.op(id)).size == first); });
   };
   std::unordered_map<NodeId, double> out;
-  auto common = [&](const std::vector<NodeId>& members) {
-    std::vector<TileSeen> all;
-    for (NodeId id : members) {
-      const auto& seen = tile_counts.at(id);
-      all.insert(all.end(), seen.begin(), seen.end());
-    }
-    return common_tile(all, tolerance);
-  };
   auto settle_pools = [&](const std::map<std::vector<std::uint64_t>, std::vector<NodeId>>& pools) {
     for (const auto& [key, members] : pools) {
       if (!differ(members)) continue;
-      const auto one = common(members);
+      std::vector<TileSeen> all;
+      for (NodeId id : members) {
+        const auto& seen = tile_counts.at(id);
+        all.insert(all.end(), seen.begin(), seen.end());
+      }
+      const auto one = common_tile(all, tolerance);
       if (!one) continue;
       for (NodeId id : members) out[id] = *one;
     }

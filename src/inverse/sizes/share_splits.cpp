@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include "base/parallel_for.hpp"
+#include "graph/nodes_below.hpp"
 #include "inverse/merge/substitute.hpp"
 #include "inverse/sizes/fit_distribution.hpp"
 #include "inverse/sizes/linear_size.hpp"
@@ -36,15 +37,8 @@ std::size_t params_read_below(const Grammar& g, NodeId id, std::unordered_map<No
 // not entered): where the names of the parameters it reads come from.
 std::unordered_map<NodeId, RuleId> rules_written_in(const Grammar& g) {
   std::unordered_map<NodeId, RuleId> out;
-  for (RuleId r = 0; r < g.rules.size(); ++r) {
-    std::vector<NodeId> stack{g.rules[r].body};
-    while (!stack.empty()) {
-      const NodeId id = stack.back();
-      stack.pop_back();
-      if (!out.emplace(id, r).second) continue;
-      if (!std::holds_alternative<Call>(g.op(id))) for_each_child(g.op(id), [&](NodeId c) { stack.push_back(c); });
-    }
-  }
+  for (RuleId r = 0; r < g.rules.size(); ++r)
+    for (const NodeId id : nodes_below(g, g.rules[r].body)) out.emplace(id, r);
   return out;
 }
 

@@ -529,7 +529,7 @@ class Splitter {
     std::vector<Rank> ranks;
     for (const std::uint64_t f : faces_) {
       const auto r = static_cast<Rank>(f & 0xffffffffu);
-      if (std::find(cut_ranks_.begin(), cut_ranks_.end(), r) == cut_ranks_.end()) ranks.push_back(r);
+      if (!std::binary_search(cut_ranks_.begin(), cut_ranks_.end(), r)) ranks.push_back(r);
     }
     std::sort(ranks.begin(), ranks.end());
     return std::adjacent_find(ranks.begin(), ranks.end()) != ranks.end();
@@ -784,6 +784,7 @@ class Splitter {
     for (std::size_t p = second + 1; p < pieces_.size(); ++p) joins[p] = true;
     compound_.assign(pieces_.size(), kNone);
     join_pieces(joins);
+    // The rest is peeled first (Peel::Upper), not cut again as a run.
     compound_.assign(pieces_.size(), kNone);
     return true;
   }
@@ -1160,7 +1161,7 @@ class Splitter {
   std::vector<std::uint64_t> faces_;          // cuts_line_up_by_chance's (piece, rank) pairs (reused)
   std::vector<std::array<std::vector<std::pair<Rank, Rank>>, 2>> cut_faces_;  // cuts_along_faces's (reused)
   std::vector<bool> across_;  // faces_right_across's answer (reused)
-  std::vector<Rank> cut_ranks_;  // storeys_first: the ranks of the cuts along a horizontal axis it weighs
+  std::vector<Rank> cut_ranks_;  // storeys_first: the ranks of the cuts along a horizontal axis it weighs, ascending
   bool alike_pieces_ = false;    // storeys_first: whether those cuts make pieces of one length
   std::vector<double> pieces_fill_;  // storeys_first: the fills of its sweep's pieces along a horizontal axis
   std::vector<Work> stack_;                   // containers still to cut
