@@ -20,6 +20,8 @@
 #include "inverse/write/inferred_files.hpp"
 #include "inverse/write/test_buildings.hpp"
 #include "io/obj_writer.hpp"
+#include "report/html_report.hpp"
+#include "report/style_report.hpp"
 #include "support/command_line.hpp"
 #include "support/example_options.hpp"
 #include "support/guarded_main.hpp"
@@ -57,6 +59,9 @@ CommandLine make_command_line() {
           "joined (default): parts built alike but for some numbers or an axis become one rule\n"
           "called with each part's values; apart: each written out in full"});
   cl.add({"--seed", "-s", 1, "S", "seed of the test derivations run on the result (default 1)"});
+  cl.add({"--report", "", 1, "FILE.html",
+          "also write a page to open in any browser, offline: pictures of the examples beside eight\n"
+          "new buildings of the grammar (seeds S to S + 7), the grammar and its figures"});
   add_example_options(cl);
   cl.add_standard_options();
   cl.set_epilog(
@@ -117,13 +122,20 @@ int run(int argc, char** argv) {
   const std::vector<fs::path> files = example_files(args.positional);
   // Three files are written: the grammar, the meshes and their materials.
   const fs::path prims_mtl = mtl_path_for(prims);
-  for (const fs::path& out : {output, prims, prims_mtl}) {
+  std::vector<fs::path> outputs = {output, prims, prims_mtl};
+  const std::optional<fs::path> report = args.has("--report") ? std::optional<fs::path>(args.value("--report")) : std::nullopt;
+  if (report) {
+    if (report->extension() != ".html" && report->extension() != ".htm")
+      usage("--report must name an .html file, got " + report->string(), "for example --report style.html");
+    outputs.push_back(*report);
+  }
+  for (const fs::path& out : outputs) {
     check_output_file("infer", out, files, "an example");
     if (args.has("--primitives")) {
       check_output_file("infer", out, {fs::path(args.value("--primitives"))}, "the --primitives meshes");
     }
   }
-  check_distinct_outputs("infer", {output, prims, prims_mtl});
+  check_distinct_outputs("infer", outputs);
 
   const bool show_progress = !quiet && files.size() >= 20 && isatty(STDERR_FILENO);
   // Read in parallel; the first unreadable file (in the order given) is
@@ -148,7 +160,7 @@ int run(int argc, char** argv) {
   options.primitives = &library;
   // Every file read is an input, not only those named: a buffer a glTF
   // names, a mesh of the --primitives folder. Said before inferring.
-  for (const fs::path& out : {output, prims, prims_mtl}) refuse_file_read(out);
+  for (const fs::path& out : outputs) refuse_file_read(out);
   // Out of memory, the examples are named: the one, or the first and last.
   const std::string named = files.size() == 1 ? "this example"
                                               : std::to_string(files.size()) + " examples (" + files.front().string() +
@@ -177,8 +189,9 @@ int run(int argc, char** argv) {
   }
   const std::size_t example_count = examples.size();
   // Done with the examples (their boxes, positions and meshes: 115 MB at
-  // a million parts), freed before the derivation and the text take theirs.
-  examples = {};
+  // a million parts), freed before the derivation and the text take theirs,
+  // unless the report shows them.
+  if (!report) examples = {};
   const TestBuildingsOptions tests = test_buildings_for(parts, largest, seed);
   result.grammar.primitives = path_from(output, prims);
   // generate follows @primitives only into the grammar's own folder.
@@ -196,20 +209,43 @@ int run(int argc, char** argv) {
     for (const std::string& w : test_warnings) std::fprintf(stderr, "%s\n", w.c_str());
 
   const std::string header = inferred_header(example_count, result.tolerance, output);
-  write_inferred(result.primitives, header, grammar_text, output, prims);
+  const std::size_t lines = static_cast<std::size_t>(std::count(header.begin(), header.end(), '\n') +
+                                                     std::count(grammar_text.begin(), grammar_text.end(), '\n'));
+  // How much the grammar says (graph/description_length.hpp): what
+  // `evaluate` reports too, so styles can be compared by it.
+  const DescriptionLength dl = description_length(result.grammar);
+  std::string page;
+  if (report) {
+    StyleReportInput in;
+    in.title = output.filename().string();
+    in.grammar_text = header + grammar_text;
+    in.grammar = &result.grammar;
+    in.primitives = &result.primitives;
+    in.examples = &examples;
+    in.figures = {{"examples", std::to_string(example_count)},
+                  {"parts in the examples", std::to_string(parts)},
+                  {"rules", std::to_string(result.grammar.rules.size())},
+                  {"lines", std::to_string(lines)},
+                  {"description length", std::to_string(dl.total()) + " (" + std::to_string(dl.operations) +
+                                             " operations, " + std::to_string(dl.numbers) + " numbers)"}};
+    in.notes = result.warnings;
+    in.notes.insert(in.notes.end(), test_warnings.begin(), test_warnings.end());
+    in.first_seed = seed;
+    in.threads = options.threads;
+    page = report_html(style_report(in));
+  }
+  std::vector<AlsoWritten> also;
+  if (report) also.push_back({*report, page});
+  write_inferred(result.primitives, header, grammar_text, output, prims, also);
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!quiet) {
-    // How much the grammar says (graph/description_length.hpp): what
-    // `evaluate` reports too, so styles can be compared by it.
-    const DescriptionLength dl = description_length(result.grammar);
     std::fprintf(stderr,
                  "infer: %zu example%s -> %s: %zu rules, %zu lines, description length %zu (%zu operations, %zu "
                  "numbers); meshes -> %s (%.2f s)\n",
                  example_count, example_count == 1 ? "" : "s", output.string().c_str(), result.grammar.rules.size(),
-                 static_cast<std::size_t>(std::count(header.begin(), header.end(), '\n') +
-                                          std::count(grammar_text.begin(), grammar_text.end(), '\n')),
-                 dl.total(), dl.operations, dl.numbers, prims.string().c_str(), seconds);
+                 lines, dl.total(), dl.operations, dl.numbers, prims.string().c_str(), seconds);
+    if (report) std::fprintf(stderr, "infer: report -> %s (open it in any browser)\n", report->string().c_str());
   }
   return 0;
 }

@@ -18,6 +18,7 @@
 #include "graph/description_length.hpp"
 #include "graph/parser.hpp"
 #include "io/gltf_container.hpp"
+#include "report/png.hpp"
 #include "support/example_helpers.hpp"
 #include "support/run_command.hpp"
 
@@ -97,6 +98,91 @@ void far_examples(const fs::path& dir, const std::string& folder, const std::fun
 // there). The tolerance follows the coordinates, so infer still finds the
 // house's two thirds (~2 : ~1, not ~6.666687 : ~3.333313) and check,
 // taking each file's tolerance the same way, derives every garage.
+// RFC 4648 base64 back to bytes (what the pages hold their pictures in).
+std::string base64_decoded(const std::string& text) {
+  static const std::string kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::uint32_t bits = 0;
+  int held = 0;
+  for (char c : text) {
+    if (c == '=') break;
+    bits = (bits << 6) | static_cast<std::uint32_t>(kDigits.find(c));
+    held += 6;
+    if (held >= 8) {
+      held -= 8;
+      out += static_cast<char>((bits >> held) & 0xff);
+    }
+  }
+  return out;
+}
+
+// infer --report: one page, with the examples' pictures beside new
+// buildings', and the grammar as written.
+TEST(InferCli, AReportShowsTheExamplesBesideNewBuildingsAndTheGrammarAsWritten) {
+  TempFolder dir;
+  auto r = run_program("infer", {kExamples + "garage", "-o", "garage.grm", "--report", "garage.html"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("infer: report -> garage.html"), std::string::npos) << r.err;
+  EXPECT_EQ(list_folder(dir.path()),
+            (std::vector<std::string>{"garage.grm", "garage.html", "garage.prims.mtl", "garage.prims.obj"}));
+  const std::string html = read_file(dir / "garage.html");
+  // Ten examples, eight new buildings, each a picture inside the page.
+  const std::regex picture("<img alt=\"([^\"]*)\"[^>]*src=\"data:image/png;base64,([A-Za-z0-9+/=]*)\"");
+  std::vector<std::string> captions;
+  std::vector<RgbImage> images;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), picture); it != std::sregex_iterator(); ++it) {
+    captions.push_back((*it)[1]);
+    images.push_back(read_png(base64_decoded((*it)[2])));
+  }
+  ASSERT_EQ(captions.size(), 18u) << html.substr(0, 2000);
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(captions[i], "variant_00" + std::to_string(i) + ".obj");
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(captions[10 + i], "seed " + std::to_string(1 + i));
+  for (const RgbImage& image : images) {
+    ASSERT_EQ(image.width, 360);
+    ASSERT_EQ(image.height, 270);
+    // A building is drawn: many pixels are not the white of the sky.
+    std::size_t drawn = 0;
+    for (std::size_t p = 0; p < image.rgb.size(); p += 3)
+      drawn += image.rgb[p] != 255 || image.rgb[p + 1] != 255 || image.rgb[p + 2] != 255;
+    EXPECT_GT(drawn, 5000u);
+  }
+  // The garage's examples differ: so do their pictures.
+  EXPECT_NE(images[0], images[1]);
+  // Every line of the grammar file is on the page, numbered.
+  std::istringstream grammar(read_file(dir / "garage.grm"));
+  std::string line;
+  for (int n = 1; std::getline(grammar, line); ++n) {
+    std::string escaped;
+    for (char c : line)
+      escaped += c == '"'    ? std::string("&quot;")
+                 : c == '\'' ? std::string("&#39;")
+                 : c == '&'  ? std::string("&amp;")
+                 : c == '<'  ? std::string("&lt;")
+                 : c == '>'  ? std::string("&gt;")
+                             : std::string(1, c);
+    EXPECT_NE(html.find("<span class=\"ln\">" + std::to_string(n) + "</span>" + escaped + "\n"), std::string::npos) << line;
+  }
+  // Same examples and seed, same page, byte for byte, on one thread or two.
+  for (const char* threads : {"1", "2"}) {
+    r = run_program("infer", {kExamples + "garage", "-o", "again.grm", "--report", "again.html", "-j", threads}, dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::string again = read_file(dir / "again.html");
+    // The page names its grammar and meshes files; otherwise the same.
+    for (std::size_t at; (at = again.find("again.")) != std::string::npos;) again.replace(at, 6, "garage.");
+    EXPECT_TRUE(again == html) << "threads " << threads;
+  }
+}
+
+TEST(InferCli, AReportIsAnHtmlFileApartFromTheOtherOutputs) {
+  TempFolder dir;
+  auto r = run_program("infer", {kExamples + "garage", "-o", "garage.grm", "--report", "garage.png"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--report must name an .html file"), std::string::npos) << r.err;
+  r = run_program("infer", {kExamples + "garage", "-o", "garage.html", "--report", "garage.html"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(list_folder(dir.path()).empty());
+}
+
 TEST(InferCli, ExamplesFarFromTheOriginKeepTheirRatiosAndCheck) {
   TempFolder dir;
   far_examples(dir.path(), kExamples + "garage", [](int) { return glm::dvec3(2000, 1500, 0); });

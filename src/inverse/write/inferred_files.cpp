@@ -24,7 +24,7 @@ std::string inferred_header(std::size_t examples, double tolerance, const fs::pa
 }
 
 void write_inferred(const PrimitiveLibrary& primitives, std::string_view header, std::string_view text,
-                    const fs::path& grammar, const fs::path& meshes) {
+                    const fs::path& grammar, const fs::path& meshes, std::span<const AlsoWritten> also) {
   // The parts' meshes: one object per label, each filling the unit box.
   Scene scene;
   Variant all;
@@ -41,6 +41,7 @@ void write_inferred(const PrimitiveLibrary& primitives, std::string_view header,
   // Two pieces: the grammar's text (124 MB at a million parts) is not copied.
   const std::string_view pieces[] = {header, text};
   outputs.stage(grammar, pieces);
+  for (const AlsoWritten& file : also) outputs.stage(file.path, file.content);
   outputs.commit();
 }
 

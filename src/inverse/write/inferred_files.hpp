@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -23,11 +24,18 @@ std::string path_from(const std::filesystem::path& grammar, const std::filesyste
 // how to regenerate buildings.
 std::string inferred_header(std::size_t examples, double tolerance, const std::filesystem::path& grammar);
 
+// A file written with the grammar (infer --report's page).
+struct AlsoWritten {
+  std::filesystem::path path;
+  std::string_view content;
+};
+
 // Writes the meshes (one object per label, each filling the unit box), their
-// materials and the grammar's text (`header` then `text`), all three
+// materials and the grammar's text (`header` then `text`), and `also`, all
 // replaced together or, failing (a full disk), none. Throws vern::Error
 // (Io; Usage unless `meshes` ends in .obj).
 void write_inferred(const PrimitiveLibrary& primitives, std::string_view header, std::string_view text,
-                    const std::filesystem::path& grammar, const std::filesystem::path& meshes);
+                    const std::filesystem::path& grammar, const std::filesystem::path& meshes,
+                    std::span<const AlsoWritten> also = {});
 
 }  // namespace vern
