@@ -222,6 +222,7 @@ int run(int argc, char** argv) {
     in.grammar = &result.grammar;
     in.primitives = &result.primitives;
     in.examples = &examples;
+    in.layering = {options.stack, options.tolerance};
     in.figures = {{"examples", std::to_string(example_count)},
                   {"parts in the examples", std::to_string(parts)},
                   {"rules", std::to_string(result.grammar.rules.size())},

@@ -19,8 +19,9 @@ namespace vern {
 std::vector<RasterTriangle> derived_triangles(const Derivation& building, const PrimitiveLibrary& library);
 
 // Each part with its own mesh as the file gave it, where the reader kept it
-// (a label's first part; later parts whose vertices follow it, as copies
-// do), else its box.
+// (a label's first part; later parts whose vertices are the first's moved,
+// scaled or turned by quarter turns about z, as copies are), else its box
+// (a piece of a part painted over, layered_parts.hpp).
 std::vector<RasterTriangle> example_triangles(const Example& example);
 
 }  // namespace vern

@@ -102,7 +102,15 @@ std::string report_html(const Report& report) {
       }
       out += "</table>\n";
     }
-    for (const std::string& note : s.notes) out += "<p class=\"note\">" + html_escaped(note) + "</p>\n";
+    // Past three, notes fold away: forty warnings would push the pictures
+    // off the first screen.
+    constexpr std::size_t kNotesShown = 3;
+    for (std::size_t i = 0; i < s.notes.size(); ++i) {
+      if (i == kNotesShown)
+        out += "<details><summary>" + std::to_string(s.notes.size() - kNotesShown) + " more</summary>\n";
+      out += "<p class=\"note\">" + html_escaped(s.notes[i]) + "</p>\n";
+    }
+    if (s.notes.size() > kNotesShown) out += "</details>\n";
     for (const ReportGallery& g : s.galleries) {
       out += "<h3>" + html_escaped(g.title) + "</h3>\n<div class=\"gallery\">\n";
       for (const ReportPicture& p : g.pictures) {

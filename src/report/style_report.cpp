@@ -85,7 +85,10 @@ Report style_report(const StyleReportInput& input) {
   std::vector<std::optional<ReportPicture>> pictures(shown + input.new_buildings);
   parallel_for(pictures.size(), std::max(1u, input.threads), [&](std::size_t task) {
     if (task < shown) {
-      pictures[task] = picture_of(example_caption(examples[task].source), example_triangles(examples[task]), view);
+      Layering layering = input.layering;
+      layering.tolerance = example_tolerance(examples[task], input.layering.tolerance);
+      pictures[task] = picture_of(example_caption(examples[task].source),
+                                  example_triangles(visible_parts(examples[task], layering)), view);
     } else if (const std::optional<Derivation>& d = derived[task - shown]) {
       pictures[task] = picture_of("seed " + std::to_string(input.first_seed + (task - shown)),
                                   derived_triangles(*d, *input.primitives), view);

@@ -12,6 +12,7 @@
 #include "forward/primitive_library.hpp"
 #include "graph/grammar.hpp"
 #include "inverse/load/example.hpp"
+#include "inverse/load/layered_parts.hpp"
 #include "report/html_report.hpp"
 #include "report/raster.hpp"
 
@@ -23,6 +24,10 @@ struct StyleReportInput {
   const Grammar* grammar = nullptr;
   const PrimitiveLibrary* primitives = nullptr;  // the meshes the grammar's labels insert
   const std::vector<Example>* examples = nullptr;
+  // How overlapping parts are painted (infer's --stack, and --tolerance or
+  // 0 for each example's own): each example is drawn as inference reads
+  // it, a window set into its wall seen in it.
+  Layering layering;
   std::vector<std::pair<std::string, std::string>> figures;
   std::vector<std::string> notes;  // infer's warnings
   std::uint64_t first_seed = 1;    // new building i is derived with seed first_seed + i

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "inverse/load/layered_parts.hpp"
 #include "io/palette.hpp"
 #include "support/run_command.hpp"
 
@@ -76,6 +77,32 @@ TEST(BuildingTriangles, ExamplePartsKeepTheirOwnMeshesAndCopiesFollowTheFirst) {
   for (const RasterTriangle& t : of_part(2))
     for (const glm::dvec3& p : {t.a, t.b, t.c}) EXPECT_TRUE(within(p, {10, 0, 0}, {11, 1, 1}));
   EXPECT_EQ(tris[0].colour, as_vector(label_colour("roof")));
+}
+
+TEST(BuildingTriangles, PiecesOfAWallAroundItsWindowAreDrawnAsThePiecesNotTheWall) {
+  test::TempFolder dir;
+  auto box = [](int first, glm::dvec3 lo, glm::dvec3 hi) {
+    std::string out;
+    for (int c = 0; c < 8; ++c)
+      out += "v " + std::to_string(c & 1 ? hi.x : lo.x) + " " + std::to_string(c & 2 ? hi.y : lo.y) + " " +
+             std::to_string(c & 4 ? hi.z : lo.z) + "\n";
+    const int f[6][4] = {{1, 3, 4, 2}, {5, 6, 8, 7}, {1, 2, 6, 5}, {3, 7, 8, 4}, {1, 5, 7, 3}, {2, 4, 8, 6}};
+    for (const auto& q : f)
+      out += "f " + std::to_string(first + q[0]) + " " + std::to_string(first + q[1]) + " " + std::to_string(first + q[2]) +
+             " " + std::to_string(first + q[3]) + "\n";
+    return out;
+  };
+  test::write_text(dir / "wall.obj", "# up z\no wall\n" + box(0, {0, 0, 0}, {4, 0.3, 3}) + "o window\n" +
+                                         box(8, {1.5, 0, 1}, {2.5, 0.3, 2}));
+  const Example read = load_example(dir / "wall.obj");
+  const Example pieces = visible_parts(read, Layering{{}, example_tolerance(read, 0)});
+  ASSERT_GT(pieces.boxes.size(), 2u);  // the wall around its window
+  const auto tris = example_triangles(pieces);
+  for (const RasterTriangle& t : tris) {
+    const LabelledBox& part = pieces.boxes.at(t.part);
+    for (const glm::dvec3& p : {t.a, t.b, t.c}) EXPECT_TRUE(within(p, part.min, part.max)) << part.label << " " << t.part;
+  }
+  EXPECT_EQ(tris.size(), 12 * pieces.boxes.size());
 }
 
 }  // namespace

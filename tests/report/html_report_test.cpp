@@ -45,6 +45,18 @@ TEST(HtmlReport, TextIsEscapedAndShownAsWritten) {
   EXPECT_EQ(html.find("<span class=\"ln\">3</span>"), std::string::npos);
 }
 
+TEST(HtmlReport, PastThreeNotesTheRestFoldAway) {
+  Report r = sample();
+  EXPECT_EQ(report_html(r).find("<details><summary>"), std::string::npos);
+  r.sections[0].notes = {"one", "two", "three", "four", "five"};
+  const std::string html = report_html(r);
+  const std::size_t fold = html.find("<details><summary>2 more</summary>");
+  ASSERT_NE(fold, std::string::npos) << html;
+  EXPECT_LT(html.find(">three</p>"), fold);
+  EXPECT_GT(html.find(">four</p>"), fold);
+  EXPECT_GT(html.find(">five</p>"), fold);
+}
+
 TEST(HtmlReport, PicturesAreInsideTheFileAndNothingIsFetched) {
   const std::string html = report_html(sample());
   const std::regex src("src=\"([^\"]*)\"");
