@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <thread>
 
 #include "base/atomic_file.hpp"
 #include "base/error.hpp"
@@ -19,7 +20,10 @@
 #include "eval/precision_recall.hpp"
 #include "eval/random_grammar.hpp"
 #include "eval/random_style.hpp"
+#include "forward/primitive_sources.hpp"
 #include "graph/parser.hpp"
+#include "report/html_report.hpp"
+#include "report/round_trip_report.hpp"
 #include "support/command_line.hpp"
 #include "support/guarded_main.hpp"
 #include "support/output_paths.hpp"
@@ -39,6 +43,10 @@ CommandLine make_command_line() {
   cl.add({"--threads", "-j", 1, "N", "derive with N threads (default: all cores; results are the same)"});
   cl.add({"--distributions", "", 1, "KIND", "fitted (default) or uniform: how inference writes varying sizes"});
   cl.add({"--keep", "", 1, "FOLDER", "also write each inferred grammar to FOLDER/NAME.grm (NAME.N.grm with --precision-recall)"});
+  cl.add({"--report", "", 1, "FILE.html",
+          "also write a page to open in any browser, offline: the table, and for each grammar pictures of\n"
+          "its examples beside the learnt grammar's variants, and the learnt grammar (not with\n"
+          "--precision-recall)"});
   cl.add({"--precision-recall", "", 0, "", "instead: precision and recall against the source, per example count"});
   cl.add({"--counts", "", 1, "N,N,...", "with --precision-recall: example counts (default 3,10,30)"});
   cl.add({"--samples", "", 1, "S", "with --precision-recall: variants and fresh samples judged (default 40)"});
@@ -336,6 +344,18 @@ int run(int argc, char** argv) {
     throw Error(ErrorKind::Io,
                 args.value("--random-styles-write") + ": error: not an existing folder\n  hint: create it first");
   check_written_files(args, styles.size());
+  std::optional<fs::path> report;
+  if (args.has("--report")) {
+    report = args.value("--report");
+    if (args.has("--precision-recall"))
+      throw Error(ErrorKind::Usage, "evaluate: error: --report goes with the round trips' table, not --precision-recall\n"
+                                    "  hint: keep the grammars inferred with --keep FOLDER");
+    if (report->extension() != ".html" && report->extension() != ".htm")
+      throw Error(ErrorKind::Usage, "evaluate: error: --report must name an .html file, got " + report->string() +
+                                        "\n  hint: for example --report evaluation.html");
+    check_output_file("evaluate", *report, std::vector<fs::path>(args.positional.begin(), args.positional.end()),
+                      "the grammar file");
+  }
   if (args.has("--random-styles-write")) {
     const fs::path folder = args.value("--random-styles-write");
     for (std::size_t i = 0; i < styles.size(); ++i)
@@ -346,6 +366,14 @@ int run(int argc, char** argv) {
 
   std::cout << "| grammar | rules | DL | lines | reproduced | valid | novel | structure | sizes |\n"
                "|---|---|---|---|---|---|---|---|---|\n";
+  Report page;
+  page.title = "Round trips";
+  page.intro = "Each grammar derives " + std::to_string(options.examples) +
+               " examples (seeds 1 to " + std::to_string(options.examples) +
+               "), a grammar is inferred from them, and " + std::to_string(options.variants) +
+               " variants of each grammar (seeds 1001 on) are compared (docs/evaluation.md says how to read the "
+               "columns). In brackets: the source grammar's own figure.";
+  page.table_head = {"grammar", "rules", "DL", "lines", "reproduced", "valid", "novel", "structure", "sizes"};
   std::ostringstream notes;
   int failures = 0;
   for (const std::string& file : args.positional) {
@@ -358,6 +386,8 @@ int run(int argc, char** argv) {
     } catch (const Error& error) {
       std::cout << "| " << name << " | " << source.rules.size() << " | - | - | inference failed | - | - | - | - |\n";
       notes << "- " << name << ": " << error.what() << "\n";
+      page.table_rows.push_back({name, std::to_string(source.rules.size()), "-", "-", "inference failed", "-", "-", "-", "-"});
+      if (report) page.sections.push_back({name, {}, {error.what()}, {}, {}, {}});
       ++failures;
       continue;
     }
@@ -370,6 +400,33 @@ int run(int argc, char** argv) {
               << ") |" << std::endl;
     if (!e.first_unreproduced.empty()) notes << "- " << name << ": not reproduced: " << e.first_unreproduced << "\n";
     if (!e.first_fault.empty()) notes << "- " << name << ": first invalid variant: " << e.first_fault << "\n";
+    const std::vector<std::string> row = {
+        name,
+        std::to_string(e.source.rules) + " → " + std::to_string(e.inferred.rules),
+        std::to_string(e.source.total()) + " → " + std::to_string(e.inferred.total()),
+        std::to_string(e.inferred_lines),
+        std::to_string(e.reproduced) + "/" + std::to_string(e.examples),
+        percent(e.valid, e.variants) + " (" + percent(e.source_valid, e.variants) + ")",
+        e.source_varies ? percent(e.novel, e.variants) : "-",
+        fixed(e.distance.structure) + " (" + fixed(e.noise.structure) + ")",
+        fixed(e.distance.sizes) + " (" + fixed(e.noise.sizes) + ")"};
+    page.table_rows.push_back(row);
+    if (report) {
+      const Grammar learnt = parse_grammar(e.inferred_text, name + " (learnt)");
+      const PrimitiveLibrary meshes = primitives_for(source, file, std::nullopt, false);
+      RoundTripInput in;
+      in.name = name;
+      in.source = &source;
+      in.learnt = &learnt;
+      in.primitives = &meshes;
+      in.learnt_text = e.inferred_text;
+      for (std::size_t c = 1; c < row.size(); ++c) in.figures.emplace_back(page.table_head[c], row[c]);
+      if (!e.first_unreproduced.empty()) in.notes.push_back("not reproduced: " + e.first_unreproduced);
+      if (!e.first_fault.empty()) in.notes.push_back("first invalid variant: " + e.first_fault);
+      in.shown = std::min<std::uint32_t>(6, options.examples);
+      in.threads = options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
+      page.sections.push_back(round_trip_section(in));
+    }
     if (e.reproduced != e.examples) ++failures;
     if (!quiet) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -377,6 +434,10 @@ int run(int argc, char** argv) {
     }
   }
   if (!notes.str().empty()) std::cout << "\n" << notes.str();
+  if (report) {
+    write_file_atomically(*report, report_html(page));
+    if (!quiet) std::fprintf(stderr, "evaluate: report -> %s (open it in any browser)\n", report->string().c_str());
+  }
   return failures == 0 ? 0 : 1;
 }
 

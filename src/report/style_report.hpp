@@ -46,9 +46,6 @@ Report style_report(const StyleReportInput& input);
 // elevation. None for buildings, seen from their front corner.
 std::optional<glm::dvec3> elevation_eye(const std::vector<Example>& examples);
 
-// A picture of these triangles with its caption.
-ReportPicture picture_of(std::string caption, const std::vector<RasterTriangle>& triangles, const RasterView& view);
-
 // "house.obj (building 2 of 3)" for "examples/house.obj (building 2 of 3)":
 // an example's name without its folders.
 std::string example_caption(const std::string& source);

@@ -64,3 +64,50 @@ TEST(EvaluateCli, RandomStylesPrintATablePerClass) {
 
 }  // namespace
 }  // namespace vern
+
+namespace vern {
+namespace {
+
+// evaluate --report: the table, and per grammar the source's buildings
+// beside the learnt grammar's, with the learnt grammar.
+TEST(EvaluateCli, AReportShowsEachGrammarsRoundTrip) {
+  TempFolder dir;
+  const std::string grammars = VERN_SOURCE_DIR "/data/grammars/";
+  auto r = test::run_program("evaluate", {grammars + "garage.grm", grammars + "terrace.grm", "-k", "4", "-n", "10",
+                                          "--report", "round.html", "--keep", "."},
+                             dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string html = test::read_file(dir / "round.html");
+  // The table has the printed table's rows: one per grammar.
+  for (const char* name : {"garage", "terrace"}) {
+    EXPECT_NE(html.find("<tr><td>" + std::string(name) + "</td>"), std::string::npos) << name;
+    EXPECT_NE(html.find("<h2>" + std::string(name) + "</h2>"), std::string::npos) << name;
+  }
+  // Four examples and four variants a grammar, each a picture in the page.
+  std::size_t pictures = 0;
+  for (std::size_t at = 0; (at = html.find("src=\"data:image/png;base64,", at)) != std::string::npos; ++at) ++pictures;
+  EXPECT_EQ(pictures, 16u);
+  EXPECT_NE(html.find("seed 1001"), std::string::npos);
+  // The learnt grammar shown is the one --keep wrote.
+  const std::string kept = test::read_file(dir / "terrace.grm");
+  const std::string first_line = kept.substr(0, kept.find('\n'));
+  ASSERT_FALSE(first_line.empty());
+  std::string shown;
+  for (char c : first_line) shown += c == '>' ? std::string("&gt;") : c == '<' ? std::string("&lt;") : std::string(1, c);
+  EXPECT_NE(html.find("<span class=\"ln\">1</span>" + shown), std::string::npos) << first_line;
+}
+
+TEST(EvaluateCli, AReportGoesWithRoundTripsAndIsAnHtmlFile) {
+  TempFolder dir;
+  const std::string grammar = VERN_SOURCE_DIR "/data/grammars/garage.grm";
+  auto r = test::run_program("evaluate", {grammar, "--precision-recall", "--report", "r.html"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--report goes with the round trips"), std::string::npos) << r.err;
+  r = test::run_program("evaluate", {grammar, "--report", "r.txt"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--report must name an .html file"), std::string::npos) << r.err;
+  EXPECT_TRUE(test::list_folder(dir.path()).empty());
+}
+
+}  // namespace
+}  // namespace vern
