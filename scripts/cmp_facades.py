@@ -4,7 +4,8 @@
 The database's base set annotates 378 rectified facade photographs with
 labelled rectangles (facade, window, door, sill, blind, balcony, cornice,
 molding, pillar, shop, deco, background), one XML file per facade, the
-coordinates as fractions of the image. This writes each facade as an OBJ
+coordinates as fractions of the image (<x> down its height from the top,
+<y> across its width: a door's <x> is near 1). This writes each facade as an OBJ
 example: every rectangle a thin box labelled by its class, the facade
 `--width` metres wide (default 15), as tall as the photograph's aspect
 says (read from the JPEG beside the XML, when there is one), `--depth`
@@ -56,7 +57,7 @@ def jpeg_size(path):
 
 
 def rectangles(xml_path):
-    """The facade's rectangles: (label, x0, x1, y0, y1), fractions of the image, y downwards."""
+    """The facade's rectangles: (label, x0, x1, y0, y1), fractions of the image, x across, y downwards."""
     text = open(xml_path, encoding="utf-8").read()
     # The files hold a sequence of <object> elements without one root.
     root = ET.fromstring("<annotation>" + text + "</annotation>")
@@ -70,7 +71,10 @@ def rectangles(xml_path):
         ys = [float(y.text) for y in points.findall("y")]
         if len(xs) != 2 or len(ys) != 2:
             raise ValueError(f"{xml_path}: an object '{name}' without two x and two y")
-        out.append((name.strip(), min(xs), max(xs), min(ys), max(ys)))
+        # The set's <x> values run down the image's rows and its <y> values
+        # across its columns (a door's <x> is near 1, its bottom, as the
+        # label maps beside the XML files show): x here is across.
+        out.append((name.strip(), min(ys), max(ys), min(xs), max(xs)))
     return out
 
 
@@ -95,8 +99,11 @@ def without_overlaps(rects):
     return kept
 
 
-def facade_obj(rects, width, height, depth):
-    lines = ["# up z", "# a CMP facade: one thin box per annotated rectangle"]
+def facade_obj(rects, width, height, depth, name):
+    # One group: a facade is one example, even where a background
+    # rectangle stands apart from it (infer --buildings apart would
+    # otherwise read parts standing apart on the ground as buildings).
+    lines = ["# up z", "# a CMP facade: one thin box per annotated rectangle", "g " + name]
     used = {}
     vertices = 0
     for label, x0, x1, y0, y1 in rects:
@@ -155,7 +162,7 @@ def main():
             rects = without_overlaps(rects)
         size = jpeg_size(os.path.join(args.dataset, stem + ".jpg"))
         height = args.width * size[1] / size[0] if size else args.width
-        write_atomically(os.path.join(args.out, stem + ".obj"), facade_obj(rects, args.width, height, args.depth))
+        write_atomically(os.path.join(args.out, stem + ".obj"), facade_obj(rects, args.width, height, args.depth, stem))
     print(f"cmp_facades: {len(names)} facades -> {args.out}")
 
 
