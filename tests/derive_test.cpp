@@ -45,6 +45,30 @@ TEST(Derive, TerminalsNotKeptLeaveTheRestAsItWas) {
   }
 }
 
+TEST(Derive, TracedTerminalsSayWhatInsertedThemAndThroughWhichRules) {
+  const Grammar g = parse_grammar(
+      "p --> split(x){ ~1 : f(2) | ~1 : I(b) }\n"
+      "f(n) --> repeatN(x, n){ I(a) }\n"
+      "f(n) : n > 5 --> nil\n",
+      "g.grm");
+  DeriveOptions options;
+  const Derivation plain = derive(g, options);
+  EXPECT_TRUE(plain.traces.empty());
+  options.trace = true;
+  const Derivation traced = derive(g, options);
+  ASSERT_EQ(traced.terminals.size(), 3u);
+  ASSERT_EQ(traced.traces.size(), 3u);
+  // Terminals as without tracing.
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(traced.terminals[i].scope, plain.terminals[i].scope);
+  EXPECT_EQ(traced.traces[0].at.line, 2u);
+  EXPECT_EQ(traced.traces[0].at.column, 25u);
+  EXPECT_EQ(traced.traces[0].chain, "p > f(2)");
+  EXPECT_EQ(traced.traces[0].rules, (std::vector<RuleId>{0, 1}));  // the first f: an alternative is its own rule
+  EXPECT_EQ(traced.traces[2].at.line, 1u);
+  EXPECT_EQ(traced.traces[2].chain, "p");
+  EXPECT_EQ(traced.traces[2].rules, std::vector<RuleId>{0});
+}
+
 TEST(Derive, AbsoluteSizesComeFirstAndRelativeShareTheRest) {
   const auto b = boxes(derive_text("p --> split(y){ 1 : I(a) | ~1 : I(b) | ~3 : I(c) | 2 : I(d) }", {1, 11, 1}));
   ASSERT_EQ(b.size(), 4u);

@@ -281,6 +281,8 @@ class Deriver {
     if (terminals_left_ == 0) too_many_terminals(id);
     --terminals_left_;
     if (!opt_.keep_terminals) terminals_.clear();  // the one slot the caller finishes
+    if (opt_.trace) [[unlikely]]
+      trace(id);
     return terminals_.emplace_back(Terminal{label, false, Rgb{}, s});
   }
 
@@ -487,6 +489,14 @@ class Deriver {
     Terminal& t = emit(rect_label_, s, id);
     t.coloured = true;
     t.colour = c;
+  }
+
+  [[gnu::cold, gnu::noinline]] void trace(NodeId id) {
+    TerminalTrace t;
+    t.at = loc(id);
+    for (const Frame& f : chain_) t.rules.push_back(f.rule);
+    t.chain = describe_chain();
+    out_.traces.push_back(std::move(t));
   }
 
   std::string describe_chain() const {

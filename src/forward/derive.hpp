@@ -40,6 +40,18 @@ struct DeriveOptions {
   // test building) without holding a building's terminals (a million are
   // 144 MB, plus their copy).
   bool keep_terminals = true;
+  // Record what made each terminal (Derivation::traces): for an editor
+  // that shows a part's rules. Off, it costs one branch a terminal.
+  bool trace = false;
+};
+
+// What made one terminal: the operation that inserted it and the rules it
+// was derived through, outermost first, as errors spell them with their
+// arguments ("building > floor(2) > bay(1.5)").
+struct TerminalTrace {
+  SourceLoc at;                // the I(...) or colour(...) that inserted it
+  std::vector<RuleId> rules;   // the rule of each call, outermost first (an alternative is a rule of its own)
+  std::string chain;           // those calls with their arguments' values
 };
 
 struct Derivation {
@@ -47,6 +59,7 @@ struct Derivation {
   std::vector<std::string> labels;  // LabelId -> name (the grammar's, plus "rect" for colour())
   std::vector<Terminal> terminals;
   std::vector<std::string> warnings;
+  std::vector<TerminalTrace> traces;  // one per terminal with DeriveOptions::trace, else none
 };
 
 // Throws vern::Error: Input for evaluation errors (type, division by zero,
