@@ -45,11 +45,9 @@ CommandLine make_command_line() {
 
 int run(int argc, char** argv) {
   const CommandLine cl = make_command_line();
-  const ParsedCommandLine args = cl.parse(argc, argv);
-  if (const std::optional<std::string> text = cl.requested_text(args)) {
-    std::cout << *text;
-    return 0;
-  }
+  const std::optional<ParsedCommandLine> parsed = cl.parse_or_answer(argc, argv);
+  if (!parsed) return 0;
+  const ParsedCommandLine& args = *parsed;
   if (args.positional.size() < 2)
     throw Error(ErrorKind::Usage, "check: error: give a grammar and at least one example\n"
                                   "  hint: check style.grm examples/*.obj");

@@ -314,11 +314,9 @@ int run_precision_recall(const ParsedCommandLine& args, unsigned threads, bool q
 
 int run(int argc, char** argv) {
   const CommandLine cl = make_command_line();
-  const ParsedCommandLine args = cl.parse(argc, argv);
-  if (const std::optional<std::string> text = cl.requested_text(args)) {
-    std::cout << *text;
-    return 0;
-  }
+  const std::optional<ParsedCommandLine> parsed = cl.parse_or_answer(argc, argv);
+  if (!parsed) return 0;
+  const ParsedCommandLine& args = *parsed;
   const std::vector<RandomStyle> styles = random_styles(args);
   if (!styles.empty() && !args.has("--precision-recall") && !args.has("--random-styles-write"))
     throw Error(ErrorKind::Usage,

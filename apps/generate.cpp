@@ -181,11 +181,9 @@ struct MadeFolder {
 
 int run(int argc, char** argv) {
   const CommandLine cl = make_command_line();
-  const ParsedCommandLine args = cl.parse(argc, argv);
-  if (const std::optional<std::string> text = cl.requested_text(args)) {
-    std::cout << *text;
-    return 0;
-  }
+  const std::optional<ParsedCommandLine> parsed = cl.parse_or_answer(argc, argv);
+  if (!parsed) return 0;
+  const ParsedCommandLine& args = *parsed;
   if (args.positional.size() != 1)
     usage(args.positional.empty() ? "no grammar file given" : "give one grammar file, got " + std::to_string(args.positional.size()),
           "usage: generate GRAMMAR.grm [-n COUNT] [-o OUT]  (generate --help for more)");

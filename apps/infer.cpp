@@ -80,11 +80,9 @@ CommandLine make_command_line() {
 
 int run(int argc, char** argv) {
   const CommandLine cl = make_command_line();
-  const ParsedCommandLine args = cl.parse(argc, argv);
-  if (const std::optional<std::string> text = cl.requested_text(args)) {
-    std::cout << *text;
-    return 0;
-  }
+  const std::optional<ParsedCommandLine> parsed = cl.parse_or_answer(argc, argv);
+  if (!parsed) return 0;
+  const ParsedCommandLine& args = *parsed;
   if (!args.has("--output")) usage("no output grammar given", "add -o STYLE.grm");
   if (args.positional.empty()) usage("no examples given", "list .obj/.glb files or folders: infer examples/*.obj -o style.grm");
   const bool quiet = args.has("--quiet");

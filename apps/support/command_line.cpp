@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <iostream>
 
 #include "base/error.hpp"
 #include "base/suggest.hpp"
@@ -93,6 +94,15 @@ ParsedCommandLine CommandLine::parse(int argc, const char* const* argv) const {
 }
 
 std::string CommandLine::version() const { return program_ + " (Vernacular) " VERN_VERSION "\n"; }
+
+std::optional<ParsedCommandLine> CommandLine::parse_or_answer(int argc, const char* const* argv) const {
+  ParsedCommandLine args = parse(argc, argv);
+  if (const std::optional<std::string> text = requested_text(args)) {
+    std::cout << *text;
+    return std::nullopt;
+  }
+  return args;
+}
 
 std::optional<std::string> CommandLine::requested_text(const ParsedCommandLine& args) const {
   if (args.has("--help")) return help();

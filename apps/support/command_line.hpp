@@ -46,6 +46,9 @@ class CommandLine {
   // What --help or --version asks to print instead of running (help
   // first when both), or nothing.
   std::optional<std::string> requested_text(const ParsedCommandLine& args) const;
+  // parse(), but when --help or --version asks for text, prints it to
+  // stdout and gives nothing: the program then ends with 0.
+  std::optional<ParsedCommandLine> parse_or_answer(int argc, const char* const* argv) const;
 
   // Typed values, with Usage errors that name the option.
   static double number(const ParsedCommandLine& cl, const std::string& name, std::size_t i = 0);
