@@ -83,4 +83,6 @@ ChildProcess::Ended ChildProcess::wait() {
   return r;
 }
 
+std::string ChildProcess::err_so_far() const { return read_file(capture_ / "err"); }
+
 }  // namespace vern::test

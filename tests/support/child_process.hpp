@@ -56,6 +56,9 @@ class ChildProcess {
   // Waits for the child to end.
   Ended wait();
 
+  // What it has written to stderr so far (a server's address, say).
+  std::string err_so_far() const;
+
  private:
   TempFolder capture_;
   pid_t pid_ = -1;

@@ -1,0 +1,40 @@
+// The editor's one question: derive this text with these seeds.
+//
+// Request (JSON): {"text": "...", "seed": 1, "count": 3}. Answer (JSON):
+//   {"ok": true, "labels": [...], "colours": {label: [r, g, b]},
+//    "meshes": {label: {"positions": [x, y, z, ...], "indices": [...]}},
+//    "rules": [{"label": "floor", "line": 4}, ...],
+//    "buildings": [{"seed": 1, "size": [x, y, z],
+//                   "parts": [{"label": i, "matrix": [16, column-major],
+//                              "at": [line, column], "rules": [rule, ...],
+//                              "chain": "building > floor(2)"}]}]}
+// z up, as grammars are; a part's matrix maps its primitive's unit box
+// into place. Or, when the text does not read or derive:
+//   {"ok": false, "error": {"kind": "input", "line": 3, "column": 14,
+//                           "message": "...", "hint": "...", "text": "..."}}
+// at the line and column of the text sent. A grammar that runs away stops
+// at the session's limits, an error like any other.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "serve/session.hpp"
+
+namespace vern {
+
+struct ApiAnswer {
+  int status = 200;  // 400 for a request that is not the JSON above
+  std::string body;  // JSON
+};
+
+// At most this many buildings a request.
+inline constexpr int kMostBuildings = 64;
+
+ApiAnswer derive_request(std::string_view request, const ServeSession& session);
+
+// {"name": ..., "text": ..., "examples": [{"name": ..., "parts": [{"label": ..., "min": [...], "max": [...]}]}]}:
+// what the page starts with.
+std::string session_json(const ServeSession& session);
+
+}  // namespace vern

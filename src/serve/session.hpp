@@ -1,0 +1,39 @@
+// What `serve` shows: a grammar (from a file, or inferred from examples
+// when it starts) and the examples, read once when it starts.
+//
+// The editor changes the grammar's text in the browser; the server never
+// writes the file (every file a run reads is an input): the page offers the
+// text to save where the user wants.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "forward/derive.hpp"
+#include "forward/primitive_library.hpp"
+#include "inverse/load/example.hpp"
+
+namespace vern {
+
+struct ServeSession {
+  std::string grammar_name;  // the file's name, or "inferred.grm"
+  std::string grammar_text;  // as the editor starts with it
+  std::optional<std::filesystem::path> grammar_file;
+  std::vector<Example> examples;
+  // Meshes the grammar's labels insert: built-ins, the grammar file's
+  // @primitives, or the examples' own parts' (inferred).
+  PrimitiveLibrary primitives = PrimitiveLibrary::builtin();
+  // Each derivation stops here: a runaway grammar typed in the editor is
+  // an error shown at its line, the server goes on.
+  DeriveLimits limits{200, 200'000, 20'000'000};
+};
+
+// The session of `serve ARGS...`: at most one .grm file, and example files
+// or folders (infer's). With examples and no grammar, the grammar is
+// inferred from them. Throws vern::Error (Usage) for two grammars or
+// nothing given, and as infer and the grammar reader do.
+ServeSession open_session(const std::vector<std::string>& args, const ExampleLimits& limits);
+
+}  // namespace vern

@@ -1,0 +1,133 @@
+// The editor's page in a real headless browser (Debian's chromium, driven
+// by puppeteer-core): the page loads and draws the grammar's buildings, an
+// edit changes them, a click on a part shows the rules that made it, and a
+// broken grammar shows its error at its line. Screenshots are kept in
+// ARTIFACTS (tests/web/README.md).
+//   node tests/web/editor_test.mjs SERVE_BINARY SOURCE_DIR ARTIFACTS
+// Exit 77 (skipped) where chromium or web/node_modules is missing.
+import { spawn } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, writeFileSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { createRequire } from 'node:module';
+
+const [serveBinary, source, artifacts] = process.argv.slice(2);
+const chromium = '/usr/bin/chromium';
+const require = createRequire(resolve(source, 'web', 'package.json'));
+if (!existsSync(chromium)) {
+  console.log('skipped: no /usr/bin/chromium (scripts/setup installs it)');
+  process.exit(77);
+}
+let puppeteer;
+try {
+  puppeteer = require('puppeteer-core');
+} catch {
+  console.log('skipped: no puppeteer-core in web/node_modules (scripts/setup installs it)');
+  process.exit(77);
+}
+mkdirSync(artifacts, { recursive: true });
+
+const HOUSE = `@scope 10, 8, 6
+house --> split(z){ ~2 : floor | ~1 : I(roof) }
+floor --> split(x){ ~1 : I(wall) | ~1.2 : I(window) | ~1 : I(wall) }
+`;
+const work = mkdtempSync(join(tmpdir(), 'vern-web-'));
+writeFileSync(join(work, 'house.grm'), HOUSE);
+
+let failures = 0;
+function check(ok, what) {
+  console.log((ok ? 'ok   ' : 'FAIL ') + what);
+  if (!ok) failures++;
+}
+
+const server = spawn(serveBinary, [join(work, 'house.grm'), '--port', '0'], { stdio: ['ignore', 'ignore', 'pipe'] });
+const port = await new Promise((resolve, reject) => {
+  let err = '';
+  server.stderr.on('data', (d) => {
+    err += d;
+    const m = /serve: http:\/\/127\.0\.0\.1:(\d+)\//.exec(err);
+    if (m) resolve(Number(m[1]));
+  });
+  server.on('exit', (code) => reject(new Error('serve ended (' + code + '): ' + err)));
+  setTimeout(() => reject(new Error('serve said no address: ' + err)), 20000);
+});
+
+const browser = await puppeteer.launch({
+  executablePath: chromium,
+  headless: true,
+  userDataDir: join(work, 'profile'),
+  args: ['--no-sandbox', '--disable-gpu', '--enable-unsafe-swiftshader', '--use-angle=swiftshader', '--disable-quic',
+         '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+});
+try {
+  const page = await browser.newPage();
+  await page.setViewport({ width: 1280, height: 720 });
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(`http://127.0.0.1:${port}/`);
+  const derived = (n) => page.waitForFunction((k) => window.vernacular && window.vernacular.derivations >= k, { timeout: 20000 }, n);
+  await derived(1);
+  // One building, so the view's middle is the house.
+  await page.$eval('#count', (e) => { e.value = '1'; e.dispatchEvent(new Event('input')); });
+  await derived(2);
+  const before = await page.evaluate(() => window.vernacular.answer.buildings[0].parts.length);
+  check(before === 4, `the page loads and derives the house: ${before} parts (wall, window, wall, roof)`);
+  await page.screenshot({ path: join(artifacts, '1-loaded.png') });
+  const pixelsBefore = await page.$eval('#view canvas', (c) => c.toDataURL());
+
+  // An edit: a third wall bay, typed at the end of line 3.
+  await page.focus('#text');
+  await page.evaluate(() => {
+    const t = document.getElementById('text');
+    const at = t.value.indexOf(' }\n', t.value.indexOf('floor -->'));
+    t.setSelectionRange(at, at);
+  });
+  await page.keyboard.type(' | ~1 : I(wall)');
+  await page.waitForFunction(() => window.vernacular.answer.buildings[0].parts.length === 5, { timeout: 20000 });
+  check(true, 'typing a bay into the grammar derives the house again with 5 parts');
+  const pixelsAfter = await page.$eval('#view canvas', (c) => c.toDataURL());
+  check(pixelsAfter !== pixelsBefore, 'the picture changed with the edit');
+  await page.screenshot({ path: join(artifacts, '2-edited.png') });
+
+  // A click on the middle of the view picks a part and shows its rules.
+  const box = await (await page.$('#view canvas')).boundingBox();
+  await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+  await page.waitForSelector('#picked:not([hidden])', { timeout: 10000 });
+  const picked = await page.$eval('#picked', (e) => e.textContent);
+  check(/made by: house/.test(picked), `a click shows the part's rules: ${JSON.stringify(picked.split('\n')[1])}`);
+  const lit = await page.$$eval('#gutter .hit', (ls) => ls.map((l) => Number(l.textContent)));
+  // Lit: the line that inserted it and the lines of the rules it came through.
+  const said = [Number(/inserted at line (\d+)/.exec(picked)[1]), ...[...picked.matchAll(/\(line (\d+)\)/g)].map((m) => Number(m[1]))];
+  const expected = [...new Set(said)].sort();
+  check(JSON.stringify(lit.sort()) === JSON.stringify(expected) && lit.includes(2),
+        `the rules' lines are lit in the editor: ${lit.join(', ')} (${picked.split('\n')[0]})`);
+  await page.screenshot({ path: join(artifacts, '3-picked.png') });
+
+  // A broken grammar: the error at its line, the last buildings kept.
+  await page.evaluate(() => {
+    const t = document.getElementById('text');
+    t.value = t.value.replace('~1 : I(roof)', '~1 I(roof)');
+    t.dispatchEvent(new Event('input'));
+  });
+  await page.waitForSelector('#error:not([hidden])', { timeout: 10000 });
+  const errorLine = await page.$eval('#error', (e) => e.dataset.line);
+  const errorText = await page.$eval('#error', (e) => e.textContent);
+  const badGutter = await page.$$eval('#gutter .bad', (ls) => ls.map((l) => l.textContent));
+  check(errorLine === '2' && /^line 2, column \d+: expected ':'/.test(errorText) && badGutter.join() === '2',
+        `a broken grammar shows its error at line 2: ${JSON.stringify(errorText.split('\n')[0])}`);
+  const stillThere = await page.evaluate(() => window.vernacular.answer.buildings[0].parts.length);
+  check(stillThere === 5, 'the last buildings that derived stay in view');
+  await page.screenshot({ path: join(artifacts, '4-error.png') });
+  check(errors.length === 0, 'no script error on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
+  // The file served is never written.
+  check(readFileSync(join(work, 'house.grm'), 'utf8') === HOUSE, 'the grammar file is as it was');
+} catch (e) {
+  console.log('FAIL ' + (e && e.stack ? e.stack : e));
+  failures++;
+} finally {
+  await browser.close();
+  server.kill();
+  rmSync(work, { recursive: true, force: true });
+}
+console.log(failures ? `${failures} failed` : 'all passed');
+process.exit(failures ? 1 : 0);

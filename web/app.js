@@ -1,0 +1,123 @@
+// The page: the editor on the left, the buildings on the right; every edit
+// derives again (the newest answer wins), a click on a part shows the rules
+// that made it, a rule's line lights the parts it made.
+import { Editor } from '/editor.js';
+import { Viewer } from '/viewer.js';
+
+const $ = (id) => document.getElementById(id);
+const state = { answer: null, examples: null, asked: 0, shown: 0, derivations: 0 };
+window.vernacular = state;  // for the browser tests and the curious
+
+const editor = new Editor({
+  text: $('text'), highlight: $('highlight'), gutter: $('gutter'),
+  onChange: () => schedule(),
+  onLine: (line) => lightLine(line),
+});
+const viewer = new Viewer($('view'), (entry) => showPicked(entry));
+
+// One request in flight; edits meanwhile ask again once it is back.
+let busy = false, again = false;
+function schedule() {
+  if (busy) { again = true; return; }
+  derive();
+}
+
+async function derive() {
+  busy = true;
+  again = false;
+  const asked = ++state.asked;
+  const started = performance.now();
+  const body = JSON.stringify({ text: editor.value, seed: Number($('seed').value) || 0, count: Math.min(64, Math.max(1, Number($('count').value) || 1)) });
+  try {
+    const response = await fetch('/api/derive', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body });
+    const answer = await response.json();
+    if (asked >= state.shown) {
+      state.shown = asked;
+      show(answer, performance.now() - started);
+    }
+  } catch (e) {
+    $('status').textContent = 'the server does not answer: ' + e.message;
+  } finally {
+    busy = false;
+    if (again) derive();
+  }
+}
+
+function show(answer, ms) {
+  if (!answer.ok) {
+    const e = answer.error;
+    $('error').hidden = false;
+    $('error').textContent = (e.line ? `line ${e.line}, column ${e.column}: ` : '') + e.message + (e.hint ? '\nhint: ' + e.hint : '');
+    $('error').dataset.line = e.line || '';
+    editor.markError(e.line);
+    $('status').textContent = 'error (the buildings shown are the last that derived)';
+    return;
+  }
+  $('error').hidden = true;
+  $('error').dataset.line = '';
+  editor.markError(0);
+  state.answer = answer;
+  state.derivations++;
+  viewer.show(answer, $('show-examples').checked ? state.examples : null);
+  $('picked').hidden = true;
+  const parts = answer.buildings.reduce((n, b) => n + b.parts.length, 0);
+  $('status').textContent = `${answer.buildings.length} building${answer.buildings.length === 1 ? '' : 's'}, ${parts} parts, ${Math.round(ms)} ms`;
+}
+
+function partOf(entry) {
+  return state.answer.buildings[entry.building].parts[entry.part];
+}
+
+function showPicked(entry) {
+  if (!entry) {
+    $('picked').hidden = true;
+    editor.light([]);
+    return;
+  }
+  const part = partOf(entry);
+  const rules = part.rules.map((r) => state.answer.rules[r]);
+  $('picked').hidden = false;
+  $('picked').textContent = `${state.answer.labels[part.label]} (building ${entry.building + 1}, seed ${state.answer.buildings[entry.building].seed})\n` +
+    `made by: ${part.chain}\ninserted at line ${part.at[0]}, column ${part.at[1]}` +
+    `\nrules: ${rules.map((r) => r.label + ' (line ' + r.line + ')').join(' > ')}`;
+  editor.light([part.at[0], ...rules.map((r) => r.line)]);
+}
+
+// The cursor on a line lights the parts made there: inserted by it, or
+// derived through the rule that starts on it.
+function lightLine(line) {
+  if (!state.answer) return;
+  const rulesHere = new Set(state.answer.rules.map((r, i) => (r.line === line ? i : -1)).filter((i) => i >= 0));
+  viewer.lightWhere((entry) => {
+    const p = partOf(entry);
+    return p.at[0] === line || p.rules.some((r) => rulesHere.has(r));
+  });
+}
+
+function step(by) {
+  $('seed').value = Math.max(0, (Number($('seed').value) || 0) + by);
+  schedule();
+}
+$('previous').addEventListener('click', () => step(-1));
+$('next').addEventListener('click', () => step(1));
+$('seed').addEventListener('input', () => schedule());
+$('count').addEventListener('input', () => schedule());
+$('show-examples').addEventListener('change', () => state.answer && viewer.show(state.answer, $('show-examples').checked ? state.examples : null));
+$('save').addEventListener('click', () => {
+  // A copy where the browser saves files: the server never writes the grammar it was given.
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(new Blob([editor.value], { type: 'text/plain' }));
+  a.download = $('name').textContent || 'style.grm';
+  a.click();
+  URL.revokeObjectURL(a.href);
+});
+
+const session = await (await fetch('/api/session')).json();
+$('name').textContent = session.name;
+document.title = session.name + ' - Vernacular';
+if (session.examples.length) {
+  state.examples = { list: session.examples, colours: session.colours };
+  $('examples-toggle').hidden = false;
+}
+editor.value = session.text;
+derive();
