@@ -61,7 +61,8 @@ function show(answer, ms) {
   viewer.show(answer, $('show-examples').checked ? state.examples : null);
   $('picked').hidden = true;
   const parts = answer.buildings.reduce((n, b) => n + b.parts.length, 0);
-  $('status').textContent = `${answer.buildings.length} building${answer.buildings.length === 1 ? '' : 's'}, ${parts} parts, ${Math.round(ms)} ms`;
+  $('status').textContent = `${answer.buildings.length} building${answer.buildings.length === 1 ? '' : 's'}, ${parts} parts, ${Math.round(ms)} ms` +
+    (answer.note ? ` (${answer.note})` : '');
 }
 
 function partOf(entry) {

@@ -95,6 +95,8 @@ ApiAnswer derive_request(std::string_view request, const ServeSession& session) 
     const Program program = compile(grammar);
     json buildings = json::array();
     std::vector<std::string> labels;
+    std::uint64_t parts = 0;
+    std::string note;
     for (int i = 0; i < count; ++i) {
       DeriveOptions options;
       options.seed = seed + static_cast<std::uint64_t>(i);
@@ -103,6 +105,14 @@ ApiAnswer derive_request(std::string_view request, const ServeSession& session) 
       const Derivation d = derive(program, options);
       labels = d.labels;
       buildings.push_back(building_json(d, options.seed));
+      parts += d.terminals.size();
+      // Each building within the limits, but a page of them past what a
+      // browser draws at once: the rest are left out, and the page says so.
+      if (parts >= session.most_parts && i + 1 < count) {
+        note = "the first " + std::to_string(i + 1) + " of " + std::to_string(count) + " buildings: they have " +
+               std::to_string(parts) + " parts, and a page shows up to " + std::to_string(session.most_parts);
+        break;
+      }
     }
     json colours = json::object(), meshes = json::object();
     for (const std::string& label : labels) {
@@ -118,7 +128,8 @@ ApiAnswer derive_request(std::string_view request, const ServeSession& session) 
                       {"colours", std::move(colours)},
                       {"meshes", std::move(meshes)},
                       {"rules", std::move(rules)},
-                      {"buildings", std::move(buildings)}}
+                      {"buildings", std::move(buildings)},
+                      {"note", note}}
                      .dump(-1, ' ', false, json::error_handler_t::replace)};
   } catch (const Error& e) {
     // The grammar's own fault, as the editor shows it: still an answer.

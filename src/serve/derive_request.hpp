@@ -7,7 +7,8 @@
 //    "buildings": [{"seed": 1, "size": [x, y, z],
 //                   "parts": [{"label": i, "matrix": [16, column-major],
 //                              "at": [line, column], "rules": [rule, ...],
-//                              "chain": "building > floor(2)"}]}]}
+//                              "chain": "building > floor(2)"}]}],
+//    "note": ""}  (or which buildings were left out past the session's most_parts)
 // z up, as grammars are; a part's matrix maps its primitive's unit box
 // into place. Or, when the text does not read or derive:
 //   {"ok": false, "error": {"kind": "input", "line": 3, "column": 14,

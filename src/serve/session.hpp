@@ -6,6 +6,7 @@
 // text to save where the user wants.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -28,6 +29,9 @@ struct ServeSession {
   // Each derivation stops here: a runaway grammar typed in the editor is
   // an error shown at its line, the server goes on.
   DeriveLimits limits{200, 200'000, 20'000'000};
+  // Parts an answer holds at most: past them the buildings that reach it,
+  // and a note (a browser draws a few hundred thousand at a time).
+  std::uint64_t most_parts = 300'000;
 };
 
 // The session of `serve ARGS...`: at most one .grm file, and example files

@@ -82,6 +82,18 @@ TEST(DeriveRequest, ARunawayGrammarStopsAtTheSessionsLimitsAsAnError) {
   EXPECT_EQ(b["error"]["kind"], "limit");
 }
 
+TEST(DeriveRequest, PastTheSessionsPartsTheRestOfThePageIsLeftOutAndSaid) {
+  ServeSession session;
+  session.most_parts = 1000;
+  const std::string rows = json{{"text", "a --> repeatN(x, 20){ repeatN(y, 20){ I(rect) } }\n"}, {"count", 5}}.dump();
+  const json a = json::parse(derive_request(rows, session).body);  // 400 parts a building
+  ASSERT_TRUE(a["ok"].get<bool>()) << a.dump().substr(0, 300);
+  EXPECT_EQ(a["buildings"].size(), 3u);  // 3 x 400 reaches 1,000
+  EXPECT_NE(a["note"].get<std::string>().find("the first 3 of 5 buildings"), std::string::npos) << a["note"];
+  session.most_parts = 2000;
+  EXPECT_EQ(json::parse(derive_request(rows, session).body)["note"], "");
+}
+
 TEST(DeriveRequest, RequestsThatAreNotTheQuestionAreRefusedSayingWhy) {
   for (const char* bad : {"", "not json", "[1, 2]", "{\"seed\": 1}", "{\"text\": 3}", "{\"text\": \"a --> nil\", \"seed\": -1}",
                           "{\"text\": \"a --> nil\", \"count\": 0}", "{\"text\": \"a --> nil\", \"count\": 65}",
