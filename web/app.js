@@ -13,7 +13,76 @@ const editor = new Editor({
   onChange: () => schedule(),
   onLine: (line) => lightLine(line),
 });
-const viewer = new Viewer($('view'), (entry) => showPicked(entry));
+const viewer = new Viewer($('view'), (entry, event) => showPicked(entry, event));
+state.viewer = viewer;
+
+// Constants written as plain numbers (`depth = 0.7`) get a slider each;
+// moving it overrides the value in what is derived, not in the text.
+const overrides = new Map();  // name -> value
+const CONSTANT = /^(\s*)([A-Za-z_][A-Za-z0-9_]*)(\s*=\s*)(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?)(.*)$/;
+
+function constantsOf(text) {
+  const found = [];
+  for (const line of text.split('\n')) {
+    if (/-->|->|→/.test(line)) break;  // constants come before the rules
+    const m = CONSTANT.exec(line);
+    if (m && !/^\s*(#|\/\/|$)/.test(m[5])) continue;
+    if (m) found.push({ name: m[2], value: Number(m[4]) });
+  }
+  return found;
+}
+
+function textToDerive() {
+  if (!overrides.size) return editor.value;
+  let rules = false;
+  return editor.value.split('\n').map((line) => {
+    if (/-->|->|→/.test(line)) rules = true;
+    const m = !rules && CONSTANT.exec(line);
+    return m && overrides.has(m[2]) ? m[1] + m[2] + m[3] + String(overrides.get(m[2])) + m[5] : line;
+  }).join('\n');
+}
+
+function showConstants() {
+  const panel = $('constants');
+  const found = constantsOf(editor.value);
+  for (const name of [...overrides.keys()]) if (!found.some((c) => c.name === name)) overrides.delete(name);
+  const key = found.map((c) => c.name + '=' + c.value).join(',');
+  if (panel.dataset.key === key) return;
+  panel.dataset.key = key;
+  panel.hidden = found.length === 0;
+  panel.innerHTML = '';
+  for (const c of found) {
+    const span = c.value === 0 ? 1 : Math.abs(c.value) * 2;
+    const label = document.createElement('label');
+    label.textContent = c.name;
+    const slider = Object.assign(document.createElement('input'), {
+      type: 'range', min: Math.min(0, c.value * 2), max: c.value < 0 ? 0 : span, step: span / 200,
+      value: overrides.has(c.name) ? overrides.get(c.name) : c.value,
+    });
+    slider.dataset.constant = c.name;
+    const shown = document.createElement('span');
+    const reset = Object.assign(document.createElement('button'), { textContent: 'reset', title: 'back to the value in the text' });
+    const update = () => {
+      const over = overrides.has(c.name);
+      shown.textContent = over ? String(overrides.get(c.name)) : String(c.value);
+      shown.className = over ? 'over' : '';
+      reset.hidden = !over;
+    };
+    slider.addEventListener('input', () => {
+      overrides.set(c.name, Number(Number(slider.value).toPrecision(6)));
+      update();
+      schedule();
+    });
+    reset.addEventListener('click', () => {
+      overrides.delete(c.name);
+      slider.value = c.value;
+      update();
+      schedule();
+    });
+    update();
+    panel.append(label, slider, shown, reset);
+  }
+}
 
 // One request in flight; edits meanwhile ask again once it is back.
 let busy = false, again = false;
@@ -27,7 +96,8 @@ async function derive() {
   again = false;
   const asked = ++state.asked;
   const started = performance.now();
-  const body = JSON.stringify({ text: editor.value, seed: Number($('seed').value) || 0, count: Math.min(64, Math.max(1, Number($('count').value) || 1)) });
+  showConstants();
+  const body = JSON.stringify({ text: textToDerive(), seed: Number($('seed').value) || 0, count: Math.min(64, Math.max(1, Number($('count').value) || 1)) });
   try {
     const response = await fetch('/api/derive', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body });
     const answer = await response.json();
@@ -69,7 +139,15 @@ function partOf(entry) {
   return state.answer.buildings[entry.building].parts[entry.part];
 }
 
-function showPicked(entry) {
+function showPicked(entry, event) {
+  if (entry && event && event.shiftKey) {
+    // Alike parts: every part with this one's label, in every building.
+    const label = partOf(entry).label;
+    const count = viewer.lightWhere((e) => partOf(e).label === label);
+    $('picked').hidden = false;
+    $('picked').textContent = `every ${state.answer.labels[label]}: ${count} part${count === 1 ? '' : 's'}`;
+    return;
+  }
   if (!entry) {
     $('picked').hidden = true;
     editor.light([]);

@@ -37,7 +37,7 @@ export class Viewer {
     this.renderer.domElement.addEventListener('pointerdown', (e) => { down = [e.clientX, e.clientY]; });
     this.renderer.domElement.addEventListener('pointerup', (e) => {
       // A click, not the end of a drag that turned the view.
-      if (down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4) this.pick(e.clientX, e.clientY);
+      if (down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4) this.pick(e.clientX, e.clientY, e);
     });
     this.resize();
   }
@@ -148,14 +148,14 @@ export class Viewer {
   }
 
   // The part under (clientX, clientY), lit, or none.
-  pick(clientX, clientY) {
+  pick(clientX, clientY, event) {
     const r = this.renderer.domElement.getBoundingClientRect();
     const ndc = new THREE.Vector2(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1);
     const ray = new THREE.Raycaster();
     ray.setFromCamera(ndc, this.camera);
     const hit = ray.intersectObjects(this.meshes.filter((m) => m.parts), false)[0];
-    this.select(hit ? { mesh: hit.object, index: hit.instanceId } : null);
-    this.onPick(hit ? hit.object.parts[hit.instanceId] : null);
+    if (!(event && event.shiftKey)) this.select(hit ? { mesh: hit.object, index: hit.instanceId } : null);
+    this.onPick(hit ? hit.object.parts[hit.instanceId] : null, event);
   }
 
   select(target) {
@@ -171,14 +171,35 @@ export class Viewer {
     this.draw();
   }
 
-  // Every part whose test(part) holds, lit (a rule's text selects what it made).
-  lightWhere(test) {
+  // Where on the page the middle of the first part whose test(entry) holds
+  // is drawn ({x, y}, client pixels), or null: for tests and tours.
+  whereIs(test) {
     for (const m of this.meshes) {
       if (!m.parts) continue;
-      m.parts.forEach((p, i) => m.setColorAt(i, test(p) ? HIGHLIGHT : m.base[i]));
+      const i = m.parts.findIndex(test);
+      if (i < 0) continue;
+      const p = new THREE.Vector3(0.5, 0.5, 0.5).applyMatrix4(m.parts[i].matrix).applyMatrix4(this.root.matrixWorld).project(this.camera);
+      const r = this.renderer.domElement.getBoundingClientRect();
+      return { x: r.left + (p.x + 1) / 2 * r.width, y: r.top + (1 - p.y) / 2 * r.height };
+    }
+    return null;
+  }
+
+  // Every part whose test(part) holds, lit (a rule's text selects what it
+  // made, a shift-click every part of a label); how many.
+  lightWhere(test) {
+    let lit = 0;
+    for (const m of this.meshes) {
+      if (!m.parts) continue;
+      m.parts.forEach((p, i) => {
+        const on = test(p);
+        lit += on ? 1 : 0;
+        m.setColorAt(i, on ? HIGHLIGHT : m.base[i]);
+      });
       m.instanceColor.needsUpdate = true;
     }
     this.selected = null;
     this.draw();
+    return lit;
   }
 }

@@ -28,8 +28,9 @@ try {
 mkdirSync(artifacts, { recursive: true });
 
 const HOUSE = `@scope 10, 8, 6
+bay = 1.2
 house --> split(z){ ~2 : floor | ~1 : I(roof) }
-floor --> split(x){ ~1 : I(wall) | ~1.2 : I(window) | ~1 : I(wall) }
+floor --> split(x){ ~1 : I(wall) | ~bay : I(window) | ~1 : I(wall) }
 `;
 const work = mkdtempSync(join(tmpdir(), 'vern-web-'));
 writeFileSync(join(work, 'house.grm'), HOUSE);
@@ -73,9 +74,29 @@ try {
   const before = await page.evaluate(() => window.vernacular.answer.buildings[0].parts.length);
   check(before === 4, `the page loads and derives the house: ${before} parts (wall, window, wall, roof)`);
   await page.screenshot({ path: join(artifacts, '1-loaded.png') });
+
+  // The constant's slider overrides its value in what is derived, not in the text.
+  const windowWidth = () => page.evaluate(() => {
+    const a = window.vernacular.answer;
+    const p = a.buildings[0].parts.find((q) => a.labels[q.label] === 'window');
+    return p.matrix[0];
+  });
+  const widthBefore = await windowWidth();
+  const sliders = await page.$$eval('#constants input[type=range]', (ls) => ls.map((l) => l.dataset.constant));
+  check(JSON.stringify(sliders) === '["bay"]', `a slider for each constant: ${sliders.join(', ')}`);
+  const n = await page.evaluate(() => window.vernacular.derivations);
+  await page.$eval('#constants input[data-constant=bay]', (e) => { e.value = '2.4'; e.dispatchEvent(new Event('input')); });
+  await derived(n + 1);
+  const widthAfter = await windowWidth();
+  const text = await page.$eval('#text', (e) => e.value);
+  check(widthAfter > widthBefore * 1.3 && text.includes('bay = 1.2'),
+        `moving bay's slider to 2.4 widens the window (${widthBefore.toFixed(2)} -> ${widthAfter.toFixed(2)} m), the text keeps 1.2`);
+  await page.$eval('#constants button', (e) => e.click());  // reset
+  await derived(n + 2);
+  check(Math.abs((await windowWidth()) - widthBefore) < 1e-9, 'reset gives the text\'s value back');
   const pixelsBefore = await page.$eval('#view canvas', (c) => c.toDataURL());
 
-  // An edit: a third wall bay, typed at the end of line 3.
+  // An edit: a third wall bay, typed at the end of line 4.
   await page.focus('#text');
   await page.evaluate(() => {
     const t = document.getElementById('text');
@@ -99,9 +120,21 @@ try {
   // Lit: the line that inserted it and the lines of the rules it came through.
   const said = [Number(/inserted at line (\d+)/.exec(picked)[1]), ...[...picked.matchAll(/\(line (\d+)\)/g)].map((m) => Number(m[1]))];
   const expected = [...new Set(said)].sort();
-  check(JSON.stringify(lit.sort()) === JSON.stringify(expected) && lit.includes(2),
+  check(JSON.stringify(lit.sort()) === JSON.stringify(expected) && lit.includes(3),
         `the rules' lines are lit in the editor: ${lit.join(', ')} (${picked.split('\n')[0]})`);
   await page.screenshot({ path: join(artifacts, '3-picked.png') });
+
+  // A shift-click on a wall lights every wall.
+  const wallAt = await page.evaluate(() => {
+    const s = window.vernacular;
+    return s.viewer.whereIs((e) => s.answer.labels[s.answer.buildings[e.building].parts[e.part].label] === 'wall');
+  });
+  await page.keyboard.down('Shift');
+  await page.mouse.click(wallAt.x, wallAt.y);
+  await page.keyboard.up('Shift');
+  const alike = await page.$eval('#picked', (e) => e.textContent);
+  check(alike === 'every wall: 3 parts', `a shift-click on a wall selects every wall: ${JSON.stringify(alike)}`);
+  await page.screenshot({ path: join(artifacts, '4-every-wall.png') });
 
   // A broken grammar: the error at its line, the last buildings kept.
   await page.evaluate(() => {
@@ -113,11 +146,11 @@ try {
   const errorLine = await page.$eval('#error', (e) => e.dataset.line);
   const errorText = await page.$eval('#error', (e) => e.textContent);
   const badGutter = await page.$$eval('#gutter .bad', (ls) => ls.map((l) => l.textContent));
-  check(errorLine === '2' && /^line 2, column \d+: expected ':'/.test(errorText) && badGutter.join() === '2',
-        `a broken grammar shows its error at line 2: ${JSON.stringify(errorText.split('\n')[0])}`);
+  check(errorLine === '3' && /^line 3, column \d+: expected ':'/.test(errorText) && badGutter.join() === '3',
+        `a broken grammar shows its error at line 3: ${JSON.stringify(errorText.split('\n')[0])}`);
   const stillThere = await page.evaluate(() => window.vernacular.answer.buildings[0].parts.length);
   check(stillThere === 5, 'the last buildings that derived stay in view');
-  await page.screenshot({ path: join(artifacts, '4-error.png') });
+  await page.screenshot({ path: join(artifacts, '5-error.png') });
   check(errors.length === 0, 'no script error on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
   // The file served is never written.
   check(readFileSync(join(work, 'house.grm'), 'utf8') === HOUSE, 'the grammar file is as it was');
