@@ -49,6 +49,11 @@ std::string infer_layout(Bytes input);
 // unless allowed, and nothing written.
 std::string indirect_inputs(Bytes input);
 
+// A request body for serve's /api/derive (serve/derive_request.hpp): the
+// answer is JSON, 200 with buildings or a located error of the grammar's
+// own, or 400 saying why; nothing thrown.
+std::string editor_request(Bytes input);
+
 struct Target {
   std::string_view name;  // also the folder name under fuzz/corpus and fuzz/regressions
   Entry run;
