@@ -47,7 +47,7 @@ int run(int argc, char** argv) {
   if (args.has("--port")) options.port = static_cast<int>(CommandLine::integer(args, "--port", 0, 65535));
   options.web = find_web_folder(args.has("--web") ? std::optional<fs::path>(args.value("--web")) : std::nullopt,
                                 fs::path("/proc/self/exe"));
-  const ServeSession session = open_session(args.positional, example_limits(args));
+  const ServeSession session = open_session(args.positional, example_limits(args), stack_order(args));
   serve(session, options, [&](int port, const std::function<void()>&) {
     // The one line a script waits for: the address.
     std::fprintf(stderr, "serve: http://127.0.0.1:%d/ (%s; Ctrl-C stops)\n", port, session.grammar_name.c_str());

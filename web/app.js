@@ -129,11 +129,53 @@ function show(answer, ms) {
   state.answer = answer;
   state.derivations++;
   viewer.show(answer, $('show-examples').checked ? state.examples : null);
+  checkExamples();
   $('picked').hidden = true;
   const parts = answer.buildings.reduce((n, b) => n + b.parts.length, 0);
   $('status').textContent = `${answer.buildings.length} building${answer.buildings.length === 1 ? '' : 's'}, ${parts} parts, ${Math.round(ms)} ms` +
     (answer.note ? ` (${answer.note})` : '');
 }
+
+// With examples: does the text derive each (check's witness), or where
+// does it fail (check's reason)? Asked once the buildings are drawn, and
+// again after each edit that derives.
+let checking = false, checkAgain = false;
+async function checkExamples() {
+  if (!state.examples) return;
+  if (checking) { checkAgain = true; return; }
+  checking = true;
+  checkAgain = false;
+  try {
+    const response = await fetch('/api/check', { method: 'POST', headers: { 'Content-Type': 'application/json' },
+                                                 body: JSON.stringify({ text: textToDerive() }) });
+    const answer = await response.json();
+    if (answer.ok) showChecks(answer.examples);
+  } finally {
+    checking = false;
+    if (checkAgain) checkExamples();
+  }
+}
+
+function linked(text) {
+  // "split(x) at 24:10": a place in the text, lit when clicked.
+  return text.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;')
+    .replace(/\b(\d+):(\d+)\b/g, '<span class="at" data-line="$1">$1:$2</span>');
+}
+
+function showChecks(examples) {
+  const derivable = examples.filter((e) => e.derivable).length;
+  $('checks').hidden = false;
+  $('checks-summary').textContent = `examples: ${derivable} of ${examples.length} derivable`;
+  $('checks-summary').className = derivable === examples.length ? 'yes' : 'no';
+  state.checks = examples;
+  $('checks-list').innerHTML = examples.map((e) =>
+    `<li class="${e.derivable ? 'yes' : 'no'}">${linked(e.name)}: ${e.derivable ? 'derivable' : 'not derivable'}` +
+    `<pre>${linked(e.derivable ? e.witness.join('\n') : e.reason)}</pre></li>`).join('');
+}
+$('checks-list').addEventListener('click', (event) => {
+  const at = event.target.closest('.at');
+  if (at) editor.light([Number(at.dataset.line)]);
+});
 
 function partOf(entry) {
   return state.answer.buildings[entry.building].parts[entry.part];

@@ -91,7 +91,7 @@ export class Viewer {
       depth = Math.max(depth, b.size[1]);
       height = Math.max(height, b.size[2]);
     });
-    const width = Math.max(x - GAP, 1);
+    let width = Math.max(x - GAP, 1);
     for (const [label, parts] of byLabel) {
       const name = answer.labels[label];
       const material = new THREE.MeshLambertMaterial({ color: 0xffffff, side: THREE.DoubleSide });
@@ -133,7 +133,10 @@ export class Viewer {
           this.meshes.push(mesh);
         }
         ex += (w - minX) + GAP;
+        height = Math.max(height, ...e.parts.map((p) => p.max[2]));
+        depth = Math.max(depth, y + Math.max(...e.parts.map((p) => p.max[1])));
       }
+      width = Math.max(width, ex - GAP);
     }
     const frame = answer.buildings.length + ':' + (examples ? examples.list.length : 0);
     if (frame !== this.framed) {

@@ -2,38 +2,18 @@
 
 #include <nlohmann/json.hpp>
 
-#include <map>
-#include <optional>
-
-#include "api/api_data.hpp"
 #include "base/error.hpp"
 #include "forward/program.hpp"
+#include "graph/label.hpp"
 #include "graph/parser.hpp"
 #include "io/palette.hpp"
-#include "graph/label.hpp"
+#include "serve/api_json.hpp"
 
 namespace vern {
 
 namespace {
 
 using nlohmann::json;
-
-// The name errors give the text sent: they name no file, only its place.
-constexpr const char* kEditor = "editor";
-
-ApiAnswer bad_request(const std::string& message) {
-  return {400, json{{"ok", false}, {"error", {{"kind", "usage"}, {"message", message}}}}.dump(-1, ' ', false, json::error_handler_t::replace)};
-}
-
-json error_json(const Error& e) {
-  const vernacular::Error located = vernacular::detail::error_of(e);
-  return {{"kind", vernacular::to_string(located.kind)},
-          {"line", located.location.line},
-          {"column", located.location.column},
-          {"message", located.message},
-          {"hint", located.hint},
-          {"text", std::string(e.what())}};
-}
 
 json mesh_json(const Mesh& mesh) {
   json positions = json::array(), indices = json::array();
@@ -91,7 +71,7 @@ ApiAnswer derive_request(std::string_view request, const ServeSession& session) 
     count = in["count"].get<int>();
   }
   try {
-    const Grammar grammar = parse_grammar(text, kEditor);
+    const Grammar grammar = parse_grammar(text, kEditorSource);
     const Program program = compile(grammar);
     json buildings = json::array();
     std::vector<std::string> labels;
@@ -123,17 +103,16 @@ ApiAnswer derive_request(std::string_view request, const ServeSession& session) 
     }
     json rules = json::array();
     for (const Rule& r : grammar.rules) rules.push_back({{"label", r.label}, {"line", r.loc.line}});
-    return {200, json{{"ok", true},
+    return {200, dumped(json{{"ok", true},
                       {"labels", labels},
                       {"colours", std::move(colours)},
                       {"meshes", std::move(meshes)},
                       {"rules", std::move(rules)},
                       {"buildings", std::move(buildings)},
-                      {"note", note}}
-                     .dump(-1, ' ', false, json::error_handler_t::replace)};
+                      {"note", note}})};
   } catch (const Error& e) {
     // The grammar's own fault, as the editor shows it: still an answer.
-    return {200, json{{"ok", false}, {"error", error_json(e)}}.dump(-1, ' ', false, json::error_handler_t::replace)};
+    return {200, dumped(json{{"ok", false}, {"error", error_json(e)}})};
   }
 }
 
@@ -151,9 +130,8 @@ std::string session_json(const ServeSession& session) {
       const Rgb c = label_colour(label_as_word(b.label));
       colours[b.label] = {c.red, c.green, c.blue};
     }
-  return json{{"name", session.grammar_name}, {"text", session.grammar_text}, {"examples", std::move(examples)},
-              {"colours", std::move(colours)}}
-      .dump(-1, ' ', false, json::error_handler_t::replace);
+  return dumped(json{{"name", session.grammar_name}, {"text", session.grammar_text}, {"examples", std::move(examples)},
+                     {"colours", std::move(colours)}});
 }
 
 }  // namespace vern

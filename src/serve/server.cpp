@@ -7,6 +7,7 @@
 
 #include "base/error.hpp"
 #include "base/input_file.hpp"
+#include "serve/check_request.hpp"
 #include "serve/derive_request.hpp"
 #include "serve/web_files.hpp"
 
@@ -41,6 +42,11 @@ void serve(const ServeSession& session, const ServeOptions& options,
   });
   server.Post(R"(/api/derive)", [&](const httplib::Request& req, httplib::Response& res) {
     const ApiAnswer answer = derive_request(req.body, session);
+    res.status = answer.status;
+    res.set_content(answer.body, "application/json");
+  });
+  server.Post(R"(/api/check)", [&](const httplib::Request& req, httplib::Response& res) {
+    const ApiAnswer answer = check_request(req.body, session);
     res.status = answer.status;
     res.set_content(answer.body, "application/json");
   });

@@ -4,6 +4,7 @@
 //   GET  /, /app.js, ...    the page (web_files.hpp)
 //   GET  /api/session       what the page starts with (session_json)
 //   POST /api/derive        derive the editor's text (derive_request.hpp)
+//   POST /api/check         does it derive each example, how (check_request.hpp)
 // Anything else is 404; a request body past 4 MiB is 413. Requests are
 // answered on a pool of threads, so several tabs work at once and a slow
 // derivation holds up no other request.

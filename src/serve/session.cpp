@@ -12,8 +12,10 @@ namespace vern {
 
 namespace fs = std::filesystem;
 
-ServeSession open_session(const std::vector<std::string>& args, const ExampleLimits& limits) {
+ServeSession open_session(const std::vector<std::string>& args, const ExampleLimits& limits,
+                          const std::vector<std::string>& stack) {
   ServeSession session;
+  session.stack = stack;
   std::vector<std::string> example_args;
   for (const std::string& a : args) {
     if (fs::path(a).extension() == ".grm") {
@@ -45,6 +47,7 @@ ServeSession open_session(const std::vector<std::string>& args, const ExampleLim
   // Examples alone: their grammar, as infer writes it, is the one edited.
   InferOptions options;
   options.tolerance = limits.tolerance;
+  options.stack = stack;
   options.primitives = &session.primitives;
   Inference inferred = infer(session.examples, options);
   session.grammar_name = "inferred.grm";

@@ -32,12 +32,19 @@ struct ServeSession {
   // Parts an answer holds at most: past them the buildings that reach it,
   // and a note (a browser draws a few hundred thousand at a time).
   std::uint64_t most_parts = 300'000;
+  // The inference view's check of each example: within this many steps
+  // (check's own default is ten million; a page asks again at each edit).
+  std::uint64_t check_steps = 1'000'000;
+  // The painting order of overlapping parts (serve --stack, as infer's).
+  std::vector<std::string> stack;
 };
 
 // The session of `serve ARGS...`: at most one .grm file, and example files
-// or folders (infer's). With examples and no grammar, the grammar is
-// inferred from them. Throws vern::Error (Usage) for two grammars or
-// nothing given, and as infer and the grammar reader do.
-ServeSession open_session(const std::vector<std::string>& args, const ExampleLimits& limits);
+// or folders (infer's), whose overlapping parts are painted in `stack`'s
+// order. With examples and no grammar, the grammar is inferred from them.
+// Throws vern::Error (Usage) for two grammars or nothing given, and as
+// infer and the grammar reader do.
+ServeSession open_session(const std::vector<std::string>& args, const ExampleLimits& limits,
+                          const std::vector<std::string>& stack = {});
 
 }  // namespace vern
