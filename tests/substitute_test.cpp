@@ -42,5 +42,34 @@ TEST(Substitute, UntilSettledReachesWhatAReplacementHolds) {
             "split(x){ ~1 : split(y){ ~1 : I(d) | ~1 : I(c) } | ~1 : I(c) }");
 }
 
+TEST(Substitute, AGraphHundredsOfThousandsDeepIsRebuiltWithoutRunningOutOfStack) {
+  // Inference met one some ten thousand deep (378 CMP facades at
+  // --tolerance 0.045), where a recursion ran the thread's stack out.
+  Grammar g;
+  const auto roots = test::example_graphs(g, {"split(x){ ~1 : I(a) | ~1 : I(b) }", "I(a)", "I(d)"});
+  const Split outer = std::get<Split>(g.op(roots[0]));
+  NodeId deep = roots[0];
+  constexpr int kDepth = 300'000;
+  for (int i = 0; i < kDepth; ++i) {
+    Split s = outer;
+    s.parts[0].child = deep;
+    deep = g.intern({s, {}});
+  }
+  std::vector<NodeId> replace(g.node_count(), kNoReplacement);
+  replace[roots[1]] = roots[2];
+  const NodeId out = substitute(g, deep, replace);
+  ASSERT_NE(out, deep);
+  // Down the first parts: kDepth + 1 splits, then the replacement.
+  NodeId at = out;
+  int splits = 0;
+  while (const Split* s = std::get_if<Split>(&g.op(at))) {
+    EXPECT_EQ(s->parts[1].child, std::get<Split>(g.op(roots[0])).parts[1].child);  // I(b) kept
+    at = s->parts[0].child;
+    ++splits;
+  }
+  EXPECT_EQ(splits, kDepth + 1);
+  EXPECT_EQ(at, roots[2]);
+}
+
 }  // namespace
 }  // namespace vern
