@@ -43,8 +43,8 @@ TEST(Substitute, UntilSettledReachesWhatAReplacementHolds) {
 }
 
 TEST(Substitute, AGraphHundredsOfThousandsDeepIsRebuiltWithoutRunningOutOfStack) {
-  // Inference met one some ten thousand deep (378 CMP facades at
-  // --tolerance 0.045), where a recursion ran the thread's stack out.
+  // Inference met one deep enough to run the thread's stack out in a
+  // recursion (378 CMP facades at --tolerance 0.045).
   Grammar g;
   const auto roots = test::example_graphs(g, {"split(x){ ~1 : I(a) | ~1 : I(b) }", "I(a)", "I(d)"});
   const Split outer = std::get<Split>(g.op(roots[0]));
