@@ -97,7 +97,11 @@ async function derive() {
   const asked = ++state.asked;
   const started = performance.now();
   showConstants();
-  const body = JSON.stringify({ text: textToDerive(), seed: Number($('seed').value) || 0, count: Math.min(64, Math.max(1, Number($('count').value) || 1)) });
+  const request = { text: textToDerive(), seed: Number($('seed').value) || 0, count: Math.min(64, Math.max(1, Number($('count').value) || 1)) };
+  // A plot given on all three axes replaces the grammar's @scope.
+  const plot = ['plot-x', 'plot-y', 'plot-z'].map((id) => Number($(id).value));
+  if (plot.every((v) => v > 0)) request.size = plot;
+  const body = JSON.stringify(request);
   try {
     const response = await fetch('/api/derive', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body });
     const answer = await response.json();
@@ -223,6 +227,7 @@ $('previous').addEventListener('click', () => step(-1));
 $('next').addEventListener('click', () => step(1));
 $('seed').addEventListener('input', () => schedule());
 $('count').addEventListener('input', () => schedule());
+for (const id of ['plot-x', 'plot-y', 'plot-z']) $(id).addEventListener('input', () => schedule());
 $('show-examples').addEventListener('change', () => state.answer && viewer.show(state.answer, $('show-examples').checked ? state.examples : null));
 $('save').addEventListener('click', () => {
   // A copy where the browser saves files: the server never writes the grammar it was given.

@@ -2,6 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <optional>
+
 #include "base/error.hpp"
 #include "forward/program.hpp"
 #include "graph/label.hpp"
@@ -70,6 +73,14 @@ ApiAnswer derive_request(std::string_view request, const ServeSession& session) 
       return bad_request("\"count\" must be a whole number from 1 to " + std::to_string(kMostBuildings));
     count = in["count"].get<int>();
   }
+  std::optional<glm::dvec3> plot;
+  if (in.contains("size")) {
+    const json& size = in["size"];
+    if (!size.is_array() || size.size() != 3 ||
+        !std::all_of(size.begin(), size.end(), [](const json& v) { return v.is_number() && v.get<double>() > 0 && v.get<double>() <= 1e6; }))
+      return bad_request("\"size\" must be the plot's three sizes in metres, each > 0 and at most 1,000,000");
+    plot = glm::dvec3(size[0].get<double>(), size[1].get<double>(), size[2].get<double>());
+  }
   try {
     const Grammar grammar = parse_grammar(text, kEditorSource);
     const Program program = compile(grammar);
@@ -82,6 +93,7 @@ ApiAnswer derive_request(std::string_view request, const ServeSession& session) 
       options.seed = seed + static_cast<std::uint64_t>(i);
       options.limits = session.limits;
       options.trace = true;
+      options.size = plot;
       const Derivation d = derive(program, options);
       labels = d.labels;
       buildings.push_back(building_json(d, options.seed));

@@ -1,6 +1,7 @@
 // The editor's one question: derive this text with these seeds.
 //
-// Request (JSON): {"text": "...", "seed": 1, "count": 3}. Answer (JSON):
+// Request (JSON): {"text": "...", "seed": 1, "count": 3, "size": [x, y, z]}
+// (size: the plot, instead of the grammar's @scope; optional). Answer (JSON):
 //   {"ok": true, "labels": [...], "colours": {label: [r, g, b]},
 //    "meshes": {label: {"positions": [x, y, z, ...], "indices": [...]}},
 //    "rules": [{"label": "floor", "line": 4}, ...],

@@ -94,6 +94,17 @@ TEST(DeriveRequest, PastTheSessionsPartsTheRestOfThePageIsLeftOutAndSaid) {
   EXPECT_EQ(json::parse(derive_request(rows, session).body)["note"], "");
 }
 
+TEST(DeriveRequest, APlotSizeGivenReplacesTheGrammarsScope) {
+  const json a = ask(json{{"text", kHouse}, {"size", {20, 8, 6}}}.dump());
+  ASSERT_TRUE(a["ok"].get<bool>()) << a.dump();
+  EXPECT_EQ(a["buildings"][0]["size"], json({20.0, 8.0, 6.0}));
+  EXPECT_DOUBLE_EQ(a["buildings"][0]["parts"][3]["matrix"][0].get<double>(), 20.0);  // the roof spans it
+  for (const char* bad : {"[1, 2]", "[1, 2, 0]", "[1, -2, 3]", "\"big\"", "[1, 2, 1e9]"}) {
+    const json r = ask("{\"text\": \"a --> nil\", \"size\": " + std::string(bad) + "}", 400);
+    EXPECT_NE(r["error"]["message"].get<std::string>().find("size"), std::string::npos) << bad;
+  }
+}
+
 TEST(DeriveRequest, RequestsThatAreNotTheQuestionAreRefusedSayingWhy) {
   for (const char* bad : {"", "not json", "[1, 2]", "{\"seed\": 1}", "{\"text\": 3}", "{\"text\": \"a --> nil\", \"seed\": -1}",
                           "{\"text\": \"a --> nil\", \"count\": 0}", "{\"text\": \"a --> nil\", \"count\": 65}",

@@ -102,6 +102,19 @@ try {
   check(Math.abs((await windowWidth()) - widthBefore) < 1e-9, 'reset gives the text\'s value back');
   const pixelsBefore = await page.$eval('#view canvas', (c) => c.toDataURL());
 
+  // A plot given in the header replaces the grammar's @scope.
+  const before2 = await page.evaluate(() => window.vernacular.derivations);
+  await page.$eval('#plot-y', (e) => { e.value = '8'; });
+  await page.$eval('#plot-z', (e) => { e.value = '6'; });
+  await page.$eval('#plot-x', (e) => { e.value = '20'; e.dispatchEvent(new Event('input')); });
+  await derived(before2 + 1);
+  const plotSize = await page.evaluate(() => window.vernacular.answer.buildings[0].size);
+  check(JSON.stringify(plotSize) === '[20,8,6]', `a plot of 20 x 8 x 6 given in the header: ${JSON.stringify(plotSize)}`);
+  await page.$eval('#plot-x', (e) => { e.value = ''; e.dispatchEvent(new Event('input')); });
+  await derived(before2 + 2);
+  const scopeSize = await page.evaluate(() => window.vernacular.answer.buildings[0].size);
+  check(JSON.stringify(scopeSize) === '[10,8,6]', `an empty plot size is the grammar's @scope: ${JSON.stringify(scopeSize)}`);
+
   // An edit: a third wall bay, typed at the end of line 4.
   await page.focus('#text');
   await page.evaluate(() => {
