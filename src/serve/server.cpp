@@ -60,8 +60,11 @@ void serve(const ServeSession& session, const ServeOptions& options,
     res.set_header("X-Content-Type-Options", "nosniff");
   });
   server.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+    // httplib reads a body sent as a form (any request without a JSON
+    // Content-Type) up to 8 KiB only, and says 413 past it.
     if (res.status == 413)
-      res.set_content("request too large (at most 4 MiB)\n", "text/plain; charset=utf-8");
+      res.set_content("request too large: at most 4 MiB sent as Content-Type: application/json (8 KiB as a form)\n",
+                      "text/plain; charset=utf-8");
     else if (res.body.empty())
       res.set_content(std::to_string(res.status) + ": " + req.path + "\n", "text/plain; charset=utf-8");
   });
