@@ -15,6 +15,27 @@ NodeId split_of(Grammar& g, Axis axis, std::vector<std::pair<double, NodeId>> pa
   return g.intern({std::move(s), {}});
 }
 
+// A chain `depth` splits deep, each holding the next and a leaf.
+NodeId chain(Grammar& g, int depth, const char* leaf) {
+  Primitive p;
+  p.label = g.label_id(leaf);
+  NodeId at = g.intern({p, {}});
+  const NodeId side = g.intern({Nil{}, {}});
+  for (int i = 0; i < depth; ++i) at = split_of(g, Axis::X, {{1, at}, {1, side}});
+  return at;
+}
+
+TEST(Structural, AGraphHundredsOfThousandsDeepHashesWithoutRunningOutOfStack) {
+  // A recursion ran the stack out tens of thousands deep (graphs inference
+  // made of 378 CMP facades).
+  Grammar a, b;
+  const NodeId deep_a = chain(a, 300'000, "wall"), deep_b = chain(b, 300'000, "wall");
+  EXPECT_EQ(structural_hash(a, deep_a), structural_hash(b, deep_b));
+  Grammar c;
+  EXPECT_NE(structural_hash(a, deep_a), structural_hash(c, chain(c, 300'000, "roof")));
+  EXPECT_NE(structural_hash(a, deep_a), structural_hash(c, chain(c, 299'999, "wall")));
+}
+
 TEST(Structural, InterningSharesEqualSubgraphs) {
   Grammar g;
   const NodeId rect = g.intern({Primitive{g.label_id("rect")}, {}});

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <utility>
 
+#include "base/error.hpp"
 #include "graph/parser.hpp"
 #include "graph/structural.hpp"
 
@@ -54,6 +55,26 @@ class Builder {
 std::string write(const Builder& b, const WriteOptions& options = {}) { return write_grammar(b.g, options); }
 
 // ---- exact text ----
+
+TEST(Writer, AGrammarNestedDeeperThanTheStackHoldsIsALimitSaidNotACrash) {
+  Grammar g;
+  Primitive p;
+  p.label = g.label_id("wall");
+  NodeId at = g.intern({p, {}});
+  for (int i = 0; i < 300'000; ++i) {
+    Split s;
+    s.axis = Expr::axis(Axis::X);
+    s.parts.push_back({{Expr::number(1), true}, at});
+    at = g.intern({std::move(s), {}});
+  }
+  try {
+    write_operation(g, at, {});
+    FAIL() << "written";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Limit);
+    EXPECT_NE(std::string(e.what()).find("nest deeper than this thread's"), std::string::npos) << e.what();
+  }
+}
 
 TEST(Writer, ShortSplitStaysOnOneLine) {
   Builder b;

@@ -169,16 +169,34 @@ std::size_t shallow_hash(const Operation& op) {
 }
 
 std::size_t structural_hash(const Grammar& g, NodeId node) {
+  // Children before parents on a stack of its own: a graph tens of
+  // thousands deep (inference makes them) ran a recursion out of stack.
   std::unordered_map<NodeId, std::size_t> memo;
-  std::function<std::size_t(NodeId)> deep = [&](NodeId id) -> std::size_t {
-    if (auto it = memo.find(id); it != memo.end()) return it->second;
-    const std::size_t h = hash_operation(
-        g.op(id), deep, [&](LabelId l) { return std::hash<std::string>{}(g.label(l)); },
-        [&](RuleId r) { return std::hash<std::string>{}(g.rules[r].label); });
-    memo.emplace(id, h);
-    return h;
-  };
-  return deep(node);
+  std::vector<NodeId> todo{node};
+  const auto label = [&](LabelId l) { return std::hash<std::string>{}(g.label(l)); };
+  const auto rule = [&](RuleId r) { return std::hash<std::string>{}(g.rules[r].label); };
+  while (!todo.empty()) {
+    const NodeId id = todo.back();
+    if (memo.contains(id)) {
+      todo.pop_back();
+      continue;
+    }
+    bool waiting = false;
+    hash_operation(
+        g.op(id),
+        [&](NodeId c) {
+          if (!memo.contains(c)) {
+            todo.push_back(c);
+            waiting = true;
+          }
+          return std::size_t{0};
+        },
+        label, rule);
+    if (waiting) continue;
+    todo.pop_back();
+    memo.emplace(id, hash_operation(g.op(id), [&](NodeId c) { return memo.at(c); }, label, rule));
+  }
+  return memo.at(node);
 }
 
 std::vector<std::size_t> structural_hashes(const Grammar& g) {

@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "base/number_format.hpp"
+#include "base/stack_guard.hpp"
 #include "base/overload.hpp"
 #include "graph/label.hpp"
 
@@ -345,6 +346,13 @@ class OpWriter {
 
   void op(Layout& out, NodeId id) const {
     if (id >= g_.node_count()) cannot_write("node " + std::to_string(id) + " does not exist");
+    // Operations nest in the text as in the graph; one nested deeper than
+    // this thread's stack holds is a limit said, not a crash.
+    if (stack_.exhausted()) [[unlikely]]
+      fail(ErrorKind::Limit, "", {},
+           "cannot write this grammar: its operations nest deeper than this thread's " + stack_.size_text() +
+               " stack holds",
+           "a grammar this deep is a bug of whatever made it; please report it with the input");
     std::visit(
         Overload{
             [&](const Split& s) {
@@ -472,6 +480,7 @@ class OpWriter {
 
   const Grammar& g_;
   const std::vector<std::string>& params_;
+  const StackGuard& stack_ = StackGuard::for_this_thread();
 };
 
 bool is_one(const Expr& e) { return e.literal() == 1.0; }
