@@ -69,6 +69,38 @@ TEST(Derive, TracedTerminalsSayWhatInsertedThemAndThroughWhichRules) {
   EXPECT_EQ(traced.traces[2].rules, std::vector<RuleId>{0});
 }
 
+TEST(Derive, TracedTerminalsSayWhichPartsAndTilesTheyLieIn) {
+  const Grammar g = parse_grammar(
+      "@scope 9, 4, 6\n"
+      "house --> split(z){ ~1 : floor | ~1 : floor | ~1 : I(roof) }\n"
+      "floor --> repeatN(x, 3){ split(x){ ~1 : I(wall) | ~1 : I(window) } }\n",
+      "g.grm");
+  DeriveOptions options;
+  options.trace = true;
+  const Derivation d = derive(g, options);
+  ASSERT_EQ(d.terminals.size(), 13u);  // 2 floors x 3 bays x 2, and the roof
+  const auto& window = d.traces[3];  // floor 0, bay 1, its window
+  EXPECT_EQ(d.labels[d.terminals[3].label], "window");
+  ASSERT_EQ(window.path.size(), 3u);
+  EXPECT_EQ(window.path[0].axis, Axis::Z);
+  EXPECT_EQ(window.path[0].index, 0u);  // the first floor
+  EXPECT_EQ(window.path[1].axis, Axis::X);
+  EXPECT_EQ(window.path[1].index, 1u);  // the second bay
+  EXPECT_EQ(window.path[2].index, 1u);  // the window half of it
+  // The same bay of the other floor: another storey, the same column.
+  const auto& above = d.traces[9];
+  EXPECT_EQ(d.labels[d.terminals[9].label], "window");
+  EXPECT_EQ(above.path[0].index, 1u);
+  EXPECT_EQ(above.path[1], window.path[1]);
+  EXPECT_EQ(d.traces[12].path.size(), 1u);  // the roof: the third part of the split along z
+  EXPECT_EQ(d.traces[12].path[0].index, 2u);
+  // Without tracing nothing is recorded, and the buildings are the same.
+  options.trace = false;
+  const Derivation plain = derive(g, options);
+  EXPECT_TRUE(plain.traces.empty());
+  for (std::size_t i = 0; i < plain.terminals.size(); ++i) EXPECT_EQ(plain.terminals[i].scope, d.terminals[i].scope);
+}
+
 TEST(Derive, AbsoluteSizesComeFirstAndRelativeShareTheRest) {
   const auto b = boxes(derive_text("p --> split(y){ 1 : I(a) | ~1 : I(b) | ~3 : I(c) | 2 : I(d) }", {1, 11, 1}));
   ASSERT_EQ(b.size(), 4u);

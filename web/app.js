@@ -185,15 +185,37 @@ function partOf(entry) {
   return state.answer.buildings[entry.building].parts[entry.part];
 }
 
+// A part's storey: the innermost split part or repeat tile it lies in
+// along z ("op:index"). Its column: the parts and tiles along x or y it
+// lies in below that (the bay of a row, and the window's half of the bay),
+// which the same bay of every storey shares. null when there is none.
+function tag(part, horizontal) {
+  let storey = -1;
+  part.path.forEach(([, , axis], i) => { if (axis === 2) storey = i; });
+  if (!horizontal) return storey < 0 ? null : `${part.path[storey][0]}:${part.path[storey][1]}`;
+  const below = part.path.slice(storey + 1).filter(([, , axis]) => axis !== 2).map(([op, index]) => `${op}:${index}`);
+  return below.length ? below.join('/') : null;
+}
+
+// Alike parts, lit: every part of the picked one's label (in every
+// building), or those of them in its storey or its column (of its building:
+// the same part or tile of the same split or repeat along z, or along x or y).
+function selectAlike(entry, kind) {
+  const picked = partOf(entry);
+  const key = kind === 'storey' ? tag(picked, false) : kind === 'column' ? tag(picked, true) : null;
+  const count = viewer.lightWhere((e) => {
+    const p = partOf(e);
+    if (p.label !== picked.label) return false;
+    if (kind === 'label') return true;  // in every building
+    return e.building === entry.building && tag(p, kind === 'column') === key;
+  });
+  const what = kind === 'label' ? '' : kind === 'storey' ? ' in its storey' : ' in its column';
+  $('picked').hidden = false;
+  $('picked').textContent = `every ${state.answer.labels[picked.label]}${what}: ${count} part${count === 1 ? '' : 's'}`;
+}
+
 function showPicked(entry, event) {
-  if (entry && event && event.shiftKey) {
-    // Alike parts: every part with this one's label, in every building.
-    const label = partOf(entry).label;
-    const count = viewer.lightWhere((e) => partOf(e).label === label);
-    $('picked').hidden = false;
-    $('picked').textContent = `every ${state.answer.labels[label]}: ${count} part${count === 1 ? '' : 's'}`;
-    return;
-  }
+  if (entry && event && event.shiftKey) return selectAlike(entry, 'label');
   if (!entry) {
     $('picked').hidden = true;
     editor.light([]);
@@ -206,6 +228,17 @@ function showPicked(entry, event) {
     `made by: ${part.chain}\ninserted at line ${part.at[0]}, column ${part.at[1]}` +
     `\nrules: ${rules.map((r) => r.label + ' (line ' + r.line + ')').join(' > ')}`;
   editor.light([part.at[0], ...rules.map((r) => r.line)]);
+  // Select alike parts from here.
+  const buttons = document.createElement('div');
+  const name = state.answer.labels[part.label];
+  for (const [kind, text] of [['label', `every ${name}`], ['storey', `${name}s of its storey`], ['column', `${name}s of its column`]]) {
+    if (kind !== 'label' && tag(part, kind === 'column') === null) continue;
+    const b = Object.assign(document.createElement('button'), { textContent: text });
+    b.dataset.select = kind;
+    b.addEventListener('click', () => selectAlike(entry, kind));
+    buttons.append(b, ' ');
+  }
+  $('picked').append(buttons);
 }
 
 // The cursor on a line lights the parts made there: inserted by it, or

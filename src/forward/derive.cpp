@@ -331,7 +331,13 @@ class Deriver {
     for (std::size_t i = 0; i < op.count; ++i) {
       const double v = op.literal ? parts[i].size.literal : share[i];
       const double len = parts[i].relative ? v * rel_unit : v * abs_scale;
-      if (len > 0) child(parts[i].child, s, a, from, len, i, key);
+      if (len > 0) {
+        if (opt_.trace) [[unlikely]]
+          path_.push_back({id, static_cast<std::uint32_t>(i), a});
+        child(parts[i].child, s, a, from, len, i, key);
+        if (opt_.trace) [[unlikely]]
+          path_.pop_back();
+      }
       from += len;
     }
   }
@@ -364,7 +370,13 @@ class Deriver {
     count_operation(id, count);
     const double length = s.extent(a);
     const double tile = length / static_cast<double>(count);
-    for (std::uint64_t i = 0; i < count; ++i) this->child(child, s, a, tile * static_cast<double>(i), tile, i, key);
+    for (std::uint64_t i = 0; i < count; ++i) {
+      if (opt_.trace) [[unlikely]]
+        path_.push_back({id, static_cast<std::uint32_t>(i), a});
+      this->child(child, s, a, tile * static_cast<double>(i), tile, i, key);
+      if (opt_.trace) [[unlikely]]
+        path_.pop_back();
+    }
   }
 
   void choose(const ChooseOp& op, NodeId id, const Scope& s, std::uint64_t key, RandomStream& rng) {
@@ -496,6 +508,7 @@ class Deriver {
     t.at = loc(id);
     for (const Frame& f : chain_) t.rules.push_back(f.rule);
     t.chain = describe_chain();
+    t.path = path_;
     out_.traces.push_back(std::move(t));
   }
 
@@ -523,6 +536,7 @@ class Deriver {
   std::uint64_t operations_ = 0;
   std::uint64_t terminals_left_ = opt_.limits.max_terminals;
   const StackGuard& stack_ = StackGuard::for_this_thread();
+  std::vector<TerminalTrace::Step> path_;  // with DeriveOptions::trace: the parts and tiles entered
 };
 
 void Deriver::node(const Target& t, const Scope& s, std::uint64_t slot, std::uint64_t parent_key) {

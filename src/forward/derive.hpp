@@ -52,6 +52,16 @@ struct TerminalTrace {
   SourceLoc at;                // the I(...) or colour(...) that inserted it
   std::vector<RuleId> rules;   // the rule of each call, outermost first (an alternative is a rule of its own)
   std::string chain;           // those calls with their arguments' values
+  // Each split part and repeat tile it lies in, outermost first: the
+  // operation, which part or tile, along which axis. Parts of one storey
+  // share an entry along z, parts of one column one along x.
+  struct Step {
+    NodeId op = 0;
+    std::uint32_t index = 0;
+    Axis axis = Axis::X;
+    friend bool operator==(const Step&, const Step&) = default;
+  };
+  std::vector<Step> path;
 };
 
 struct Derivation {

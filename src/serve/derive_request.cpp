@@ -49,6 +49,10 @@ json building_json(const Derivation& d, std::uint64_t seed) {
       part["at"] = {trace.at.line, trace.at.column};
       part["rules"] = trace.rules;
       part["chain"] = trace.chain;
+      json path = json::array();
+      for (const TerminalTrace::Step& step : trace.path)
+        path.push_back({step.op, step.index, static_cast<int>(step.axis)});
+      part["path"] = std::move(path);
     }
     parts.push_back(std::move(part));
   }

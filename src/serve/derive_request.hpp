@@ -8,10 +8,13 @@
 //    "buildings": [{"seed": 1, "size": [x, y, z],
 //                   "parts": [{"label": i, "matrix": [16, column-major],
 //                              "at": [line, column], "rules": [rule, ...],
-//                              "chain": "building > floor(2)"}]}],
+//                              "chain": "building > floor(2)",
+//                              "path": [[op, index, axis], ...]}]}],
 //    "note": ""}  (or which buildings were left out past the session's most_parts)
 // z up, as grammars are; a part's matrix maps its primitive's unit box
-// into place. Or, when the text does not read or derive:
+// into place; its path, the split parts and repeat tiles it lies in
+// (TerminalTrace::Step: operation, index, axis 0/1/2), says which storey
+// and column it is in. Or, when the text does not read or derive:
 //   {"ok": false, "error": {"kind": "input", "line": 3, "column": 14,
 //                           "message": "...", "hint": "...", "text": "..."}}
 // at the line and column of the text sent. A grammar that runs away stops

@@ -155,6 +155,31 @@ try {
   check(alike === 'every wall: 3 parts', `a shift-click on a wall selects every wall: ${JSON.stringify(alike)}`);
   await page.screenshot({ path: join(artifacts, '4-every-wall.png') });
 
+  // Storeys and columns: a grammar of two floors of three bays; a click on
+  // a window, then its storey (3 windows) and its column (2 windows).
+  await page.evaluate(() => {
+    const t = document.getElementById('text');
+    t.value = '@scope 9, 4, 6\nhouse --> split(z){ ~1 : floor | ~1 : floor | ~1 : I(roof) }\n' +
+              'floor --> repeatN(x, 3){ split(x){ ~1 : I(wall) | ~1 : I(window) } }\n';
+    t.dispatchEvent(new Event('input'));
+  });
+  await page.waitForFunction(() => window.vernacular.answer.buildings[0].parts.length === 13, { timeout: 20000 });
+  const windowAt = await page.evaluate(() => {
+    const s = window.vernacular;
+    return s.viewer.whereIs((e) => s.answer.labels[s.answer.buildings[e.building].parts[e.part].label] === 'window');
+  });
+  await page.mouse.click(windowAt.x, windowAt.y);
+  await page.waitForSelector('#picked button[data-select=storey]', { timeout: 10000 });
+  await page.click('#picked button[data-select=storey]');
+  const storey = await page.$eval('#picked', (e) => e.textContent);
+  check(storey === 'every window in its storey: 3 parts', `a window's storey: ${JSON.stringify(storey)}`);
+  await page.mouse.click(windowAt.x, windowAt.y);
+  await page.waitForSelector('#picked button[data-select=column]', { timeout: 10000 });
+  await page.click('#picked button[data-select=column]');
+  const column = await page.$eval('#picked', (e) => e.textContent);
+  check(column === 'every window in its column: 2 parts', `a window's column: ${JSON.stringify(column)}`);
+  await page.screenshot({ path: join(artifacts, '5-column.png') });
+
   // A broken grammar: the error at its line, the last buildings kept.
   await page.evaluate(() => {
     const t = document.getElementById('text');
@@ -165,11 +190,11 @@ try {
   const errorLine = await page.$eval('#error', (e) => e.dataset.line);
   const errorText = await page.$eval('#error', (e) => e.textContent);
   const badGutter = await page.$$eval('#gutter .bad', (ls) => ls.map((l) => l.textContent));
-  check(errorLine === '3' && /^line 3, column \d+: expected ':'/.test(errorText) && badGutter.join() === '3',
-        `a broken grammar shows its error at line 3: ${JSON.stringify(errorText.split('\n')[0])}`);
+  check(errorLine === '2' && /^line 2, column \d+: expected ':'/.test(errorText) && badGutter.join() === '2',
+        `a broken grammar shows its error at line 2: ${JSON.stringify(errorText.split('\n')[0])}`);
   const stillThere = await page.evaluate(() => window.vernacular.answer.buildings[0].parts.length);
-  check(stillThere === 5, 'the last buildings that derived stay in view');
-  await page.screenshot({ path: join(artifacts, '5-error.png') });
+  check(stillThere === 13, 'the last buildings that derived stay in view');
+  await page.screenshot({ path: join(artifacts, '6-error.png') });
   check(errors.length === 0, 'no script error on the page' + (errors.length ? ': ' + errors.join('; ') : ''));
   // The file served is never written.
   check(readFileSync(join(work, 'house.grm'), 'utf8') === HOUSE, 'the grammar file is as it was');
@@ -186,7 +211,7 @@ try {
   await summary('examples: 10 of 10 derivable');
   check(true, 'serve EXAMPLES/ starts from their inferred grammar, which derives all ten');
   await view.$eval('#checks', (e) => { e.open = true; });
-  await view.screenshot({ path: join(artifacts, '6-examples-checked.png') });
+  await view.screenshot({ path: join(artifacts, '7-examples-checked.png') });
   await view.evaluate(() => {
     const t = document.getElementById('text');
     t.value = 'building --> I(rect)\n';
@@ -195,7 +220,7 @@ try {
   await summary('examples: 0 of 10 derivable');
   const reasons = await view.$$eval('#checks-list li.no pre', (ps) => ps.map((p) => p.textContent));
   check(reasons.length === 10 && reasons.every((r) => r.length > 0), 'a plain block derives none, and check says why for each');
-  await view.screenshot({ path: join(artifacts, '7-examples-refused.png') });
+  await view.screenshot({ path: join(artifacts, '8-examples-refused.png') });
   check(errors.length === 0, 'no script error on the examples page' + (errors.length ? ': ' + errors.join('; ') : ''));
 } catch (e) {
   console.log('FAIL ' + (e && e.stack ? e.stack : e));
