@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 #include "base/error.hpp"
 #include "forward/derive.hpp"
@@ -57,7 +58,17 @@ Report style_report(const StyleReportInput& input) {
       drawings.push_back({"seed " + std::to_string(input.first_seed + i), building_bounds(*d),
                           [&input, &d] { return derived_triangles(*d, *input.primitives); }});
   RasterView view = input.view;
-  if (const std::optional<glm::dvec3> front = elevation_eye(examples)) view.eye = *front;
+  if (const std::optional<glm::dvec3> front = elevation_eye(examples)) {
+    view.eye = *front;
+    // Elevations of facades taller than wide (most of a city's) get
+    // pictures taller than wide, so the facade fills more of its picture.
+    double tall = 0;
+    for (const Example& e : examples) {
+      const glm::dvec3 size = e.max - e.min;
+      tall += size.z > std::max(size.x, size.y) ? 1 : 0;
+    }
+    if (tall * 2 > static_cast<double>(examples.size()) && view.width > view.height) std::swap(view.width, view.height);
+  }
   std::vector<ReportPicture> pictures = draw_at_one_scale(drawings, view, input.threads);
 
   ReportGallery examples_gallery;

@@ -72,6 +72,25 @@ TEST(StyleReport, AWindowSetIntoItsWallIsDrawnAsInferenceReadsIt) {
   EXPECT_GT(glm::dot(glm::normalize(seen), window_hue), glm::dot(glm::normalize(seen), wall_hue)) << seen.x << " " << seen.y << " " << seen.z;
 }
 
+TEST(StyleReport, TallFacadesGetPicturesTallerThanWide) {
+  const Grammar grammar = parse_grammar("building --> I(wall)\n", "test.grm");
+  const PrimitiveLibrary library = PrimitiveLibrary::builtin();
+  auto picture_size = [&](const std::vector<Example>& examples) {
+    StyleReportInput in;
+    in.title = "test.grm";
+    in.grammar = &grammar;
+    in.primitives = &library;
+    in.examples = &examples;
+    in.new_buildings = 0;
+    const ReportPicture& p = style_report(in).sections[0].galleries[0].pictures[0];
+    return std::pair(p.width, p.height);
+  };
+  EXPECT_EQ(picture_size({example_of({part("wall", {0, 0, 0}, {15, 0.2, 30})})}), std::pair(270, 360));
+  EXPECT_EQ(picture_size({example_of({part("wall", {0, 0, 0}, {15, 0.2, 10})})}), std::pair(360, 270));
+  // Buildings seen from the corner keep the landscape pictures, however tall.
+  EXPECT_EQ(picture_size({example_of({part("wall", {0, 0, 0}, {10, 8, 60})})}), std::pair(360, 270));
+}
+
 TEST(StyleReport, ExamplesAreCaptionedByTheirFileWithoutItsFolders) {
   EXPECT_EQ(example_caption("examples/a/house.obj"), "house.obj");
   EXPECT_EQ(example_caption("scenes/street.glb (building 2 of 3)"), "street.glb (building 2 of 3)");
