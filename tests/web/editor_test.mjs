@@ -1,8 +1,9 @@
 // The editor's page in a real headless browser (Debian's chromium, driven
 // by puppeteer-core): the page loads and draws the grammar's buildings, an
 // edit changes them, a click on a part shows the rules that made it, and a
-// broken grammar shows its error at its line. Screenshots are kept in
-// ARTIFACTS (tests/web/README.md).
+// broken grammar shows its error at its line; with examples, how many the
+// text derives. Screenshots of each step are kept in ARTIFACTS (CMake gives
+// build/test-artifacts/web/).
 //   node tests/web/editor_test.mjs SERVE_BINARY SOURCE_DIR ARTIFACTS
 // Exit 77 (skipped) where chromium or web/node_modules is missing.
 import { spawn } from 'node:child_process';
