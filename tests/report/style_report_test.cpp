@@ -82,7 +82,8 @@ TEST(StyleReport, TallFacadesGetPicturesTallerThanWide) {
     in.primitives = &library;
     in.examples = &examples;
     in.new_buildings = 0;
-    const ReportPicture& p = style_report(in).sections[0].galleries[0].pictures[0];
+    const Report report = style_report(in);
+    const ReportPicture& p = report.sections[0].galleries[0].pictures[0];
     return std::pair(p.width, p.height);
   };
   EXPECT_EQ(picture_size({example_of({part("wall", {0, 0, 0}, {15, 0.2, 30})})}), std::pair(270, 360));
