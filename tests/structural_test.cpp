@@ -25,7 +25,7 @@ NodeId chain(Grammar& g, int depth, const char* leaf) {
   return at;
 }
 
-TEST(Structural, AGraphHundredsOfThousandsDeepHashesWithoutRunningOutOfStack) {
+TEST(Structural, AGraphHundredsOfThousandsDeepHashesAndComparesWithoutRunningOutOfStack) {
   // A recursion ran the stack out tens of thousands deep (graphs inference
   // made of 378 CMP facades).
   Grammar a, b;
@@ -34,6 +34,10 @@ TEST(Structural, AGraphHundredsOfThousandsDeepHashesWithoutRunningOutOfStack) {
   Grammar c;
   EXPECT_NE(structural_hash(a, deep_a), structural_hash(c, chain(c, 300'000, "roof")));
   EXPECT_NE(structural_hash(a, deep_a), structural_hash(c, chain(c, 299'999, "wall")));
+  // And compares so: equal to its twin, unequal to one with another leaf.
+  EXPECT_TRUE(structurally_equal(a, deep_a, b, deep_b));
+  Grammar d;
+  EXPECT_FALSE(structurally_equal(a, deep_a, d, chain(d, 300'000, "roof")));
 }
 
 TEST(Structural, InterningSharesEqualSubgraphs) {

@@ -72,20 +72,26 @@ class Comparer {
  public:
   Comparer(const Grammar& a, const Grammar& b) : a_(a), b_(b) {}
 
+  // Pairs to compare on a stack of its own: graphs tens of thousands deep
+  // (inference makes them) ran a recursion out of stack.
   bool nodes(NodeId x, NodeId y) {
-    if (&a_ == &b_ && x == y) return true;
-    const Operation& ox = a_.op(x);
-    const Operation& oy = b_.op(y);
-    // Own fields first: most unequal pairs differ there already, and need
-    // no memo entry then. A pair met again was found equal (a DAG holds
-    // no node below itself), so checking its fields again changes nothing.
-    if (!same_fields(ox, oy)) return false;
-    if (!same_.insert({x, y}).second) return true;
-    // The same kind with the same fields has as many children.
-    bool equal = true;
-    std::size_t i = 0;
-    for_each_child(ox, [&](NodeId c) { equal = equal && nodes(c, child_at(oy, i++)); });
-    return equal;
+    std::vector<std::pair<NodeId, NodeId>> todo{{x, y}};
+    while (!todo.empty()) {
+      const auto [p, q] = todo.back();
+      todo.pop_back();
+      if (&a_ == &b_ && p == q) continue;
+      const Operation& op = a_.op(p);
+      const Operation& oq = b_.op(q);
+      // Own fields first: most unequal pairs differ there already, and need
+      // no memo entry then. A pair met again is being or was found equal (a
+      // DAG holds no node below itself), so it need not be looked at again.
+      if (!same_fields(op, oq)) return false;
+      if (!same_.insert({p, q}).second) continue;
+      // The same kind with the same fields has as many children.
+      std::size_t i = 0;
+      for_each_child(op, [&](NodeId c) { todo.emplace_back(c, child_at(oq, i++)); });
+    }
+    return true;
   }
 
  private:
