@@ -24,8 +24,8 @@ std::string request_for(const char* grammar, int count) {
   return nlohmann::json{{"text", text.str()}, {"seed", 1}, {"count", count}}.dump();
 }
 
-void BM_DeriveRequest(benchmark::State& state) {
-  const std::string request = request_for(VERN_SOURCE_DIR "/data/grammars/modern_houses.grm", static_cast<int>(state.range(0)));
+// Answers `request` once per iteration; the answer's size as a counter.
+void answer_repeatedly(benchmark::State& state, const std::string& request) {
   const ServeSession session;
   std::size_t bytes = 0;
   for (auto _ : state) {
@@ -35,18 +35,14 @@ void BM_DeriveRequest(benchmark::State& state) {
   }
   state.counters["answer_kb"] = static_cast<double>(bytes) / 1024.0;
 }
+
+void BM_DeriveRequest(benchmark::State& state) {
+  answer_repeatedly(state, request_for(VERN_SOURCE_DIR "/data/grammars/modern_houses.grm", static_cast<int>(state.range(0))));
+}
 BENCHMARK(BM_DeriveRequest)->ArgName("buildings")->Arg(1)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_DeriveRequestCity(benchmark::State& state) {
-  const std::string request = request_for(VERN_SOURCE_DIR "/data/grammars/skyscraper_city.grm", 1);
-  const ServeSession session;
-  std::size_t bytes = 0;
-  for (auto _ : state) {
-    const ApiAnswer a = derive_request(request, session);
-    bytes = a.body.size();
-    benchmark::DoNotOptimize(a);
-  }
-  state.counters["answer_kb"] = static_cast<double>(bytes) / 1024.0;
+  answer_repeatedly(state, request_for(VERN_SOURCE_DIR "/data/grammars/skyscraper_city.grm", 1));
 }
 BENCHMARK(BM_DeriveRequestCity)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -75,10 +75,10 @@ class Comparer {
   // Pairs to compare on a stack of its own: graphs tens of thousands deep
   // (inference makes them) ran a recursion out of stack.
   bool nodes(NodeId x, NodeId y) {
-    std::vector<std::pair<NodeId, NodeId>> todo{{x, y}};
-    while (!todo.empty()) {
-      const auto [p, q] = todo.back();
-      todo.pop_back();
+    std::vector<std::pair<NodeId, NodeId>> unchecked{{x, y}};
+    while (!unchecked.empty()) {
+      const auto [p, q] = unchecked.back();
+      unchecked.pop_back();
       if (&a_ == &b_ && p == q) continue;
       const Operation& op = a_.op(p);
       const Operation& oq = b_.op(q);
@@ -89,7 +89,7 @@ class Comparer {
       if (!same_.insert({p, q}).second) continue;
       // The same kind with the same fields has as many children.
       std::size_t i = 0;
-      for_each_child(op, [&](NodeId c) { todo.emplace_back(c, child_at(oq, i++)); });
+      for_each_child(op, [&](NodeId c) { unchecked.emplace_back(c, child_at(oq, i++)); });
     }
     return true;
   }
@@ -178,13 +178,13 @@ std::size_t structural_hash(const Grammar& g, NodeId node) {
   // Children before parents on a stack of its own: a graph tens of
   // thousands deep (inference makes them) ran a recursion out of stack.
   std::unordered_map<NodeId, std::size_t> memo;
-  std::vector<NodeId> todo{node};
+  std::vector<NodeId> unhashed{node};
   const auto label = [&](LabelId l) { return std::hash<std::string>{}(g.label(l)); };
   const auto rule = [&](RuleId r) { return std::hash<std::string>{}(g.rules[r].label); };
-  while (!todo.empty()) {
-    const NodeId id = todo.back();
+  while (!unhashed.empty()) {
+    const NodeId id = unhashed.back();
     if (memo.contains(id)) {
-      todo.pop_back();
+      unhashed.pop_back();
       continue;
     }
     bool waiting = false;
@@ -192,14 +192,14 @@ std::size_t structural_hash(const Grammar& g, NodeId node) {
         g.op(id),
         [&](NodeId c) {
           if (!memo.contains(c)) {
-            todo.push_back(c);
+            unhashed.push_back(c);
             waiting = true;
           }
           return std::size_t{0};
         },
         label, rule);
     if (waiting) continue;
-    todo.pop_back();
+    unhashed.pop_back();
     memo.emplace(id, hash_operation(g.op(id), [&](NodeId c) { return memo.at(c); }, label, rule));
   }
   return memo.at(node);

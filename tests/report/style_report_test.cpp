@@ -32,6 +32,19 @@ LabelledBox part(std::string label, glm::dvec3 min, glm::dvec3 max) {
   return b;
 }
 
+// The report of these examples alone (no new buildings) under a one-rule grammar.
+Report examples_report(const std::vector<Example>& examples) {
+  static const Grammar grammar = parse_grammar("building --> I(wall)\n", "test.grm");
+  static const PrimitiveLibrary library = PrimitiveLibrary::builtin();
+  StyleReportInput in;
+  in.title = "test.grm";
+  in.grammar = &grammar;
+  in.primitives = &library;
+  in.examples = &examples;
+  in.new_buildings = 0;
+  return style_report(in);
+}
+
 TEST(StyleReport, FacadesAreSeenStraightInFrontAndBuildingsFromTheirCorner) {
   const std::vector<Example> facades = {example_of({part("window", {0, 0, 0}, {15, 0.2, 20})}),
                                         example_of({part("window", {0, 0, 0}, {15, 0.2, 30})})};
@@ -49,15 +62,7 @@ TEST(StyleReport, AWindowSetIntoItsWallIsDrawnAsInferenceReadsIt) {
   // the wall's: drawn as read, the wall (first in the file) hides it.
   const std::vector<Example> examples = {example_of({part("wall", {0, 0, 0}, {4, 0.15, 3}),
                                                     part("window", {1.5, 0, 1}, {2.5, 0.15, 2})})};
-  const Grammar grammar = parse_grammar("building --> I(wall)\n", "test.grm");
-  const PrimitiveLibrary library = PrimitiveLibrary::builtin();
-  StyleReportInput in;
-  in.title = "test.grm";
-  in.grammar = &grammar;
-  in.primitives = &library;
-  in.examples = &examples;
-  in.new_buildings = 0;
-  const Report report = style_report(in);
+  const Report report = examples_report(examples);
   ASSERT_EQ(report.sections.size(), 1u);
   ASSERT_EQ(report.sections[0].galleries.size(), 1u);
   ASSERT_EQ(report.sections[0].galleries[0].pictures.size(), 1u);
@@ -73,16 +78,8 @@ TEST(StyleReport, AWindowSetIntoItsWallIsDrawnAsInferenceReadsIt) {
 }
 
 TEST(StyleReport, TallFacadesGetPicturesTallerThanWide) {
-  const Grammar grammar = parse_grammar("building --> I(wall)\n", "test.grm");
-  const PrimitiveLibrary library = PrimitiveLibrary::builtin();
-  auto picture_size = [&](const std::vector<Example>& examples) {
-    StyleReportInput in;
-    in.title = "test.grm";
-    in.grammar = &grammar;
-    in.primitives = &library;
-    in.examples = &examples;
-    in.new_buildings = 0;
-    const Report report = style_report(in);
+  auto picture_size = [](const std::vector<Example>& examples) {
+    const Report report = examples_report(examples);
     const ReportPicture& p = report.sections[0].galleries[0].pictures[0];
     return std::pair(p.width, p.height);
   };

@@ -14,12 +14,12 @@ class Substitution {
   // graph thousands of nodes deep (378 CMP facades at --tolerance 0.045)
   // cannot run the thread's stack out.
   NodeId run(NodeId root) {
-    std::vector<NodeId> todo{root};
+    std::vector<NodeId> unsettled{root};
     std::vector<NodeId> pending;
-    while (!todo.empty()) {
-      const NodeId id = todo.back();
+    while (!unsettled.empty()) {
+      const NodeId id = unsettled.back();
       if (done(id)) {
-        todo.pop_back();
+        unsettled.pop_back();
         continue;
       }
       pending.clear();
@@ -28,10 +28,10 @@ class Substitution {
         return c;
       });
       if (!pending.empty()) {
-        todo.insert(todo.end(), pending.rbegin(), pending.rend());
+        unsettled.insert(unsettled.end(), pending.rbegin(), pending.rend());
         continue;
       }
-      todo.pop_back();
+      unsettled.pop_back();
       // Every child is settled: rebuild this node if one of them changed.
       const auto [children, changed] = map_children(g_.op(id), [&](NodeId c) { return result(c); });
       NodeId out = id;
