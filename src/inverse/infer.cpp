@@ -17,6 +17,7 @@
 #include "inverse/sizes/joint_sizes.hpp"
 #include "inverse/sizes/overflow_splits.hpp"
 #include "inverse/sizes/progressions.hpp"
+#include "inverse/sizes/repeat_alternatives.hpp"
 #include "inverse/sizes/tidy_numbers.hpp"
 #include "inverse/split/box_split.hpp"
 #include "inverse/split/split_graph.hpp"
@@ -185,6 +186,10 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     // A split seen overflowing in short tiles is that split: checked, so
     // only where the examples are few enough to check quickly.
     if (parts <= kJoinedPartsLimit) unify_overflows(out.grammar, examples, {exact, options.threads});
+    // Alternatives told apart only by how many tiles the examples showed
+    // (two storeys in most houses, three in the tallest) are one repeat:
+    // read from the examples' derivations, so likewise checked.
+    if (parts <= kJoinedPartsLimit) join_tile_run_alternatives(out.grammar, examples, {exact, options.threads});
     // Sizes that vary together, drawn once: from the lengths of the
     // derivations that reproduce the examples, so only where they are few
     // enough to check quickly.
