@@ -6,6 +6,7 @@
 
 #include "graph/nodes_below.hpp"
 #include "inverse/merge/equal_options.hpp"
+#include "inverse/merge/repeat_folding.hpp"
 #include "inverse/merge/substitute.hpp"
 #include "inverse/sizes/settle_repeats.hpp"
 #include "inverse/write/unused_rules.hpp"
@@ -47,30 +48,15 @@ std::optional<TileRun> tile_run(const Grammar& g, NodeId node, const TileCounts&
 
 bool plain(const ChooseOption& o) { return o.condition.empty() && o.priority.literal().has_value(); }
 
-// The runs a place holds: its child, where that is a run, or each option
-// of a choice of runs there (storeys of one kind of row or another).
-std::vector<TileRun> runs_at(const Grammar& g, NodeId node, const TileCounts& tile_counts) {
-  if (auto run = tile_run(g, node, tile_counts)) return {*run};
-  const auto* c = std::get_if<Choose>(&g.op(node));
-  if (!c) return {};
-  std::vector<TileRun> runs;
-  for (const ChooseOption& o : c->options) {
-    auto run = plain(o) ? tile_run(g, o.child, tile_counts) : std::nullopt;
-    if (!run) return {};
-    runs.push_back(*run);
-  }
-  return runs;
-}
-
-// A place holding runs inside an option: the places that lead to it
-// through splits (the option's split, the part's split, ...; none: the
-// option itself), those splits, and the runs.
+// A run inside an option: the places that lead to it through splits (the
+// option's split, the part's split, ...; none: the option itself), those
+// splits, and the run. (A choice of runs is, in a written grammar, a
+// rule's body: a choice of its own, which this step rewrites too.)
 struct Site {
   std::size_t option = 0;
   std::vector<std::size_t> path;
   std::vector<NodeId> splits;
-  NodeId held = 0;  // the place's child
-  std::vector<TileRun> runs;
+  TileRun run;
 };
 
 // Places this deep in splits are looked at: a house's storeys under its
@@ -78,9 +64,8 @@ struct Site {
 constexpr std::size_t kDeepest = 4;
 
 void find_sites(const Grammar& g, NodeId node, const TileCounts& tile_counts, Site& at, std::vector<Site>& out) {
-  if (auto runs = runs_at(g, node, tile_counts); !runs.empty()) {
-    at.held = node;
-    at.runs = std::move(runs);
+  if (auto run = tile_run(g, node, tile_counts)) {
+    at.run = *run;
     out.push_back(at);
     return;
   }
@@ -169,16 +154,10 @@ std::map<NodeId, NodeId> settle(Grammar& g, const std::vector<const TileRun*>& r
   return out;
 }
 
-// The place's child with its runs replaced.
-NodeId replaced(Grammar& g, const Site& site, const std::map<NodeId, NodeId>& repeats) {
-  auto now = [&](NodeId n) {
-    const auto it = repeats.find(n);
-    return it == repeats.end() ? n : it->second;
-  };
-  if (!std::holds_alternative<Choose>(g.op(site.held))) return now(site.held);
-  Choose c = std::get<Choose>(g.op(site.held));
-  for (ChooseOption& o : c.options) o.child = now(o.child);
-  return g.intern({std::move(c), g.node(site.held).loc});
+// The place's child with its run replaced.
+NodeId replaced(const Site& site, const std::map<NodeId, NodeId>& repeats) {
+  const auto it = repeats.find(site.run.node);
+  return it == repeats.end() ? site.run.node : it->second;
 }
 
 // The site's split at level k rebuilt with the place's child replaced.
@@ -225,18 +204,19 @@ bool any_candidate(const Grammar& g, const std::vector<NodeId>& nodes) {
     for (std::size_t a = 0; a < sites.size(); ++a)
       for (std::size_t b = a + 1; b < sites.size(); ++b) {
         if (sites[a].option == sites[b].option || !same_place(g, sites[a], sites[b])) continue;
-        std::vector<const TileRun*> runs;
-        for (const TileRun& r : sites[a].runs) runs.push_back(&r);
-        for (const TileRun& r : sites[b].runs) runs.push_back(&r);
-        if (!one_repeat(runs)) return true;
+        if (!one_repeat({&sites[a].run, &sites[b].run})) return true;
       }
   }
   return false;
 }
 
-}  // namespace
 
-namespace {
+// The runs of a group of sites.
+std::vector<const TileRun*> runs_of(const std::vector<Site>& group) {
+  std::vector<const TileRun*> runs;
+  for (const Site& site : group) runs.push_back(&site.run);
+  return runs;
+}
 
 // The places alike across two or more options of one choice, each group's
 // sites; an option is in one group at most (rebuilt for one place, its
@@ -265,27 +245,17 @@ std::vector<std::vector<Site>> places_alike(const Grammar& g, const Choose& c, c
       grouped_option[sites[k].option] = true;
       group.push_back(sites[k]);
     }
-    std::vector<const TileRun*> runs;
-    for (const Site& site : group)
-      for (const TileRun& r : site.runs) runs.push_back(&r);
-    if (!one_repeat(runs)) groups.push_back(std::move(group));
+    if (!one_repeat(runs_of(group))) groups.push_back(std::move(group));
   }
   return groups;
-}
-
-std::vector<const TileRun*> runs_of(const std::vector<Site>& group) {
-  std::vector<const TileRun*> runs;
-  for (const Site& site : group)
-    for (const TileRun& r : site.runs) runs.push_back(&r);
-  return runs;
 }
 
 // c's options at the group's sites with their runs replaced by repeats.
 bool apply(Grammar& g, Choose& c, const std::vector<Site>& group, const std::map<NodeId, NodeId>& repeats) {
   bool changed = false;
   for (const Site& site : group) {
-    const NodeId held = replaced(g, site, repeats);
-    if (held == site.held) continue;
+    const NodeId held = replaced(site, repeats);
+    if (held == site.run.node) continue;
     c.options[site.option].child = rebuilt(g, site, 0, held);
     changed = true;
   }
@@ -293,13 +263,6 @@ bool apply(Grammar& g, Choose& c, const std::vector<Site>& group, const std::map
 }
 
 }  // namespace
-
-bool join_tile_runs(Grammar& g, Choose& c, TileCounts& tile_counts, double tolerance) {
-  bool changed = false;
-  for (const std::vector<Site>& group : places_alike(g, c, tile_counts))
-    changed = apply(g, c, group, settle(g, runs_of(group), tile_counts, tolerance)) || changed;
-  return changed;
-}
 
 std::size_t join_tile_run_alternatives(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options) {
   const std::vector<NodeId> nodes = nodes_of_rules(g);
