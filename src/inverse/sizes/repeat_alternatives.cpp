@@ -48,15 +48,40 @@ std::optional<TileRun> tile_run(const Grammar& g, NodeId node, const TileCounts&
 
 bool plain(const ChooseOption& o) { return o.condition.empty() && o.priority.literal().has_value(); }
 
-// A run inside an option: the places that lead to it through splits (the
-// option's split, the part's split, ...; none: the option itself), those
-// splits, and the run. (A choice of runs is, in a written grammar, a
-// rule's body: a choice of its own, which this step rewrites too.)
+// The rule a call without arguments runs, if node is one.
+std::optional<RuleId> called_rule(const Grammar& g, NodeId node) {
+  const auto* call = std::get_if<Call>(&g.op(node));
+  if (!call || !call->args.empty() || call->rule >= g.rules.size()) return std::nullopt;
+  return call->rule;
+}
+
+// The runs a place holds: its child, where that is a run, or each option
+// of a choice of runs there (storeys of one kind of row or another), or
+// the same in the body of the rule it calls without arguments.
+std::vector<TileRun> runs_at(const Grammar& g, NodeId node, const TileCounts& tile_counts) {
+  if (auto run = tile_run(g, node, tile_counts)) return {*run};
+  if (const auto rule = called_rule(g, node)) node = g.rules[*rule].body;
+  if (auto run = tile_run(g, node, tile_counts)) return {*run};
+  const auto* c = std::get_if<Choose>(&g.op(node));
+  if (!c) return {};
+  std::vector<TileRun> runs;
+  for (const ChooseOption& o : c->options) {
+    auto run = plain(o) ? tile_run(g, o.child, tile_counts) : std::nullopt;
+    if (!run) return {};
+    runs.push_back(*run);
+  }
+  return runs;
+}
+
+// A place holding runs inside an option: the places that lead to it
+// through splits (the option's split, the part's split, ...; none: the
+// option itself), those splits, and the runs.
 struct Site {
   std::size_t option = 0;
   std::vector<std::size_t> path;
   std::vector<NodeId> splits;
-  TileRun run;
+  NodeId held = 0;  // the place's child
+  std::vector<TileRun> runs;
 };
 
 // Places this deep in splits are looked at: a house's storeys under its
@@ -64,8 +89,9 @@ struct Site {
 constexpr std::size_t kDeepest = 4;
 
 void find_sites(const Grammar& g, NodeId node, const TileCounts& tile_counts, Site& at, std::vector<Site>& out) {
-  if (auto run = tile_run(g, node, tile_counts)) {
-    at.run = *run;
+  if (auto runs = runs_at(g, node, tile_counts); !runs.empty()) {
+    at.held = node;
+    at.runs = std::move(runs);
     out.push_back(at);
     return;
   }
@@ -154,10 +180,16 @@ std::map<NodeId, NodeId> settle(Grammar& g, const std::vector<const TileRun*>& r
   return out;
 }
 
-// The place's child with its run replaced.
-NodeId replaced(const Site& site, const std::map<NodeId, NodeId>& repeats) {
-  const auto it = repeats.find(site.run.node);
-  return it == repeats.end() ? site.run.node : it->second;
+// A node (a run, or a choice of runs) with its runs replaced.
+NodeId replaced(Grammar& g, NodeId node, const std::map<NodeId, NodeId>& repeats) {
+  auto now = [&](NodeId n) {
+    const auto it = repeats.find(n);
+    return it == repeats.end() ? n : it->second;
+  };
+  if (!std::holds_alternative<Choose>(g.op(node))) return now(node);
+  Choose c = std::get<Choose>(g.op(node));
+  for (ChooseOption& o : c.options) o.child = now(o.child);
+  return g.intern({std::move(c), g.node(node).loc});
 }
 
 // The site's split at level k rebuilt with the place's child replaced.
@@ -204,19 +236,18 @@ bool any_candidate(const Grammar& g, const std::vector<NodeId>& nodes) {
     for (std::size_t a = 0; a < sites.size(); ++a)
       for (std::size_t b = a + 1; b < sites.size(); ++b) {
         if (sites[a].option == sites[b].option || !same_place(g, sites[a], sites[b])) continue;
-        if (!one_repeat({&sites[a].run, &sites[b].run})) return true;
+        std::vector<const TileRun*> runs;
+        for (const TileRun& r : sites[a].runs) runs.push_back(&r);
+        for (const TileRun& r : sites[b].runs) runs.push_back(&r);
+        if (!one_repeat(runs)) return true;
       }
   }
   return false;
 }
 
+}  // namespace
 
-// The runs of a group of sites.
-std::vector<const TileRun*> runs_of(const std::vector<Site>& group) {
-  std::vector<const TileRun*> runs;
-  for (const Site& site : group) runs.push_back(&site.run);
-  return runs;
-}
+namespace {
 
 // The places alike across two or more options of one choice, each group's
 // sites; an option is in one group at most (rebuilt for one place, its
@@ -245,17 +276,40 @@ std::vector<std::vector<Site>> places_alike(const Grammar& g, const Choose& c, c
       grouped_option[sites[k].option] = true;
       group.push_back(sites[k]);
     }
-    if (!one_repeat(runs_of(group))) groups.push_back(std::move(group));
+    std::vector<const TileRun*> runs;
+    for (const Site& site : group)
+      for (const TileRun& r : site.runs) runs.push_back(&r);
+    if (!one_repeat(runs)) groups.push_back(std::move(group));
   }
   return groups;
 }
 
+std::vector<const TileRun*> runs_of(const std::vector<Site>& group) {
+  std::vector<const TileRun*> runs;
+  for (const Site& site : group)
+    for (const TileRun& r : site.runs) runs.push_back(&r);
+  return runs;
+}
+
 // c's options at the group's sites with their runs replaced by repeats.
-bool apply(Grammar& g, Choose& c, const std::vector<Site>& group, const std::map<NodeId, NodeId>& repeats) {
+// A place that calls a rule holding the runs keeps its call, and the
+// rule's body is rewritten (bodies, by rule; the runs counted are every
+// place the rule's runs stood, so every caller keeps its counts); a rule
+// rewritten for one group is not rewritten again.
+bool apply(Grammar& g, Choose& c, const std::vector<Site>& group, const std::map<NodeId, NodeId>& repeats,
+           std::map<RuleId, NodeId>& bodies) {
   bool changed = false;
   for (const Site& site : group) {
-    const NodeId held = replaced(site, repeats);
-    if (held == site.run.node) continue;
+    if (const auto rule = called_rule(g, site.held)) {
+      if (bodies.count(*rule)) continue;
+      const NodeId body = replaced(g, g.rules[*rule].body, repeats);
+      if (body == g.rules[*rule].body) continue;
+      bodies[*rule] = body;
+      changed = true;
+      continue;
+    }
+    const NodeId held = replaced(g, site.held, repeats);
+    if (held == site.held) continue;
     c.options[site.option].child = rebuilt(g, site, 0, held);
     changed = true;
   }
@@ -289,12 +343,13 @@ std::size_t join_tile_run_alternatives(Grammar& g, const std::vector<Example>& e
   for (const auto& [axis, along] : by_axis(every))
     if (const auto tile = pooled_tile(along, options.tolerance)) settled[axis] = *tile;
   std::vector<NodeId> replace(g.node_count(), kNoReplacement);
+  std::map<RuleId, NodeId> bodies;
   std::size_t count = 0;
   for (const auto& [id, groups] : choices) {
     Choose copy = std::get<Choose>(g.op(id));
     bool changed = false;
     for (const std::vector<Site>& group : groups)
-      changed = apply(g, copy, group, settle(g, runs_of(group), runs, options.tolerance, settled)) || changed;
+      changed = apply(g, copy, group, settle(g, runs_of(group), runs, options.tolerance, settled), bodies) || changed;
     if (!changed) continue;
     join_equal_options(copy);
     const NodeId now = copy.options.size() == 1 ? copy.options[0].child : g.intern({std::move(copy), g.node(id).loc});
@@ -303,6 +358,7 @@ std::size_t join_tile_run_alternatives(Grammar& g, const std::vector<Example>& e
     ++count;
   }
   if (count == 0) return 0;
+  for (const auto& [rule, body] : bodies) g.rules[rule].body = body;
   for (Rule& rule : g.rules) rule.body = substitute_until_settled(g, rule.body, replace);
   drop_unused_rules(g);
   if (!derives_examples(g, examples, options, results)) {

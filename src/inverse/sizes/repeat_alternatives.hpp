@@ -16,7 +16,6 @@
 // Alternatives along one axis share one tile where one explains all of
 // their runs (storeys holding one kind of row or another: a choice kept
 // per building); else those that hold the same tile do.
-//
 // The runs each repeat made are read from the examples' derivations (the
 // witnesses check finds), so every place a repeat stands is counted, and
 // the whole change is kept only if every example still derives.
@@ -31,19 +30,17 @@
 
 namespace vern {
 
-// Every choice of the written grammar g whose options hold a repeat or
-// repeatN along a literal axis, of a literal size or count, at one place:
-// the option itself, or a place reached through up to four splits in
-// options that hold the same parts at the other places of those splits
-// (their sizes aside: each option keeps its own). Options with a
-// condition or a priority that is not a literal are left as they are. The
-// runs at one place in two or more options, not already one repeat,
-// become repeats of the tile that gives every count seen on its length
-// (common_tile, settle_repeats.hpp): one tile for every such place along
-// an axis where one explains them all, else each place's runs along one
-// axis, else those repeating one tile. Options so alike are joined.
-// Returns how many choices changed (0: g as it was, also where a change
-// would lose an example).
+// Every choice of the written grammar g whose options hold runs at one
+// place: the option itself, a call of a rule whose body is a run or a
+// choice of runs (that body rewritten), or a place reached through up to
+// four splits in options that hold the same parts elsewhere (their sizes
+// aside: each keeps its own). Runs at one place in two or more options,
+// not already one repeat, become repeats of the tile that gives every
+// count seen on its length (common_tile, settle_repeats.hpp): one tile
+// for every such place along an axis where one explains them all, else
+// each place's runs along one axis, else those repeating one tile.
+// Options so alike are joined. Returns how many choices changed (0: g as
+// it was, also where a change would lose an example).
 std::size_t join_tile_run_alternatives(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options);
 
 }  // namespace vern
