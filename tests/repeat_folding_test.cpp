@@ -174,6 +174,26 @@ TEST(RepeatFolding, UnlikeBuildingsOfOneWidthBecomeARepeatOfTheirChoice) {
   EXPECT_EQ(flat(write_operation(f.g, choice->options[1].child, {})), "split(z){ ~3 : I(rect) | ~1 : nil }");
 }
 
+TEST(RepeatFolding, BaysEachAWindowOrADoorAreARepeatOfTheirChoice) {
+  // Eight bays of one width, wall | window or door | wall, the doors in
+  // the second and the sixth: bays that trade places, not runs of window
+  // bays between door bays (which would give every arrangement of doors
+  // a structure of its own).
+  std::string row = "a --> split(x){";
+  for (int bay = 0; bay < 8; ++bay)
+    row += std::string(bay ? " |" : "") + " ~1 : I(wall) | ~1.5 : I(" + (bay == 1 || bay == 5 ? "door" : "window") +
+           ") | ~1 : I(wall)";
+  row += " }\n";
+  const Folded f = fold_text(row);
+  const auto* bays = std::get_if<Repeat>(&f.g.op(f.body));
+  ASSERT_NE(bays, nullptr) << flat(write_operation(f.g, f.body, {}));
+  const auto* choice = std::get_if<Choose>(&f.g.op(bays->child));
+  ASSERT_NE(choice, nullptr) << flat(write_operation(f.g, f.body, {}));
+  ASSERT_EQ(choice->options.size(), 2u);
+  EXPECT_EQ(choice->options[0].priority.literal(), 6.0);  // window bays
+  EXPECT_EQ(choice->options[1].priority.literal(), 2.0);  // door bays
+}
+
 TEST(RepeatFolding, BaysWhoseWindowsDifferInWidthAreOneRunOfTheirChoice) {
   // An entrance bay, then five bays of one width (3.7 m), each window
   // drawn for its bay (1.05 to 1.15 m, piers taking the rest): no two bays

@@ -491,15 +491,10 @@ class Folder {
           folded = true;
         }
       }
-      // Else a row of compound tiles with other parts among them (a shop
-      // front of bays with the entrance bay after some of them): each run
-      // of the tiles a repeat, each stretch between runs one group.
-      if (!folded && segment_row(s.axis, parts, r)) {
-        folded = true;
-        changed = true;
-      }
       // Else equal tiles of unlike contents, over the whole split or all
-      // but one or two end parts (the most parts first).
+      // but one or two end parts (the most parts first): bays each a
+      // window or a door, two or more of each (fold_tiles: a door bay
+      // alone keeps its place, below).
       const bool unlike = unlike_ == UnlikeTiles::Fold;
       for (std::size_t outside = 0; unlike && !folded && outside <= 2 && outside + 3 <= parts.size(); ++outside) {
         for (std::size_t head = 0; head <= outside && !folded; ++head) {
@@ -509,6 +504,13 @@ class Folder {
             folded = true;
           }
         }
+      }
+      // Else a row of compound tiles with other parts among them (a shop
+      // front of bays with the entrance bay after some of them): each run
+      // of the tiles a repeat, each stretch between runs one group.
+      if (!folded && segment_row(s.axis, parts, r)) {
+        folded = true;
+        changed = true;
       }
     }
     if (parts.size() == 1 && parts[0].size.relative) return parts[0].child;
