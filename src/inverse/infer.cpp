@@ -13,6 +13,7 @@
 #include "inverse/load/turned_examples.hpp"
 #include "inverse/merge/merge.hpp"
 #include "inverse/merge/shared_frames.hpp"
+#include "inverse/merge/subsumed_options.hpp"
 #include "inverse/sizes/fit_distribution.hpp"
 #include "inverse/sizes/joint_sizes.hpp"
 #include "inverse/sizes/overflow_splits.hpp"
@@ -189,7 +190,15 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     // Alternatives told apart only by how many tiles the examples showed
     // (two storeys in most houses, three in the tallest) are one repeat:
     // read from the examples' derivations, so likewise checked.
-    if (parts <= kJoinedPartsLimit) join_tile_run_alternatives(out.grammar, examples, {exact, options.threads});
+    // Alternatives the others now derive (a row that happened to hold one
+    // door bay, beside a repeat of bays each a window or a door) only
+    // draw what no example asked for: dropped, likewise checked. The two
+    // read the examples' witnesses, found once between them.
+    if (parts <= kJoinedPartsLimit) {
+      Witnesses witnesses;
+      join_tile_run_alternatives(out.grammar, examples, {exact, options.threads}, witnesses);
+      drop_subsumed_options(out.grammar, examples, {exact, options.threads}, witnesses);
+    }
     // Sizes that vary together, drawn once: from the lengths of the
     // derivations that reproduce the examples, so only where they are few
     // enough to check quickly.

@@ -71,6 +71,14 @@ bool derives_examples(const Grammar& g, const std::vector<Example>& examples, co
   return derives_examples(g, placed, check, options.threads, results);
 }
 
+bool witnesses_of(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options, Witnesses& w) {
+  if (!w.known) {
+    w.derivable = derives_examples(g, examples, options, w.results);
+    w.known = true;
+  }
+  return w.derivable;
+}
+
 std::optional<NotDerived> first_not_derived(const Grammar& g, const std::vector<Example>& examples, double tolerance,
                                             unsigned threads) {
   auto options = [&](const Example& e) {

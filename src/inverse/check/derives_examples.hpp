@@ -31,6 +31,21 @@ struct RewriteCheck {
 bool derives_examples(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
                       std::vector<CheckResult>& results);
 
+// The examples' witnesses under a grammar as it is now, handed from one
+// step that rewrites a written grammar to the next: each reads them
+// (which alternative, which runs each example takes) and, where it
+// changes the grammar, checks it again and leaves the new ones, so that
+// steps in a row check the examples once between them.
+struct Witnesses {
+  bool known = false;      // results are the grammar's as it is now
+  bool derivable = false;  // every example derives
+  std::vector<CheckResult> results;
+};
+
+// Checks the examples against g where w is not known yet; returns whether
+// every example derives.
+bool witnesses_of(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options, Witnesses& w);
+
 // An example a grammar does not derive, and why (CheckResult::mismatch).
 struct NotDerived {
   std::size_t example = 0;  // its index

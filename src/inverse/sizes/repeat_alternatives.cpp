@@ -318,12 +318,12 @@ bool apply(Grammar& g, Choose& c, const std::vector<Site>& group, const std::map
 
 }  // namespace
 
-std::size_t join_tile_run_alternatives(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options) {
+std::size_t join_tile_run_alternatives(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
+                                       Witnesses& witnesses) {
   const std::vector<NodeId> nodes = nodes_of_rules(g);
   if (!any_candidate(g, nodes)) return 0;
-  std::vector<CheckResult> results;
-  if (!derives_examples(g, examples, options, results)) return 0;
-  TileCounts runs = runs_derived(results);
+  if (!witnesses_of(g, examples, options, witnesses)) return 0;
+  TileCounts runs = runs_derived(witnesses.results);
   const Grammar before = g;
   // The places of every choice; then, per axis, one tile for all of them
   // where one explains every run (storeys of one height in every kind of
@@ -361,10 +361,12 @@ std::size_t join_tile_run_alternatives(Grammar& g, const std::vector<Example>& e
   for (const auto& [rule, body] : bodies) g.rules[rule].body = body;
   for (Rule& rule : g.rules) rule.body = substitute_until_settled(g, rule.body, replace);
   drop_unused_rules(g);
+  std::vector<CheckResult> results;
   if (!derives_examples(g, examples, options, results)) {
     g = before;
     return 0;
   }
+  witnesses.results = std::move(results);
   return count;
 }
 

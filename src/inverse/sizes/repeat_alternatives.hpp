@@ -40,7 +40,9 @@ namespace vern {
 // for every such place along an axis where one explains them all, else
 // each place's runs along one axis, else those repeating one tile.
 // Options so alike are joined. Returns how many choices changed (0: g as
-// it was, also where a change would lose an example).
-std::size_t join_tile_run_alternatives(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options);
+// it was, also where a change would lose an example). witnesses: g's,
+// read where known, else checked; g's again when it returns.
+std::size_t join_tile_run_alternatives(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
+                                       Witnesses& witnesses);
 
 }  // namespace vern
