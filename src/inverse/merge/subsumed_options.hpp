@@ -12,7 +12,7 @@
 //     half the examples that reach the choice, is dropped where those
 //     examples derive without it; its weight goes to the alternatives they
 //     take then. Each is tried once, within a budget of examples checked
-//     (about one check of them all): hundreds of one-example alternatives
+//     (about a quarter of a check of them all): hundreds of one-example alternatives
 //     (a facade dataset) cost a bounded number of checks;
 //   - then every alternative no example's witness takes is dropped (the
 //     examples derive by their witnesses as before).
