@@ -188,9 +188,17 @@ class StyleMaker {
     std::array<Bay, 4> kinds = kBays;
     for (std::size_t i = kinds.size(); i > 1; --i)
       std::swap(kinds[i - 1], kinds[static_cast<std::size_t>(rng_.uniform() * static_cast<double>(i))]);
-    const std::size_t count = on(StyleClass::KeptChoice) ? static_cast<std::size_t>(integer(2, 3)) : 1;
+    // A choice per tile takes a kind of its own: two kinds at most are
+    // kept per building then.
+    const bool per_tile = on(StyleClass::TileChoice);
+    const std::size_t count =
+        on(StyleClass::KeptChoice) ? static_cast<std::size_t>(integer(2, per_tile ? 2 : 3)) : 1;
     bay_kinds_.assign(kinds.begin(), kinds.begin() + static_cast<std::ptrdiff_t>(count));
     odd_bay_ = kinds[count];  // above the door bay, or the special one
+    if (per_tile) {
+      tile_bay_ = kinds[count + 1];
+      tile_odds_ = integer(2, 4);
+    }
 
     if (on(StyleClass::LinearSize)) {
       podium_lo_ = step(3.5, 4.5, 0.1);
@@ -582,11 +590,19 @@ class StyleMaker {
   }
 
   void write_bays() {
+    // With a choice per tile, each bay is its kind or, at lower odds, a
+    // kind of the tiles' own, drawn bay by bay.
+    const bool per_tile = on(StyleClass::TileChoice);
+    const std::string odds = per_tile ? " : " + std::to_string(tile_odds_) : "";
     if (on(StyleClass::KeptChoice)) {
-      for (std::size_t i = 0; i < bay_kinds_.size(); ++i)
-        rule(bay_name_ + "(b) : b == " + std::to_string(i) + " --> " + bay(bay_kinds_[i]));
+      for (std::size_t i = 0; i < bay_kinds_.size(); ++i) {
+        const std::string head = bay_name_ + "(b) : b == " + std::to_string(i) + " --> ";
+        rule(head + bay(bay_kinds_[i]) + odds);
+        if (per_tile) rule(head + bay(tile_bay_));
+      }
     } else {
-      rule(bay_name_ + " --> " + bay(bay_kinds_[0]));
+      rule(bay_name_ + " --> " + bay(bay_kinds_[0]) + odds);
+      if (per_tile) rule(bay_name_ + " --> " + bay(tile_bay_));
     }
     if (on(StyleClass::AlignedRepeat) || special_ == Special::Storeys) rule(odd_name_ + " --> " + bay(odd_bay_));
   }
@@ -708,6 +724,8 @@ class StyleMaker {
   double window_width_ = 0, annex_window_ = 0;
   std::vector<Bay> bay_kinds_;
   Bay odd_bay_ = Bay::Window;
+  Bay tile_bay_ = Bay::Window;  // a tile's other kind
+  int tile_odds_ = 1;           // a bay of its kind against one of tile_bay_, tile by tile
   Size ground_, roof_, annex_walls_, window_size_;
   double main_width_ = 0, main_depth_ = 0, main_height_ = 0, annex_length_ = 0;
 

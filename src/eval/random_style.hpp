@@ -42,6 +42,7 @@ enum class StyleClass : std::uint8_t {
   GroundFloor,
   Wings,
   NilGap,
+  TileChoice,
 };
 
 struct StyleClassInfo {
@@ -51,7 +52,7 @@ struct StyleClassInfo {
 };
 
 // The classes, each drawn independently at its rate. The first nine are
-// issue 23's; the rest are data/styles' (every style also has splits of
+// issue 23's; the rest are data/styles' and real fronts' (every style also has splits of
 // shares, repeats whose count follows a varying length, and parameters):
 //   shared_size        a size drawn once and passed to parts in different
 //                      subtrees: both wings of a U one width d, all four
@@ -88,7 +89,10 @@ struct StyleClassInfo {
 //   nil_gap            empty space: a yard between the blocks of a row, or a
 //                      roof pavilion with air on both sides (L, U and
 //                      courtyard plans and tiers leave empty space too)
-inline constexpr std::array<StyleClassInfo, 15> kStyleClasses{{
+//   tile_choice        a choice made per tile: each bay of the main front
+//                      its kind (a window bay) or, at lower odds, another
+//                      (a balcony bay), wherever it stands
+inline constexpr std::array<StyleClassInfo, 16> kStyleClasses{{
     {StyleClass::SharedSize, "shared_size", 0.4},
     {StyleClass::LinearSize, "linear_size", 0.4},
     {StyleClass::ConstantInVarying, "constant_in_varying", 0.4},
@@ -104,6 +108,7 @@ inline constexpr std::array<StyleClassInfo, 15> kStyleClasses{{
     {StyleClass::GroundFloor, "ground_floor", 0.5},
     {StyleClass::Wings, "wings", 0.4},
     {StyleClass::NilGap, "nil_gap", 0.4},
+    {StyleClass::TileChoice, "tile_choice", 0.3},
 }};
 
 std::string_view class_name(StyleClass c);

@@ -107,7 +107,10 @@ TEST(RandomStyle, EachListedClassIsInTheText) {
     iff(StyleClass::KeptChoice, contains(rules, R"(\(b\) : b == 1 --> )"));
     iff(StyleClass::ContinuousSizes, contains(rules, R"((~|\| |\{ )(rand|tnormal)\()"));
     implies(StyleClass::MixedSplit, contains(rules, R"(\| [0-9.]+ : (split\(z\)|I\())"));
-    iff(StyleClass::Alternatives, contains(rules, R"(\} : [0-9]+\n|\) : [0-9]+\n)"));
+    // Alternatives with priorities: the roof's kinds, and, a choice per
+    // tile, the bays' (a split along x).
+    iff(StyleClass::Alternatives, contains(rules, R"(--> (?!split\(x\))[^\n]*(\}|\)) : [0-9]+\n)"));
+    iff(StyleClass::TileChoice, contains(rules, R"(--> split\(x\)\{[^\n]*\} : [0-9]+\n)"));
     iff(StyleClass::TurnedRoof, contains(rules, R"(R\(z, pi / 2\))"));
     iff(StyleClass::GroundFloor, contains(rules, R"(I\((shopfront|display|vitrine|glass)\))"));
     iff(StyleClass::Wings, contains(rules, R"(repeat(N)?\(y, )"));
