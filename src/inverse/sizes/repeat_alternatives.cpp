@@ -211,6 +211,14 @@ TileCounts runs_derived(const std::vector<CheckResult>& results) {
   return out;
 }
 
+// The runs of a group of sites.
+std::vector<const TileRun*> runs_of(const std::vector<Site>& group) {
+  std::vector<const TileRun*> runs;
+  for (const Site& site : group)
+    for (const TileRun& r : site.runs) runs.push_back(&r);
+  return runs;
+}
+
 // Whether any choice has two options or more holding a repeat or repeatN
 // at the same path through splits, not all one repeat: the only choices
 // this step may change. Found before any example is checked, so that a
@@ -236,18 +244,11 @@ bool any_candidate(const Grammar& g, const std::vector<NodeId>& nodes) {
     for (std::size_t a = 0; a < sites.size(); ++a)
       for (std::size_t b = a + 1; b < sites.size(); ++b) {
         if (sites[a].option == sites[b].option || !same_place(g, sites[a], sites[b])) continue;
-        std::vector<const TileRun*> runs;
-        for (const TileRun& r : sites[a].runs) runs.push_back(&r);
-        for (const TileRun& r : sites[b].runs) runs.push_back(&r);
-        if (!one_repeat(runs)) return true;
+        if (!one_repeat(runs_of({sites[a], sites[b]}))) return true;
       }
   }
   return false;
 }
-
-}  // namespace
-
-namespace {
 
 // The places alike across two or more options of one choice, each group's
 // sites; an option is in one group at most (rebuilt for one place, its
@@ -276,19 +277,9 @@ std::vector<std::vector<Site>> places_alike(const Grammar& g, const Choose& c, c
       grouped_option[sites[k].option] = true;
       group.push_back(sites[k]);
     }
-    std::vector<const TileRun*> runs;
-    for (const Site& site : group)
-      for (const TileRun& r : site.runs) runs.push_back(&r);
-    if (!one_repeat(runs)) groups.push_back(std::move(group));
+    if (!one_repeat(runs_of(group))) groups.push_back(std::move(group));
   }
   return groups;
-}
-
-std::vector<const TileRun*> runs_of(const std::vector<Site>& group) {
-  std::vector<const TileRun*> runs;
-  for (const Site& site : group)
-    for (const TileRun& r : site.runs) runs.push_back(&r);
-  return runs;
 }
 
 // c's options at the group's sites with their runs replaced by repeats.
