@@ -284,3 +284,41 @@ tier --> split(z){ 2.4 : I(rect) | ~1 : I(eave) }
 
 }  // namespace
 }  // namespace vern
+
+namespace vern {
+namespace {
+
+// Crowns of two or three tiers, each drum a share of what is left (a
+// third of a three-tier crown, then a half of the rest): within one tower
+// the drums are equal, between towers not. From three examples, two of
+// them three-tier towers of different heights, the drum is no length in
+// metres: inference ended with "no grammar inferred derives" (a random
+// style, evaluate --random-styles 300 --seed 1796662875, style 55).
+TEST(SelfNesting, DrumsEqualWithinOneTowerOnlyStayShares) {
+  const Grammar source = parse_grammar(R"(
+@start parcel
+@scope rand(26, 43), rand(23.5, 35.5), rand(9, 13)
+parcel --> split(x){ 6.9 : wing | ~1 : split(y){ 8.1 : range | ~1 : nil | 6.4 : side } | 6.5 : wing }
+range --> split(z){ ~1 : repeat(z, 3.6){ storey } | ~0.45 : tiers(randint(2, 3)) }
+storey --> repeat(x, 3.4){ travee }
+travee --> split(x){ ~1 : I(stone) | 1 : split(z){ 0.9 : I(balcony) | ~1 : I(pane) | 0.2 : I(stone) } | ~1 : I(stone) }
+tiers(n) : n > 1 --> split(z){ ~1 : I(drum) | ~(n - 1) : split(x){ 1.4 : nil | ~1 : split(y){ 1.4 : nil | ~1 : tiers(n - 1) | 1.4 : nil } | 1.4 : nil } }
+tiers(n) : n <= 1 --> ridge
+ridge --> I(roof)
+side --> split(z){ ~rand(1.9, 2.7) : repeat(x, 3.4){ sideBay } | ~1 : annexRoof }
+sideBay --> split(x){ ~1 : I(stone) | 1.1 : I(pane) | ~1 : I(stone) }
+wing --> split(z){ ~rand(1.9, 2.7) : repeat(y, 3.4){ wingBay } | ~1 : annexRoof }
+wingBay --> split(y){ ~1 : I(stone) | 1.1 : I(pane) | ~1 : I(stone) }
+annexRoof --> R(z, pi / 2){ I(roof) }
+)",
+                                       "crowns.grm");
+  const std::vector<Example> examples = test::derived_examples(source, 3);
+  const Inference inferred = infer(examples, {});
+  for (const Example& e : examples) {
+    const CheckResult r = check_example(inferred.grammar, e.boxes, example_size(e));
+    EXPECT_TRUE(r.derivable) << r.mismatch << "\n" << write_grammar(inferred.grammar);
+  }
+}
+
+}  // namespace
+}  // namespace vern

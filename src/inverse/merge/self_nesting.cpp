@@ -375,6 +375,7 @@ class Nester {
     // is its subtree): one node seen at two counts has none.
     std::unordered_map<NodeId, int> left;
     bool counted = true;
+    std::size_t chains = 0;
     for (std::size_t key : group) {
       for (const auto& [top, k] : occurrences_[key]) {
         NodeId level = top;
@@ -387,6 +388,7 @@ class Nester {
         }
         went_on += static_cast<double>(k);
         stopped += 1;
+        ++chains;
       }
     }
     // A chain inside another (a four-tier tower's upper three tiers, also
@@ -428,7 +430,7 @@ class Nester {
         if (all) s.parts[q].size.value = range_expr(*all, tol_);
         if (!known || !all) kept[i][q].clear();
       }
-      fix_across_levels(s, members[i], kept[i]);
+      if (chains >= 2) fix_across_levels(s, members[i], kept[i]);
       levels.push_back(std::move(s));
     }
     const NodeId base = base_of(group);
@@ -455,7 +457,10 @@ class Nester {
   // differ (a tier's margins, 1.2 m at each level set in) is that length
   // in metres. The examples alone may not say so: on plots of one depth
   // every tower's first level is as deep, and merging left the margins
-  // shares; the levels, set in one inside the other, show it.
+  // shares; the levels, set in one inside the other, show it. Only from
+  // two towers or more (the caller's part): one tower's drums may be
+  // equal as shares are (each a third of a three-tier crown), and another
+  // tower's, equal among themselves, of another length.
   void fix_across_levels(Split& s, const std::vector<NodeId>& members,
                          std::vector<std::vector<Observation>>& kept) const {
     std::vector<std::vector<double>> rows;
