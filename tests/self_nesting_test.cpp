@@ -282,12 +282,6 @@ tier --> split(z){ 2.4 : I(rect) | ~1 : I(eave) }
   EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 101, 130));
 }
 
-}  // namespace
-}  // namespace vern
-
-namespace vern {
-namespace {
-
 // Crowns of two or three tiers, each drum a share of what is left (a
 // third of a three-tier crown, then a half of the rest): within one tower
 // the drums are equal, between towers not. From three examples, two of
