@@ -172,5 +172,43 @@ TEST(AlternativeLengths, InferredHousesOfAnyHeightKeepSlabGroundFloorAndStoreyHe
   }
 }
 
+// Bays each a window or a railing bay, tile by tile, beside a feature bay
+// 4 m wide lined up on every storey: a bay whose parts keep one
+// proportion is one node at every width it was seen at, and alternatives
+// seen together at 4 m make its piers 4 m / 3.8 in metres, which the
+// narrower bays of a row do not have. No attempt derived the examples
+// ("no grammar inferred derives"); the one that keeps sizes as shares now
+// keeps these too. (A random style, evaluate --random-styles 300 --seed
+// 1796662875, style 277, from three examples.)
+TEST(AlternativeLengths, BaysOfOneProportionAtManyWidthsStillDeriveWhenSizesAreKeptAsShares) {
+  const Grammar source = parse_grammar(R"(
+@start lot
+@scope rand(39.5, 71.5), rand(12, 18), rand(28.5, 48.5)
+lot --> split(x){ ~0.65 : wing | ~3.2 : split(y){ ~0.5 : nil | ~1 : house(rand(3.7, 6.1), randint(0, 4)) } | ~0.9 : wing }
+house(u, k) --> split(z){ u : arcade(k) | 2.5 * u + 4.5 : repeat(z, 3.6){ floor(k) } | ~1 : lantern }
+arcade(k) --> split(x){ 4 * k : repeatN(x, k){ shop } | 4 : doorBay | ~1 : repeat(x, 4){ shop } }
+doorBay --> split(x){ ~1 : I(stone) | 1.2 : split(z){ 2.2 : I(portal) | ~1 : I(stone) } | ~1 : I(stone) }
+shop --> split(x){ ~1 : I(column) | ~7 : I(shopfront) | ~1 : I(column) }
+floor(k) --> split(x){ 4 * k : repeatN(x, k){ bay } | 4 : feature | ~1 : repeat(x, 4){ bay } }
+bay --> split(x){ ~1 : I(stone) | ~1.8 : split(z){ ~1 : I(stone) | ~2 : I(window) | ~0.5 : I(stone) } | ~1 : I(stone) } : 4
+bay --> split(x){ ~1 : I(stone) | ~1.8 : split(z){ ~1 : I(railing) | ~2 : I(window) } | ~1 : I(stone) }
+feature --> split(x){ ~1 : I(stone) | ~1.8 : split(x){ ~1 : I(window) | ~0.4 : I(stone) | ~1 : I(window) } | ~1 : I(stone) }
+lantern --> split(x){ ~0.7 : nil | ~1 : cap | ~0.7 : nil }
+cap --> I(hip)
+wing --> split(z){ ~1.3 : wingRow(randint(0, 1)) | ~1 : sideRoof }
+wingRow(k) --> split(y){ 4 * k : repeatN(y, k){ wingBay } | 4 : wingDoor | ~1 : repeat(y, 4){ wingBay } }
+wingDoor --> split(y){ ~1 : I(stone) | 1.2 : split(z){ 2.2 : I(portal) | ~1 : I(stone) } | ~1 : I(stone) }
+wingBay --> split(y){ ~1 : I(stone) | ~1.1 : I(window) | ~1 : I(stone) }
+sideRoof --> R(z, pi / 2){ I(roof) }
+)",
+                                       "rows.grm");
+  const std::vector<Example> examples = test::derived_examples(source, 3);
+  const Inference inferred = infer(examples, {});
+  for (const Example& e : examples) {
+    const CheckResult r = check_example(inferred.grammar, e.boxes, example_size(e));
+    EXPECT_TRUE(r.derivable) << r.mismatch;
+  }
+}
+
 }  // namespace
 }  // namespace vern

@@ -984,8 +984,10 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   Simplifier simplifier(g, options);
   everywhere([&](NodeId n) { return simplifier.run(n); });
   // Last, on the splits as they are written (flattened): alternatives
-  // seen at different lengths keep the lengths they all share.
-  everywhere([&](NodeId n) { return absolute_across_alternatives(g, n, options.tolerance); });
+  // seen at different lengths keep the lengths they all share (sizes in
+  // metres, so only where those are asked for: MergeOptions::draw_sizes).
+  if (options.draw_sizes)
+    everywhere([&](NodeId n) { return absolute_across_alternatives(g, n, options.tolerance); });
   return merged;
 }
 

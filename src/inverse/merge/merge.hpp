@@ -55,7 +55,10 @@ struct MergeOptions {
   // reach through another choice's alternative never noted that
   // example's lengths, and its sizes in metres may then not fit it
   // where shares did. infer merges once more without them when its
-  // check finds an example underived.
+  // check finds an example underived. Without them, alternatives seen at
+  // different lengths keep their shares too (alternative_lengths.hpp): a
+  // bay whose parts keep one proportion is one node at every width it
+  // was seen at, which that step cannot tell from a bay seen at one.
   bool draw_sizes = true;
   // The nodes of placed groups (split_graph.hpp): parts no straight cut
   // separates, placed with S(...) that reaches into the next piece. check
