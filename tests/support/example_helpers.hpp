@@ -157,6 +157,16 @@ inline ::testing::AssertionResult source_derives_variants(const Grammar& source,
                                        << write_grammar(inferred);
 }
 
+// Whether g derives every example, on its own extent; else the first it
+// does not, with check's reason and the grammar.
+inline ::testing::AssertionResult derives_every_example(const Grammar& g, const std::vector<Example>& examples) {
+  for (const Example& e : examples) {
+    const CheckResult r = check_example(g, e.boxes, example_size(e));
+    if (!r.derivable) return ::testing::AssertionFailure() << e.source << ": " << r.mismatch << "\n" << write_grammar(g);
+  }
+  return ::testing::AssertionSuccess();
+}
+
 inline std::vector<vern::LabelledBox> translated(std::vector<vern::LabelledBox> boxes, glm::dvec3 by) {
   for (vern::LabelledBox& b : boxes) {
     b.min += by;
