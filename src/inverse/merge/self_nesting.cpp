@@ -375,7 +375,6 @@ class Nester {
     // is its subtree): one node seen at two counts has none.
     std::unordered_map<NodeId, int> left;
     bool counted = true;
-    std::size_t chains = 0;
     for (std::size_t key : group) {
       for (const auto& [top, k] : occurrences_[key]) {
         NodeId level = top;
@@ -388,7 +387,6 @@ class Nester {
         }
         went_on += static_cast<double>(k);
         stopped += 1;
-        ++chains;
       }
     }
     // A chain inside another (a four-tier tower's upper three tiers, also
@@ -430,7 +428,7 @@ class Nester {
         if (all) s.parts[q].size.value = range_expr(*all, tol_);
         if (!known || !all) kept[i][q].clear();
       }
-      if (chains >= 2) fix_across_levels(s, members[i], kept[i]);
+      if (stopped >= 2) fix_across_levels(s, members[i], kept[i]);  // two towers or more
       levels.push_back(std::move(s));
     }
     const NodeId base = base_of(group);
