@@ -12,6 +12,7 @@
 #include "inverse/load/snapped_coordinates.hpp"
 #include "inverse/load/turned_examples.hpp"
 #include "inverse/merge/merge.hpp"
+#include "inverse/merge/kept_choices.hpp"
 #include "inverse/merge/shared_frames.hpp"
 #include "inverse/merge/subsumed_options.hpp"
 #include "inverse/sizes/fit_distribution.hpp"
@@ -190,13 +191,17 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     // Alternatives told apart only by how many tiles the examples showed
     // (two storeys in most houses, three in the tallest) are one repeat:
     // read from the examples' derivations, so likewise checked.
-    // Alternatives the others now derive (a row that happened to hold one
-    // door bay, beside a repeat of bays each a window or a door) only
-    // draw what no example asked for: dropped, likewise checked. The two
-    // read the examples' witnesses, found once between them.
+    // A choice that each building makes once and keeps below (its bays
+    // all balconies or all windows) takes a parameter passed down from
+    // the start. Alternatives the others now derive (a row that happened
+    // to hold one door bay, beside a repeat of bays each a window or a
+    // door) only draw what no example asked for: dropped. All checked,
+    // and all read the examples' witnesses, found once between them
+    // where nothing changes.
     if (parts <= kJoinedPartsLimit) {
       Witnesses witnesses;
       join_tile_run_alternatives(out.grammar, examples, {exact, options.threads}, witnesses);
+      keep_choices(out.grammar, examples, {exact, options.threads}, witnesses);
       drop_subsumed_options(out.grammar, examples, {exact, options.threads}, witnesses);
     }
     // Sizes that vary together, drawn once: from the lengths of the

@@ -1,5 +1,6 @@
 #include "inverse/merge/equal_options.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <unordered_map>
 
@@ -37,6 +38,12 @@ bool join_equal_options(Choose& c) {
   }
   c.options = std::move(kept);
   return joined;
+}
+
+bool plain_option(const ChooseOption& o) { return o.condition.empty() && o.priority.literal().has_value(); }
+
+bool plain_choice(const Choose& c) {
+  return c.options.size() >= 2 && std::all_of(c.options.begin(), c.options.end(), plain_option);
 }
 
 }  // namespace vern

@@ -16,4 +16,11 @@ namespace vern {
 // join; the rest stay as they are. Returns whether any joined.
 bool join_equal_options(Choose& c);
 
+// An option without a condition whose priority is a number: the options
+// the steps that rewrite alternatives by their weights read.
+bool plain_option(const ChooseOption& o);
+
+// A choice of two options or more, all plain.
+bool plain_choice(const Choose& c);
+
 }  // namespace vern

@@ -8,18 +8,13 @@
 #include <utility>
 
 #include "graph/nodes_below.hpp"
+#include "inverse/merge/equal_options.hpp"
 #include "inverse/merge/substitute.hpp"
 #include "inverse/write/unused_rules.hpp"
 
 namespace vern {
 
 namespace {
-
-bool plain_choice(const Choose& c) {
-  return c.options.size() >= 2 && std::all_of(c.options.begin(), c.options.end(), [](const ChooseOption& o) {
-           return o.condition.empty() && o.priority.literal().has_value();
-         });
-}
 
 // The examples whose witness takes option `option` of choice `choose`.
 std::vector<std::size_t> examples_taking(const std::vector<CheckResult>& results, NodeId choose, std::size_t option) {

@@ -46,8 +46,6 @@ std::optional<TileRun> tile_run(const Grammar& g, NodeId node, const TileCounts&
   return run;
 }
 
-bool plain(const ChooseOption& o) { return o.condition.empty() && o.priority.literal().has_value(); }
-
 // The rule a call without arguments runs, if node is one.
 std::optional<RuleId> called_rule(const Grammar& g, NodeId node) {
   const auto* call = std::get_if<Call>(&g.op(node));
@@ -66,7 +64,7 @@ std::vector<TileRun> runs_at(const Grammar& g, NodeId node, const TileCounts& ti
   if (!c) return {};
   std::vector<TileRun> runs;
   for (const ChooseOption& o : c->options) {
-    auto run = plain(o) ? tile_run(g, o.child, tile_counts) : std::nullopt;
+    auto run = plain_option(o) ? tile_run(g, o.child, tile_counts) : std::nullopt;
     if (!run) return {};
     runs.push_back(*run);
   }
@@ -236,7 +234,7 @@ bool any_candidate(const Grammar& g, const std::vector<NodeId>& nodes) {
     if (!c || c->options.size() < 2) continue;
     std::vector<Site> sites;
     for (std::size_t i = 0; i < c->options.size(); ++i) {
-      if (!plain(c->options[i])) continue;
+      if (!plain_option(c->options[i])) continue;
       Site at;
       at.option = i;
       find_sites(g, c->options[i].child, every, at, sites);
@@ -256,7 +254,7 @@ bool any_candidate(const Grammar& g, const std::vector<NodeId>& nodes) {
 std::vector<std::vector<Site>> places_alike(const Grammar& g, const Choose& c, const TileCounts& tile_counts) {
   std::vector<Site> sites;
   for (std::size_t i = 0; i < c.options.size(); ++i) {
-    if (!plain(c.options[i])) continue;
+    if (!plain_option(c.options[i])) continue;
     Site at;
     at.option = i;
     find_sites(g, c.options[i].child, tile_counts, at, sites);

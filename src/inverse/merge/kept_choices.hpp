@@ -1,0 +1,33 @@
+// A choice made once per building and kept below (issue 23, item 2): the
+// bays of one house all windows with a railing or all without, each bay
+// a panel now and then. Merging sees each bay's choice on its own and
+// writes one free choice of panel, railing bay and window bay, so that
+// almost every variant mixes the two kinds no building of the style mixes.
+//
+// The examples' witnesses show it: per example, the alternatives a choice
+// takes. Alternatives that never share an example, though each is taken
+// in several and, drawn freely, would have shared some (three examples or
+// more expected), are kinds kept per building; the others go with any
+// kind. The choice then takes a parameter, `kind(b) : b == 0 --> ...`,
+// passed down from the start rule through every rule that leads to it,
+// drawn once per building there (`randint(0, k - 1)`). Kept only if every
+// example still derives.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "graph/grammar.hpp"
+#include "inverse/check/derives_examples.hpp"
+#include "inverse/load/example.hpp"
+
+namespace vern {
+
+// Rewrites g in place (one choice, the first found in rule order);
+// returns how many choices became kept (0: g as it was). witnesses: g's,
+// read where known, else checked; not known when it returns having
+// changed g.
+std::size_t keep_choices(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
+                         Witnesses& witnesses);
+
+}  // namespace vern

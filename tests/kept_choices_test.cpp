@@ -1,0 +1,70 @@
+// A choice made once per building and kept below (kept_choices.hpp).
+#include "inverse/merge/kept_choices.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "graph/parser.hpp"
+#include "graph/writer.hpp"
+#include "inverse/infer.hpp"
+#include "support/example_helpers.hpp"
+
+namespace vern {
+namespace {
+
+// Houses whose bays are all balconies or all windows, kept for the
+// house, each bay a panel now and then (a choice per tile); or, `free`,
+// each bay drawing its kind.
+std::string houses(bool free) {
+  const std::string kind = free ? "" : "(b)";
+  auto bay = [&](int b, const std::string& body, int weight) {
+    return "bay" + kind + (free ? "" : " : b == " + std::to_string(b)) + " --> split(x){ ~1 : I(render) | 1.8 : " + body +
+           " | ~1 : I(render) } : " + std::to_string(weight) + "\n";
+  };
+  std::string text = "@start plot\n@scope rand(20, 32), rand(8, 12), rand(9, 13)\n";
+  text += free ? "plot --> house\n" : "plot --> house(randint(0, 1))\n";
+  text += "house" + kind + " --> split(z){ 4 : I(plinth) | ~1 : repeat(z, 3.2){ storey" + kind +
+          " } | 2 : I(roof) }\n";
+  text += "storey" + kind + " --> repeat(x, 3.4){ bay" + kind + " }\n";
+  text += bay(0, "I(balcony)", 3) + bay(0, "I(panel)", 1) + bay(1, "I(window)", 3);
+  if (!free) text += bay(1, "I(panel)", 1);
+  return text;
+}
+
+// How many of 40 variants of g hold both balconies and windows.
+std::size_t mixed(const Grammar& g) {
+  std::size_t n = 0;
+  for (std::uint64_t seed = 101; seed <= 140; ++seed) {
+    bool balcony = false, window = false;
+    for (const auto& part : test::derived_parts(g, seed)) {
+      balcony = balcony || part.label == "balcony";
+      window = window || part.label == "window";
+    }
+    n += balcony && window ? 1 : 0;
+  }
+  return n;
+}
+
+// Learnt from 30 houses: the kind kept per house, so no variant mixes
+// balconies and windows (learnt as one free choice, nearly every one did).
+TEST(KeptChoices, BaysOfOneKindPerHouseStayOneKindPerHouse) {
+  const Grammar source = parse_grammar(houses(false), "kept.grm");
+  const std::vector<Example> examples = test::derived_examples(source, 30);
+  const Inference inferred = infer(examples, {});
+  EXPECT_EQ(mixed(source), 0u);
+  EXPECT_EQ(mixed(inferred.grammar), 0u) << write_grammar(inferred.grammar);
+  EXPECT_TRUE(test::derives_every_example(inferred.grammar, examples));
+}
+
+// Kinds drawn bay by bay: nothing is kept, and variants mix them as the
+// source's do.
+TEST(KeptChoices, KindsDrawnFreelyStayFree) {
+  const Grammar source = parse_grammar(houses(true), "free.grm");
+  const Inference inferred = infer(test::derived_examples(source, 30), {});
+  EXPECT_GT(mixed(source), 30u);
+  EXPECT_GT(mixed(inferred.grammar), 30u) << write_grammar(inferred.grammar);
+}
+
+}  // namespace
+}  // namespace vern
