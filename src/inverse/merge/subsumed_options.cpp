@@ -16,15 +16,21 @@ namespace vern {
 
 namespace {
 
-// The examples whose witness takes option `option` of choice `choose`.
-std::vector<std::size_t> examples_taking(const std::vector<CheckResult>& results, NodeId choose, std::size_t option) {
-  std::vector<std::size_t> out;
+// By choice: for each of its options, the examples whose witness takes
+// it, ascending. One pass over the witnesses, not one per option: a
+// facade dataset's choice has hundreds.
+using Takers = std::unordered_map<NodeId, std::vector<std::vector<std::size_t>>>;
+
+Takers examples_taking(const Grammar& g, const std::vector<CheckResult>& results) {
+  Takers out;
   for (std::size_t e = 0; e < results.size(); ++e)
-    for (const CheckStep& step : results[e].steps)
-      if (step.kind == CheckStep::Kind::Alternative && step.node == choose && step.index == option) {
-        out.push_back(e);
-        break;
-      }
+    for (const CheckStep& step : results[e].steps) {
+      if (step.kind != CheckStep::Kind::Alternative) continue;
+      const auto* c = std::get_if<Choose>(&g.op(step.node));
+      if (!c || step.index >= c->options.size()) continue;
+      auto& options = out.try_emplace(step.node, c->options.size()).first->second;
+      if (options[step.index].empty() || options[step.index].back() != e) options[step.index].push_back(e);
+    }
   return out;
 }
 
@@ -43,20 +49,6 @@ void replace_choice(Grammar& g, NodeId choose, NodeId now, std::unordered_map<No
       fresh = it->second;
 }
 
-// Which options of each plain choice some example's witness takes.
-std::map<NodeId, std::vector<bool>> options_taken(const Grammar& g, const std::vector<CheckResult>& results) {
-  std::map<NodeId, std::vector<bool>> taken;
-  for (const CheckResult& r : results)
-    for (const CheckStep& step : r.steps) {
-      if (step.kind != CheckStep::Kind::Alternative) continue;
-      const auto* c = std::get_if<Choose>(&g.op(step.node));
-      if (!c || !plain_choice(*c)) continue;
-      auto& seen = taken.try_emplace(step.node, c->options.size(), false).first->second;
-      if (step.index < seen.size()) seen[step.index] = true;
-    }
-  return taken;
-}
-
 // Every alternative no example's witness takes, dropped at once (the
 // others keep their weights): each example derives by its witness as it
 // did, so nothing needs checking. Returns how many were dropped; the
@@ -65,7 +57,13 @@ std::map<NodeId, std::vector<bool>> options_taken(const Grammar& g, const std::v
 std::size_t drop_untaken(Grammar& g, const std::vector<CheckResult>& results) {
   std::vector<NodeId> replace(g.node_count(), kNoReplacement);
   std::size_t dropped = 0;
-  for (const auto& [id, taken] : options_taken(g, results)) {
+  const Takers takers = examples_taking(g, results);
+  std::map<NodeId, const std::vector<std::vector<std::size_t>>*> in_order;  // one order every time
+  for (const auto& [id, taking] : takers) in_order.emplace(id, &taking);
+  for (const auto& [id, taking] : in_order) {
+    if (!plain_choice(std::get<Choose>(g.op(id)))) continue;
+    std::vector<bool> taken;
+    for (const auto& examples_of_option : *taking) taken.push_back(!examples_of_option.empty());
     if (std::all_of(taken.begin(), taken.end(), [](bool t) { return t; })) continue;
     Choose kept = std::get<Choose>(g.op(id));  // a copy: interning below may grow the arena
     std::vector<ChooseOption> options_kept;
@@ -125,6 +123,7 @@ void rename_witnesses(std::vector<CheckResult>& results, const std::vector<std::
 // others' renamed.
 bool drop_one(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
               std::vector<CheckResult>& results, Budget& budget) {
+  const Takers takers = examples_taking(g, results);
   for (const NodeId id : nodes_of_rules(g)) {  // in id order: one order every time
     const auto* found = std::get_if<Choose>(&g.op(id));
     if (!found || !plain_choice(*found)) continue;
@@ -134,12 +133,11 @@ bool drop_one(Grammar& g, const std::vector<Example>& examples, const RewriteChe
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return *c.options[a].priority.literal() < *c.options[b].priority.literal();
     });
-    std::vector<std::vector<std::size_t>> taking(c.options.size());
+    const auto found_takers = takers.find(id);
+    if (found_takers == takers.end()) continue;
+    const std::vector<std::vector<std::size_t>>& taking = found_takers->second;
     std::size_t reaching = 0;
-    for (std::size_t i = 0; i < c.options.size(); ++i) {
-      taking[i] = examples_taking(results, id, i);
-      reaching += taking[i].size();
-    }
+    for (const auto& examples_of_option : taking) reaching += examples_of_option.size();
     for (const std::size_t option : order) {
       if (taking[option].empty() || 2 * taking[option].size() > reaching) continue;
       if (budget.checks < taking[option].size()) return false;
