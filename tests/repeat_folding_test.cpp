@@ -306,5 +306,64 @@ TEST(RepeatFolding, APlotOfSeveralStripsIsOneTile) {
   EXPECT_EQ(towers->options.size(), 2u);
 }
 
+// A rule of a row of bays (wall | opening | wall), 3 m each, holding the
+// given openings in order.
+std::string bays(std::initializer_list<const char*> openings, const std::string& rule = "a") {
+  std::string row = rule + " --> split(x){";
+  bool first = true;
+  for (const char* o : openings) {
+    row += std::string(first ? "" : " |") + " ~1 : I(wall) | ~1 : " + o + " | ~1 : I(wall)";
+    first = false;
+  }
+  return row + " }\n";
+}
+const char* const kWindow = "I(window)";
+const char* const kBalcony = "split(z){ ~1 : I(balcony) | ~2 : I(window) }";
+
+TEST(RepeatFolding, AnOddBayBeforeARunIsATileWhereOtherRowsShowItTradingPlaces) {
+  // A balcony bay before three window bays: alone in its row, it keeps its
+  // place where nothing else is known; where another row showed balcony
+  // bays trading places with window bays (two of them), the row is four
+  // tiles of their choice, not a run of window bays read a wall late.
+  const std::string alone = bays({kBalcony, kWindow, kWindow, kWindow}, "b");
+  Folded unknown = fold_text(alone);
+  EXPECT_EQ(std::get_if<Repeat>(&unknown.g.op(unknown.body)), nullptr) << flat(write_operation(unknown.g, unknown.body, {}));
+
+  Grammar g = parse_grammar(bays({kWindow, kBalcony, kWindow, kBalcony, kBalcony}) + alone);
+  TradingLabels trading;
+  const NodeId other = fold_repeats(g, g.rules[0].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &trading);
+  ASSERT_NE(std::get_if<Repeat>(&g.op(other)), nullptr);
+  EXPECT_EQ(trading.seen.count(g.find_label("balcony").value()), 1u);
+  const NodeId row = fold_repeats(g, g.rules[1].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &trading);
+  const auto* tiles = std::get_if<Repeat>(&g.op(row));
+  ASSERT_NE(tiles, nullptr) << flat(write_operation(g, row, {}));
+  const auto* choice = std::get_if<Choose>(&g.op(tiles->child));
+  ASSERT_NE(choice, nullptr);
+  ASSERT_EQ(choice->options.size(), 2u);
+  EXPECT_EQ(choice->options[0].priority.literal(), 1.0);  // the balcony bay
+  EXPECT_EQ(choice->options[1].priority.literal(), 3.0);  // window bays
+}
+
+TEST(RepeatFolding, AlternatingBaysAreARunOfPairsUnlessOtherRowsShowThemTradingPlaces) {
+  // Window, balcony, window, balcony: a pattern of pairs as far as this
+  // row shows; four tiles of a free choice once another row mixed them in
+  // no pattern.
+  const std::string pairs = bays({kWindow, kBalcony, kWindow, kBalcony}, "b");
+  Folded alone = fold_text(pairs);
+  const auto* run = std::get_if<Repeat>(&alone.g.op(alone.body));
+  ASSERT_NE(run, nullptr);
+  EXPECT_TRUE(std::holds_alternative<Split>(alone.g.op(run->child)));  // the pair
+
+  Grammar g = parse_grammar(bays({kWindow, kBalcony, kBalcony, kWindow, kWindow}) + pairs);
+  TradingLabels trading;
+  fold_repeats(g, g.rules[0].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &trading);
+  const NodeId row = fold_repeats(g, g.rules[1].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &trading);
+  const auto* tiles = std::get_if<Repeat>(&g.op(row));
+  ASSERT_NE(tiles, nullptr);
+  const auto* choice = std::get_if<Choose>(&g.op(tiles->child));
+  ASSERT_NE(choice, nullptr) << flat(write_operation(g, row, {}));
+  EXPECT_EQ(choice->options.size(), 2u);
+}
+
 }  // namespace
 }  // namespace vern

@@ -904,9 +904,20 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   std::vector<bool> copied(g.node_count(), false);
   for (const NodeId p : options.placed)
     for (const NodeId n : nodes_below(g, p)) copied[n] = true;
-  for (NodeId r : roots)
-    folded.push_back(fold_repeats(g, nest_inset_runs(g, r, options.tolerance, &copied), options.tolerance, unlike,
-                                  &tile_counts, &copied));
+  // Folded twice where a row kept a tile from folding for a label that
+  // other rows show trading places (TradingLabels): the first pass reads
+  // which labels do, the second folds with what every row showed.
+  TradingLabels trading;
+  auto fold_all = [&] {
+    folded.clear();
+    tile_counts.clear();
+    for (NodeId r : roots)
+      folded.push_back(fold_repeats(g, nest_inset_runs(g, r, options.tolerance, &copied), options.tolerance, unlike,
+                                    &tile_counts, &copied, &trading));
+  };
+  fold_all();
+  if (std::any_of(trading.lone.begin(), trading.lone.end(), [&](LabelId l) { return trading.seen.count(l) > 0; }))
+    fold_all();
   Choose all;
   for (NodeId r : folded) all.options.push_back({Expr{}, Expr::number(1.0), r});
   const NodeId examples = g.intern({std::move(all), {}});

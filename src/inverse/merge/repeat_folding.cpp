@@ -17,8 +17,9 @@ namespace {
 
 class Folder {
  public:
-  Folder(Grammar& g, double tolerance, UnlikeTiles unlike, TileCounts* counts, const std::vector<bool>* kept)
-      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts), kept_(kept) {}
+  Folder(Grammar& g, double tolerance, UnlikeTiles unlike, TileCounts* counts, const std::vector<bool>* kept,
+         TradingLabels& trading)
+      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts), kept_(kept), trading_(trading) {}
 
   NodeId run(NodeId id) {
     if (id < memo_.size() && memo_[id] != kNotYet) return memo_[id];
@@ -320,17 +321,29 @@ class Folder {
   // places. nullopt when no such tiling exists or it would move a cut by
   // more than the tolerance.
   std::optional<SplitPart> fold_unlike(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from,
-                                       std::size_t to) {
+                                       std::size_t to, std::optional<double> only_tile = std::nullopt) {
     if (to - from < 3) return std::nullopt;
     std::vector<double> at{0};  // cut positions from parts[from]
     at.reserve(to - from + 1);
     for (std::size_t i = from; i < to; ++i) at.push_back(at.back() + *parts[i].size.value.literal());
     const double total = at.back();
-    // The first tile ends at one of the first cuts; the largest count wins.
-    for (std::size_t m = 1; m < at.size() - 1 && m <= kMaxPartsPerTile; ++m) {
+    // The first tile ends at one of the first cuts; the largest count wins
+    // (along a run of copies the smallest count: a pair's bays before
+    // their walls and openings taken two by two).
+    const std::size_t last = std::min(at.size() - 2, kMaxPartsPerTile);
+    for (std::size_t step = 0; step < last; ++step) {
+      const std::size_t m = only_tile ? last - step : step + 1;
       const auto k = static_cast<std::size_t>(std::lround(total / at[m]));
       if (k < 3 || k > to - from) continue;
       const double tile = total / static_cast<double>(k);
+      // Along a run of equal copies, the copies are the tiles: a row
+      // window, balcony, window, balcony is a run of pairs (a pattern kept
+      // in every row, as far as this row shows), unless other rows showed
+      // these tiles trading places freely (TradingLabels): then each copy
+      // is cut into tiles, none a bare primitive (a bay's walls and
+      // opening are no tiles).
+      const double per_copy = only_tile ? std::round(*only_tile / tile) : 1;
+      if (only_tile && (per_copy < 1 || std::abs(tile * per_copy - *only_tile) > tol_)) continue;
       std::vector<std::size_t> starts{0};  // each tile's first part, from `from`
       starts.reserve(k + 1);
       for (std::size_t j = 1, i = 1; j < k && i < at.size(); ++j) {
@@ -340,14 +353,14 @@ class Folder {
       }
       if (starts.size() != k) continue;
       starts.push_back(to - from);
-      if (auto part = fold_tiles(axis, parts, from, at, starts, tile)) return part;
+      if (auto part = fold_tiles(axis, parts, from, at, starts, tile, per_copy > 1)) return part;
     }
     return std::nullopt;
   }
 
   std::optional<SplitPart> fold_tiles(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from,
                                       const std::vector<double>& at, const std::vector<std::size_t>& starts,
-                                      double tile) {
+                                      double tile, bool within_copies = false) {
     const std::size_t k = starts.size() - 1;
     // Every cut stays where it was: inside a tile, its parts keep their
     // shares of the tile.
@@ -368,6 +381,7 @@ class Folder {
         piece = fold_split(std::move(grouped), true);
       }
       built = built || !is_primitive(piece);
+      if (within_copies && is_primitive(piece)) return std::nullopt;
       empty = empty || is_nil(piece);
       auto it = std::find_if(held.begin(), held.end(), [&](const auto& h) {
         return same_node(h.first, piece);
@@ -375,7 +389,8 @@ class Folder {
       if (it == held.end()) held.emplace_back(piece, 1.0);
       else it->second += 1;
     }
-    if (held.size() > 1 && (!built || empty || !exchangeable(held))) return std::nullopt;
+    if (held.size() > 1 && (!built || empty || !(within_copies ? seen_trading(held) : exchangeable(held))))
+      return std::nullopt;
     NodeId body = held[0].first;
     if (held.size() > 1) {
       Choose choose;
@@ -387,13 +402,32 @@ class Folder {
   }
 
   // Tiles that may trade places: none holds a primitive that no other
-  // tile holds. A ground floor with the only door, under storeys of
-  // windows, is not one of the storeys; the storeys above it are.
+  // tile holds, here or in some other row (TradingLabels). A ground floor
+  // with the only door, under storeys of windows, is not one of the
+  // storeys; the storeys above it are. Notes what it saw in trading_.
   bool exchangeable(const std::vector<std::pair<NodeId, double>>& held) {
     std::map<LabelId, std::size_t> tiles_with;  // label -> tiles holding it
     for (const auto& [piece, count] : held)
       for (LabelId label : labels_below(piece)) tiles_with[label] += static_cast<std::size_t>(count);
-    return std::all_of(tiles_with.begin(), tiles_with.end(), [](const auto& l) { return l.second >= 2; });
+    bool lone = false;
+    for (const auto& [label, tiles] : tiles_with)
+      if (tiles < 2 && !trading_.seen.count(label)) {
+        trading_.lone.insert(label);
+        lone = true;
+      }
+    if (lone) return false;
+    for (const auto& [label, tiles] : tiles_with)
+      if (tiles >= 2) trading_.seen.insert(label);
+    return true;
+  }
+
+  // Tiles that other rows showed trading places: every label they hold
+  // was seen so (nothing noted: a periodic row is no evidence).
+  bool seen_trading(const std::vector<std::pair<NodeId, double>>& held) {
+    for (const auto& [piece, count] : held)
+      for (LabelId label : labels_below(piece))
+        if (!trading_.seen.count(label)) return false;
+    return true;
   }
 
   // The labels of the primitives below a node, ascending (memoised).
@@ -485,26 +519,36 @@ class Folder {
       };
       bool folded = false;
       const auto r = best_run(parts);
-      if (r && ((r->parts() >= 3 && r->parts() + 2 >= parts.size()) || between_ends(parts, *r))) {
+      const bool run_folds = r && ((r->parts() >= 3 && r->parts() + 2 >= parts.size()) || between_ends(parts, *r));
+      // Equal tiles of unlike contents, over the whole split or all but
+      // one or two end parts (the most parts first): bays each a window or
+      // a door, two or more of each (fold_tiles: a door bay alone keeps its
+      // place, below). Tried first, with the run's copies as tiles (or
+      // each cut into tiles, fold_unlike), where they cover as many parts
+      // as the run of equal parts or more: a balcony bay before three
+      // window bays is a row of four tiles, not a run of window bays read
+      // a wall late.
+      const bool unlike = unlike_ == UnlikeTiles::Fold;
+      auto fold_unlike_tiles = [&](std::size_t more_than, std::optional<double> only_tile) {
+        for (std::size_t outside = 0; !folded && outside <= 2 && outside + 3 <= parts.size(); ++outside) {
+          if (parts.size() - outside <= more_than) break;
+          for (std::size_t head = 0; head <= outside && !folded; ++head) {
+            const std::size_t from = head, to = parts.size() - (outside - head);
+            if (auto part = fold_unlike(s.axis, parts, from, to, only_tile)) {
+              replace(from, to, *part);
+              folded = true;
+            }
+          }
+        }
+      };
+      if (unlike && run_folds) fold_unlike_tiles(r->parts() - 1, length_of(parts, r->start, r->period));
+      if (!folded && run_folds) {
         if (const std::optional<SplitPart> part = fold(s.axis, parts, *r)) {
           replace(r->start, r->start + r->parts(), *part);
           folded = true;
         }
       }
-      // Else equal tiles of unlike contents, over the whole split or all
-      // but one or two end parts (the most parts first): bays each a
-      // window or a door, two or more of each (fold_tiles: a door bay
-      // alone keeps its place, below).
-      const bool unlike = unlike_ == UnlikeTiles::Fold;
-      for (std::size_t outside = 0; unlike && !folded && outside <= 2 && outside + 3 <= parts.size(); ++outside) {
-        for (std::size_t head = 0; head <= outside && !folded; ++head) {
-          const std::size_t from = head, to = parts.size() - (outside - head);
-          if (auto part = fold_unlike(s.axis, parts, from, to)) {
-            replace(from, to, *part);
-            folded = true;
-          }
-        }
-      }
+      if (unlike && !folded) fold_unlike_tiles(0, std::nullopt);
       // Else a row of compound tiles with other parts among them (a shop
       // front of bays with the entrance bay after some of them): each run
       // of the tiles a repeat, each stretch between runs one group.
@@ -526,6 +570,7 @@ class Folder {
   UnlikeTiles unlike_;
   TileCounts* counts_;  // where to note each repeat's tile count, or null
   const std::vector<bool>* kept_;  // by node id: left as it is, or null
+  TradingLabels& trading_;
   std::vector<NodeId> memo_;  // by node id; kNotYet until folded
   std::vector<std::vector<LabelId>> labels_;  // labels_below, by node id
   std::vector<bool> labels_known_;            // by node id: labels_ holds its labels
@@ -534,8 +579,9 @@ class Folder {
 }  // namespace
 
 NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike, TileCounts* counts,
-                    const std::vector<bool>* kept) {
-  return Folder(g, tolerance, unlike, counts, kept).run(root);
+                    const std::vector<bool>* kept, TradingLabels* trading) {
+  TradingLabels own;
+  return Folder(g, tolerance, unlike, counts, kept, trading != nullptr ? *trading : own).run(root);
 }
 
 }  // namespace vern

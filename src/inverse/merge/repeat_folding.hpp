@@ -46,6 +46,7 @@
 #pragma once
 
 #include <cstdint>
+#include <set>
 #include <unordered_map>
 #include <vector>
 
@@ -72,11 +73,25 @@ struct TileSeen {
 };
 using TileCounts = std::unordered_map<NodeId, std::vector<TileSeen>>;
 
+// Which tiles may trade places is read across rows and examples: a bay
+// with a balcony alone among window bays in one storey is one of the
+// tiles where another storey, or another building, shows two of them
+// (a choice made tile by tile), while a door bay is alone in every row.
+// Folding notes the labels it saw held by two tiles or more of a row of
+// unlike tiles (seen), and the labels that kept a row from folding for
+// being held by one tile only (lone); a label seen anywhere counts as
+// trading places everywhere. Merging folds again when some lone label
+// was seen elsewhere (merge.cpp).
+struct TradingLabels {
+  std::set<LabelId> seen, lone;
+};
+
 // Rewrites every split below root whose sizes are literals; returns the new
 // root (nodes interned in g). Notes each repeat's tile count in counts,
 // where given. Nodes `kept` marks (by id; placed groups, which merging
 // copies as they are) are left as they are, and all below them.
 NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike = UnlikeTiles::Fold,
-                    TileCounts* counts = nullptr, const std::vector<bool>* kept = nullptr);
+                    TileCounts* counts = nullptr, const std::vector<bool>* kept = nullptr,
+                    TradingLabels* trading = nullptr);
 
 }  // namespace vern
