@@ -105,5 +105,41 @@ TEST(TileChoices, NothingToUniteLeavesTheGraphAsItIs) {
   EXPECT_TRUE(u.replaced.empty());
 }
 
+TEST(TileChoices, ARowWhoseTilesAllHeldOneKindSharesTheChoiceOfRowsThatHeldMore) {
+  // A row of three plain buildings of one height (a split tile, no
+  // choice: a run of equal parts) and a row of plain and roofed ones: one
+  // row kind, whose tiles hold either, not two forms of the example.
+  Grammar g;
+  const auto roots = examples(g, {row(2, plain(4), plain(4), plain(4)), row(2, kRoofed, plain(4), kRoofed)});
+  const NodeId merged = merge_examples(g, roots, test::uniform_merge());
+  ASSERT_TRUE(std::holds_alternative<Repeat>(g.op(merged))) << write_operation(g, merged, {});
+  const auto held = alternatives(g, repeat_at(g, merged));
+  ASSERT_EQ(held.size(), 2u) << ::testing::PrintToString(held);
+  EXPECT_EQ(held[0].find("I(roof)"), std::string::npos) << held[0];  // the plain buildings
+  EXPECT_NE(held[1].find("I(roof)"), std::string::npos) << held[1];
+}
+
+TEST(TileChoices, TilesOfOneFrameAreOneFrameWithAChoiceWhereTheyDiffer) {
+  // Storeys of glass and a wall, or glass and a balcony, all walls in one
+  // house: one row kind whose frame stays, its part the choice, not a
+  // choice of two whole storeys (one_frame; AlternativeLengths' street of
+  // houses of one to four storeys shows where that matters).
+  Grammar g;
+  const std::string wall = "split(x){ ~1 : I(wall) | ~3 : I(glass) }";
+  const std::string balcony = "split(x){ ~1 : I(balcony) | ~3 : I(glass) }";
+  auto storeys = [](const std::vector<std::string>& kinds) {
+    std::string text = "split(z){";
+    for (std::size_t i = 0; i < kinds.size(); ++i) text += std::string(i ? " |" : "") + " ~3 : " + kinds[i];
+    return text + " }";
+  };
+  const auto roots = examples(g, {storeys({wall, wall, wall}), storeys({balcony, wall, wall, balcony})});
+  const NodeId merged = merge_examples(g, roots, test::uniform_merge());
+  ASSERT_TRUE(std::holds_alternative<Repeat>(g.op(merged))) << g.op(merged).index();
+  const auto* frame = std::get_if<Split>(&g.op(repeat_at(g, merged).child));
+  ASSERT_NE(frame, nullptr);
+  ASSERT_EQ(frame->parts.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<Choose>(g.op(frame->parts[0].child)));
+}
+
 }  // namespace
 }  // namespace vern

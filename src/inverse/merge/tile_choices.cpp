@@ -97,6 +97,7 @@ class Uniter {
         }
       }
       if (options.size() < 2) continue;
+      if (std::get<1>(places_[c]) == kWholeTile && one_frame(options)) continue;
       Choose choose;
       for (const auto& [alternative, weight] : options)
         choose.options.push_back({Expr{}, Expr::number(weight), alternative});
@@ -132,6 +133,21 @@ class Uniter {
  private:
   bool is_nil(NodeId id) const { return std::holds_alternative<Nil>(g_.op(id)); }
 
+  // Whole tiles that are one split but for what some parts hold (a storey
+  // of a balcony and glass, one of a wall and glass): their parts are the
+  // slots that unite, not the tiles (the frame's part then a choice).
+  bool one_frame(const std::vector<std::pair<NodeId, double>>& options) const {
+    const auto* first = std::get_if<Split>(&g_.op(options[0].first));
+    if (!first) return false;
+    return std::all_of(options.begin() + 1, options.end(), [&](const auto& o) {
+      const auto* s = std::get_if<Split>(&g_.op(o.first));
+      if (!s || s->axis != first->axis || s->parts.size() != first->parts.size()) return false;
+      for (std::size_t i = 0; i < s->parts.size(); ++i)
+        if (!(s->parts[i].size == first->parts[i].size)) return false;
+      return true;
+    });
+  }
+
   void add_slot(NodeId repeat, std::size_t part, NodeId held, const Place& place, Range tile) {
     Slot slot{repeat, part, held, tile, {}};
     if (const Choose* c = plain_choose(g_.op(held))) {
@@ -158,6 +174,10 @@ class Uniter {
       add_slot(id, kWholeTile, r->child, {*axis, kWholeTile, 0, 0}, *tile);
       return;
     }
+    // The whole tile too, as a choice of one: a row whose bays all came
+    // out windows is the row whose bays are each a window or a balcony
+    // (unless the tiles are one frame: one_frame).
+    add_slot(id, kWholeTile, r->child, {*axis, kWholeTile, 0, 0}, *tile);
     for (std::size_t i = 0; i < split->parts.size(); ++i) {
       const NodeId child = std::get<Split>(g_.op(r->child)).parts[i].child;
       if (!is_nil(child)) add_slot(id, i, child, {*axis, i, split->parts.size(), *split_axis}, *tile);
