@@ -201,7 +201,6 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     if (parts <= kJoinedPartsLimit) {
       Witnesses witnesses;
       join_tile_run_alternatives(out.grammar, examples, {exact, options.threads}, witnesses);
-      keep_choices(out.grammar, examples, {exact, options.threads}, witnesses);
       drop_subsumed_options(out.grammar, examples, {exact, options.threads}, witnesses);
     }
     // Sizes that vary together, drawn once: from the lengths of the
@@ -213,6 +212,12 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
       joint.uniform_distributions = options.uniform_distributions;
       joint.threads = options.threads;
       out.joint = join_sizes(out.grammar, examples, joint);
+    }
+    // Kept after sizes are joined: the kind is passed down beside the
+    // sizes drawn once (joining reads no rule that takes parameters).
+    if (parts <= kJoinedPartsLimit) {
+      Witnesses witnesses;
+      keep_choices(out.grammar, examples, {exact, options.threads}, witnesses);
     }
     // Rows whose tiles step down (or up) as they go: a recursion with the
     // step, read from the sizes just joined (progressions.hpp).

@@ -1,14 +1,19 @@
 #include "inverse/merge/kept_choices.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
 
 #include "inverse/merge/equal_options.hpp"
+#include "inverse/merge/substitute.hpp"
+#include "inverse/write/unused_rules.hpp"
 
 namespace vern {
 
@@ -18,6 +23,10 @@ namespace {
 // for their never doing so to say they are kept: e^-3, one chance in 20.
 constexpr double kExpectedTogether = 3;
 
+// Alternatives of one choice among which kinds are searched (every set of
+// them is tried): a choice of more is not read for kinds.
+constexpr std::size_t kMaxKindsSearched = 12;
+
 // What the witnesses say of one choice: per example, how often it was
 // drawn and which alternatives it took.
 struct Taken {
@@ -25,18 +34,101 @@ struct Taken {
   std::vector<std::vector<std::size_t>> options;   // per example: times each alternative was taken
 };
 
-Taken taken_by(const std::vector<CheckResult>& results, NodeId choose, std::size_t options) {
+// An alternative as kinds are read: one of the choice's own, or, where
+// that alternative holds the only call of a rule whose body is a choice
+// of its own (bays each a frame around an infill or a window, the frame
+// one alternative beside a pair of windows), one of that rule's
+// alternatives in its frame. Kinds kept per building may lie on both
+// levels: houses of pairs and windows, houses of infills and windows.
+struct FlatOption {
+  std::size_t outer = 0;               // the choice's alternative
+  std::optional<RuleId> inner;         // the rule it calls, if read through it
+  std::size_t index = 0;               // that rule's alternative
+  NodeId call = 0;                     // the call in the outer alternative
+};
+
+Taken taken_by(const std::vector<CheckResult>& results, const Grammar& g, NodeId choose,
+               const std::vector<FlatOption>& flat) {
+  const std::size_t outer = std::get<Choose>(g.op(choose)).options.size();
   Taken t;
   for (const CheckResult& r : results) {
     t.draws.push_back(0);
-    t.options.emplace_back(options, 0);
-    for (const CheckStep& step : r.steps)
-      if (step.kind == CheckStep::Kind::Alternative && step.node == choose && step.index < options) {
+    t.options.emplace_back(flat.size(), 0);
+    std::vector<std::size_t> outer_taken(outer, 0);
+    std::map<std::pair<NodeId, std::size_t>, std::size_t> inner_taken;  // (choice, alternative) -> times
+    for (const CheckStep& step : r.steps) {
+      if (step.kind != CheckStep::Kind::Alternative) continue;
+      if (step.node == choose && step.index < outer) {
         ++t.draws.back();
-        ++t.options.back()[step.index];
+        ++outer_taken[step.index];
+      } else {
+        ++inner_taken[{step.node, step.index}];
       }
+    }
+    for (std::size_t f = 0; f < flat.size(); ++f)
+      t.options.back()[f] = flat[f].inner ? inner_taken[{g.rules[*flat[f].inner].body, flat[f].index}]
+                                          : outer_taken[flat[f].outer];
   }
   return t;
+}
+
+// How many times each rule is called, over every path through every
+// rule's body (a call inside a node two parents share counts twice).
+std::vector<std::size_t> call_counts(const Grammar& g) {
+  std::vector<std::size_t> calls(g.rules.size(), 0);
+  std::unordered_map<NodeId, std::vector<std::pair<RuleId, std::size_t>>> below;  // node -> calls under it
+  std::function<const std::vector<std::pair<RuleId, std::size_t>>&(NodeId)> under =
+      [&](NodeId n) -> const std::vector<std::pair<RuleId, std::size_t>>& {
+    if (const auto it = below.find(n); it != below.end()) return it->second;
+    std::map<RuleId, std::size_t> count;
+    if (const auto* c = std::get_if<Call>(&g.op(n))) ++count[c->rule];
+    for_each_child(g.op(n), [&](NodeId child) {
+      for (const auto& [rule, times] : under(child)) count[rule] += times;
+    });
+    return below[n] = {count.begin(), count.end()};
+  };
+  for (const Rule& r : g.rules)
+    for (const auto& [rule, times] : under(r.body)) calls[rule] += times;
+  return calls;
+}
+
+// The choice's alternatives as kinds are read (FlatOption): each as it
+// is, or, where it holds the only call of a rule of a plain choice,
+// reached through splits and transforms only (not a repeat: one draw of
+// the alternative, one of the rule), each of that rule's alternatives.
+// Empty where no alternative reads through.
+std::vector<FlatOption> flat_options(const Grammar& g, const Choose& c, const std::vector<std::size_t>& calls) {
+  std::vector<FlatOption> flat;
+  bool through = false;
+  for (std::size_t i = 0; i < c.options.size(); ++i) {
+    std::optional<NodeId> site;
+    std::size_t sites = 0;
+    std::function<void(NodeId)> visit = [&](NodeId n) {
+      const Operation& op = g.op(n);
+      if (const auto* call = std::get_if<Call>(&op)) {
+        const Rule& rule = g.rules[call->rule];
+        const auto* inner = std::get_if<Choose>(&g.op(rule.body));
+        if (inner && plain_choice(*inner) && rule.params.empty() && call->args.empty() && calls[call->rule] == 1) {
+          site = n;
+          ++sites;
+        }
+        return;
+      }
+      if (std::holds_alternative<Repeat>(op) || std::holds_alternative<Choose>(op)) return;
+      for_each_child(op, [&](NodeId child) { visit(child); });
+    };
+    visit(c.options[i].child);
+    if (sites != 1) {
+      flat.push_back({i, std::nullopt, 0, 0});
+      continue;
+    }
+    const RuleId rule = std::get<Call>(g.op(*site)).rule;
+    const std::size_t count = std::get<Choose>(g.op(g.rules[rule].body)).options.size();
+    for (std::size_t j = 0; j < count; ++j) flat.push_back({i, rule, j, *site});
+    through = true;
+  }
+  if (!through) return {};
+  return flat;
 }
 
 // The kinds kept per building among a choice's alternatives, if there are
@@ -65,16 +157,37 @@ std::vector<std::size_t> kept_kinds(const Taken& t, std::size_t options) {
     }
     return expected >= kExpectedTogether;
   };
-  std::vector<std::size_t> order(options);
-  for (std::size_t i = 0; i < options; ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return share[a] > share[b]; });
+  // The largest set of kinds pairwise exclusive (then the most draws):
+  // greedily by share, the commonest alternative, taken by houses of
+  // either kind, would shut both kinds out.
   std::vector<std::size_t> kinds;
-  for (const std::size_t i : order) {
-    if (examples_with(i) < 2) continue;
-    if (std::all_of(kinds.begin(), kinds.end(), [&](std::size_t k) { return exclusive(i, k); })) kinds.push_back(i);
+  if (options > kMaxKindsSearched) return {};
+  std::vector<std::uint32_t> apart(options, 0);  // per alternative: those it never shares an example with
+  std::uint32_t eligible = 0;
+  for (std::size_t i = 0; i < options; ++i) {
+    if (examples_with(i) >= 2) eligible |= 1u << i;
+    for (std::size_t j = 0; j < options; ++j)
+      if (j != i && exclusive(i, j)) apart[i] |= 1u << j;
   }
+  std::uint32_t best = 0;
+  double best_share = 0;
+  for (std::uint32_t set = 1; set < (1u << options); ++set) {
+    if ((set & ~eligible) != 0 || std::popcount(set) < std::max(2, std::popcount(best))) continue;
+    bool pairwise = true;
+    double total = 0;
+    for (std::size_t i = 0; i < options && pairwise; ++i)
+      if (set & (1u << i)) {
+        pairwise = (set & ~apart[i] & ~(1u << i)) == 0;
+        total += share[i];
+      }
+    if (pairwise && (std::popcount(set) > std::popcount(best) || total > best_share)) {
+      best = set;
+      best_share = total;
+    }
+  }
+  for (std::size_t i = 0; i < options; ++i)
+    if (best & (1u << i)) kinds.push_back(i);
   if (kinds.size() < 2) return {};
-  std::sort(kinds.begin(), kinds.end());
   return kinds;
 }
 
@@ -123,7 +236,7 @@ NodeId passing_on(Grammar& g, NodeId body, const std::set<RuleId>& chain, std::u
 
 // g with rule `rule`'s choice kept per building: its kinds' alternatives
 // under `b == k`, the others under every k.
-void keep(Grammar& g, RuleId rule, const std::vector<std::size_t>& kinds) {
+void keep(Grammar& g, RuleId rule, const std::vector<FlatOption>& flat, const std::vector<std::size_t>& kinds) {
   const Choose c = std::get<Choose>(g.op(g.rules[rule].body));
   std::set<RuleId> chain = leading_to(g, rule);
   // The start rule keeps no parameter: a rule of its own takes its body,
@@ -146,12 +259,30 @@ void keep(Grammar& g, RuleId rule, const std::vector<std::size_t>& kinds) {
   // The choice: each kind under its condition, the rest under each.
   const auto param = static_cast<std::uint32_t>(g.rules[rule].params.size() - 1);
   Choose kept_choice;
+  // Each flat option as an alternative: one read through a rule is its
+  // outer alternative with the call replaced by the rule's alternative,
+  // weighted by both draws.
+  std::vector<ChooseOption> options;
+  for (const FlatOption& f : flat) {
+    const ChooseOption& outer = c.options[f.outer];
+    if (!f.inner) {
+      options.push_back(outer);
+      continue;
+    }
+    const Choose& inner = std::get<Choose>(g.op(g.rules[*f.inner].body));
+    double total = 0;
+    for (const ChooseOption& o : inner.options) total += *o.priority.literal();
+    const double weight = *outer.priority.literal() * *inner.options[f.index].priority.literal() / total;
+    std::vector<NodeId> replace(f.call + 1, kNoReplacement);
+    replace[f.call] = inner.options[f.index].child;
+    options.push_back({Expr{}, Expr::number(weight), substitute(g, outer.child, replace)});
+  }
   for (std::size_t k = 0; k < kinds.size(); ++k) {
     const Expr is_k = Expr::binary(BinaryOp::Eq, Expr::param(param), Expr::number(static_cast<double>(k)));
-    for (std::size_t i = 0; i < c.options.size(); ++i) {
+    for (std::size_t i = 0; i < options.size(); ++i) {
       const bool kind = std::find(kinds.begin(), kinds.end(), i) != kinds.end();
       if (kind && i != kinds[k]) continue;
-      kept_choice.options.push_back({is_k, c.options[i].priority, c.options[i].child});
+      kept_choice.options.push_back({is_k, options[i].priority, options[i].child});
     }
   }
   g.rules[rule].body = g.intern({std::move(kept_choice), g.node(g.rules[rule].body).loc});
@@ -169,22 +300,33 @@ std::size_t keep_choices(Grammar& g, const std::vector<Example>& examples, const
   std::vector<RuleId> candidates;
   for (RuleId r = 0; r < g.rules.size(); ++r) {
     const auto* c = std::get_if<Choose>(&g.op(g.rules[r].body));
-    if (c && plain_choice(*c) && g.rules[r].params.empty() && r != g.start_rule) candidates.push_back(r);
+    if (c && plain_choice(*c) && r != g.start_rule) candidates.push_back(r);
   }
   if (candidates.empty()) return 0;
   if (!witnesses_of(g, examples, options, witnesses)) return 0;
+  const std::vector<std::size_t> calls = call_counts(g);
   for (const RuleId r : candidates) {
     const NodeId body = g.rules[r].body;
-    const std::size_t count = std::get<Choose>(g.op(body)).options.size();
-    const std::vector<std::size_t> kinds = kept_kinds(taken_by(witnesses.results, body, count), count);
-    if (kinds.empty()) continue;
-    Grammar candidate = g;
-    keep(candidate, r, kinds);
-    std::vector<CheckResult> results;
-    if (!derives_examples(candidate, examples, options, results)) continue;
-    g = std::move(candidate);
-    witnesses.known = false;
-    return 1;
+    const Choose& c = std::get<Choose>(g.op(body));
+    // The alternatives as they are first, then read through the rules
+    // they call (FlatOption).
+    std::vector<FlatOption> own;
+    for (std::size_t i = 0; i < c.options.size(); ++i) own.push_back({i, std::nullopt, 0, 0});
+    for (const std::vector<FlatOption>& flat : {own, flat_options(g, c, calls)}) {
+      if (flat.empty()) continue;
+      const std::vector<std::size_t> kinds = kept_kinds(taken_by(witnesses.results, g, body, flat), flat.size());
+      if (kinds.empty()) continue;
+      Grammar candidate = g;
+      keep(candidate, r, flat, kinds);
+      // A rule read through is called no more (its alternatives stand in
+      // the kept choice).
+      if (flat.size() != own.size()) drop_unused_rules(candidate);
+      std::vector<CheckResult> results;
+      if (!derives_examples(candidate, examples, options, results)) continue;
+      g = std::move(candidate);
+      witnesses.known = false;
+      return 1;
+    }
   }
   return 0;
 }
