@@ -198,9 +198,11 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     // door) only draw what no example asked for: dropped. All checked,
     // and all read the examples' witnesses, found once between them
     // where nothing changes.
+    bool kept = false;
     if (parts <= kJoinedPartsLimit) {
       Witnesses witnesses;
       join_tile_run_alternatives(out.grammar, examples, {exact, options.threads}, witnesses);
+      kept = shows_kept_choices(out.grammar, examples, {exact, options.threads}, witnesses);
       drop_subsumed_options(out.grammar, examples, {exact, options.threads}, witnesses);
     }
     // Sizes that vary together, drawn once: from the lengths of the
@@ -215,7 +217,8 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     }
     // Kept after sizes are joined: the kind is passed down beside the
     // sizes drawn once (joining reads no rule that takes parameters).
-    if (parts <= kJoinedPartsLimit) {
+    // Checked again only where the witnesses above showed kinds kept.
+    if (kept) {
       Witnesses witnesses;
       keep_choices(out.grammar, examples, {exact, options.threads}, witnesses);
     }

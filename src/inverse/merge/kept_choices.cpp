@@ -293,40 +293,60 @@ void keep(Grammar& g, RuleId rule, const std::vector<FlatOption>& flat, const st
          g.node(g.rules[start].body).loc});
 }
 
-}  // namespace
+// A choice whose kinds are kept per building, as the witnesses show it.
+struct Kept {
+  RuleId rule = 0;
+  std::vector<FlatOption> flat;   // its alternatives as kinds are read
+  std::vector<std::size_t> kinds;  // into flat
+};
 
-std::size_t keep_choices(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
-                         Witnesses& witnesses) {
+// Every choice showing kinds kept per building, in rule order: read as
+// its alternatives first, then through the rules they call (FlatOption).
+// Empty where no choice does, or some example does not derive.
+std::vector<Kept> kept_choices(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
+                               Witnesses& witnesses) {
   std::vector<RuleId> candidates;
   for (RuleId r = 0; r < g.rules.size(); ++r) {
     const auto* c = std::get_if<Choose>(&g.op(g.rules[r].body));
     if (c && plain_choice(*c) && r != g.start_rule) candidates.push_back(r);
   }
-  if (candidates.empty()) return 0;
-  if (!witnesses_of(g, examples, options, witnesses)) return 0;
+  if (candidates.empty() || !witnesses_of(g, examples, options, witnesses)) return {};
   const std::vector<std::size_t> calls = call_counts(g);
+  std::vector<Kept> out;
   for (const RuleId r : candidates) {
     const NodeId body = g.rules[r].body;
     const Choose& c = std::get<Choose>(g.op(body));
-    // The alternatives as they are first, then read through the rules
-    // they call (FlatOption).
     std::vector<FlatOption> own;
     for (std::size_t i = 0; i < c.options.size(); ++i) own.push_back({i, std::nullopt, 0, 0});
     for (const std::vector<FlatOption>& flat : {own, flat_options(g, c, calls)}) {
       if (flat.empty()) continue;
-      const std::vector<std::size_t> kinds = kept_kinds(taken_by(witnesses.results, g, body, flat), flat.size());
-      if (kinds.empty()) continue;
-      Grammar candidate = g;
-      keep(candidate, r, flat, kinds);
-      // A rule read through is called no more (its alternatives stand in
-      // the kept choice).
-      if (flat.size() != own.size()) drop_unused_rules(candidate);
-      std::vector<CheckResult> results;
-      if (!derives_examples(candidate, examples, options, results)) continue;
-      g = std::move(candidate);
-      witnesses.known = false;
-      return 1;
+      std::vector<std::size_t> kinds = kept_kinds(taken_by(witnesses.results, g, body, flat), flat.size());
+      if (!kinds.empty()) out.push_back({r, flat, std::move(kinds)});
     }
+  }
+  return out;
+}
+
+}  // namespace
+
+bool shows_kept_choices(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
+                        Witnesses& witnesses) {
+  return !kept_choices(g, examples, options, witnesses).empty();
+}
+
+std::size_t keep_choices(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
+                         Witnesses& witnesses) {
+  for (const Kept& k : kept_choices(g, examples, options, witnesses)) {
+    Grammar candidate = g;
+    keep(candidate, k.rule, k.flat, k.kinds);
+    // A rule read through is called no more (its alternatives stand in
+    // the kept choice).
+    if (k.flat.size() != std::get<Choose>(g.op(g.rules[k.rule].body)).options.size()) drop_unused_rules(candidate);
+    std::vector<CheckResult> results;
+    if (!derives_examples(candidate, examples, options, results)) continue;
+    g = std::move(candidate);
+    witnesses.known = false;
+    return 1;
   }
   return 0;
 }

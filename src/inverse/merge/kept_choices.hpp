@@ -7,8 +7,12 @@
 // The examples' witnesses show it: per example, the alternatives a choice
 // takes. Alternatives that never share an example, though each is taken
 // in several and, drawn freely, would have shared some (three examples or
-// more expected), are kinds kept per building; the others go with any
-// kind. The choice then takes a parameter, `kind(b) : b == 0 --> ...`,
+// more expected), are kinds kept per building (the largest such set); the
+// others go with any kind. An alternative that holds the only call of a
+// rule that is a choice of its own (a frame of render | opening | render
+// whose opening is glass or an infill, beside a bay of paired windows) is
+// read through it as well: kinds may lie on both levels (houses of pairs
+// and glass, houses of infills and glass). The choice then takes a parameter, `kind(b) : b == 0 --> ...`,
 // passed down from the start rule through every rule that leads to it,
 // drawn once per building there (`randint(0, k - 1)`). Kept only if every
 // example still derives.
@@ -22,6 +26,14 @@
 #include "inverse/load/example.hpp"
 
 namespace vern {
+
+// Whether some choice of g shows kinds kept per building (what
+// keep_choices would try), by g's witnesses: read where known, else
+// checked. Joining sizes leaves choices and their alternatives as they
+// are, so asked before it, this says whether keep_choices is worth its
+// check after it.
+bool shows_kept_choices(const Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options,
+                        Witnesses& witnesses);
 
 // Rewrites g in place (one choice, the first found in rule order);
 // returns how many choices became kept (0: g as it was). witnesses: g's,
