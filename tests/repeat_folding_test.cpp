@@ -365,5 +365,38 @@ TEST(RepeatFolding, AlternatingBaysAreARunOfPairsUnlessOtherRowsShowThemTradingP
   EXPECT_EQ(choice->options.size(), 2u);
 }
 
+TEST(RepeatFolding, BaysOfTwoKindsAroundAnOddBayAreRunsOfTheirChoiceAndTheOddBay) {
+  // Bays each a balcony or a window bay, their openings drawn bay by bay
+  // (no two alike), a bay of paired windows third, and the bays after it
+  // a little wider (the rest of the row shared out): runs of pieces of one
+  // length, each a repeat of a choice of its bays, around the odd bay.
+  auto bay = [](double wall, double opening, bool balcony) {
+    return " ~" + std::to_string(wall) + " : I(rect) | ~" + std::to_string(opening) + " : " +
+           (balcony ? "split(z){ ~1 : I(balcony) | ~2 : I(pane) }" : "split(z){ ~2 : I(rect) | ~4 : I(pane) | ~1 : I(rect) }") +
+           " | ~" + std::to_string(wall) + " : I(rect) |";
+  };
+  std::string row = "a --> split(x){" + bay(0.95, 1.9, true) + bay(0.9, 2.0, false) +
+                    " ~0.9 : I(rect) | ~0.8 : I(pane) | ~0.4 : I(rect) | ~0.8 : I(pane) | ~0.9 : I(rect) |" +
+                    bay(1.0, 1.9, true) + bay(0.95, 2.0, false) + bay(1.0, 1.9, true);
+  row.pop_back();
+  row += "}\n";
+  const Folded f = fold_text(row);
+  const auto* s = std::get_if<Split>(&f.g.op(f.body));
+  ASSERT_NE(s, nullptr);
+  ASSERT_EQ(s->parts.size(), 3u);
+  for (const std::size_t run : {0u, 2u}) {
+    const auto* tiles = std::get_if<Repeat>(&f.g.op(s->parts[run].child));
+    ASSERT_NE(tiles, nullptr) << run;
+    const auto* choice = std::get_if<Choose>(&f.g.op(tiles->child));
+    ASSERT_NE(choice, nullptr) << run;
+    ASSERT_EQ(choice->options.size(), 2u) << run;
+    EXPECT_EQ(choice->options[0].priority.literal(), run == 0 ? 1.0 : 2.0);  // the balcony bays
+  }
+  EXPECT_DOUBLE_EQ(*s->parts[0].size.value.literal(), 7.6);  // two bays of 3.8
+  const auto* pair = std::get_if<Split>(&f.g.op(s->parts[1].child));
+  ASSERT_NE(pair, nullptr);
+  EXPECT_EQ(pair->parts.size(), 5u);
+}
+
 }  // namespace
 }  // namespace vern

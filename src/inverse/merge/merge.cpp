@@ -916,7 +916,9 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
                                     &tile_counts, &copied, &trading));
   };
   fold_all();
-  if (std::any_of(trading.lone.begin(), trading.lone.end(), [&](LabelId l) { return trading.seen.count(l) > 0; }))
+  if (std::any_of(trading.lone.begin(), trading.lone.end(), [&](LabelId l) { return trading.seen.count(l) > 0; }) ||
+      std::any_of(trading.shapes_lone.begin(), trading.shapes_lone.end(),
+                  [&](std::size_t shape) { return trading.shapes_seen.count(shape) > 0; }))
     fold_all();
   Choose all;
   for (NodeId r : folded) all.options.push_back({Expr{}, Expr::number(1.0), r});

@@ -5,9 +5,11 @@
 #include <iterator>
 #include <map>
 #include <optional>
+#include <set>
 #include <unordered_map>
 #include <vector>
 
+#include "base/hashing.hpp"
 #include "graph/structural.hpp"
 #include "inverse/sizes/tidy_numbers.hpp"
 
@@ -225,6 +227,190 @@ class Folder {
     return true;
   }
 
+  // A row of tiles of a few kinds, each tile drawn from them, with an odd
+  // tile among them (bays each a balcony or a window bay, the entrance or
+  // a bay of paired windows at some place): no pattern recurs part for
+  // part, but the row is runs of pieces of one length. Read left to
+  // right, each run is the shortest piece (not a bare primitive) that the
+  // next piece repeats in length, for as long as pieces of that length
+  // follow (of several, the longest run, then the one of fewest kinds). A piece whose kind (its shape, sizes aside: tile_shape) is
+  // the only one of its kind in the row, and no other row showed trading
+  // places (TradingLabels::shapes), is the odd tile: it stands alone,
+  // between runs. Each run becomes a repeat of a choice of its pieces
+  // (merging unites them), each stretch between runs a part or one
+  // group. Only where the runs hold tiles of two kinds or more, or of a
+  // kind seen trading in other rows (a row of one kind is segment_row's),
+  // and cover half the row.
+  bool segment_kinds(const Expr& axis, std::vector<SplitPart>& parts) {
+    const std::size_t n = parts.size();
+    if (n < 4) return false;
+    std::vector<double> at{0};
+    for (const SplitPart& p : parts) at.push_back(at.back() + *p.size.value.literal());
+    // The end of the piece of `length` starting at `from`, if a cut is there.
+    auto piece_end = [&](std::size_t from, double length) -> std::optional<std::size_t> {
+      for (std::size_t j = from + 1; j <= n && j - from <= kMaxPartsPerTile; ++j) {
+        const double l = at[j] - at[from];
+        if (std::abs(l - length) <= tol_) return j;
+        if (l > length + tol_) break;
+      }
+      return std::nullopt;
+    };
+    auto bare = [&](std::size_t from, std::size_t to) { return to - from == 1 && is_primitive(parts[from].child); };
+    struct PieceRun {
+      std::vector<std::size_t> starts;  // each piece's first part, then the run's end
+    };
+    // Of the runs starting at a part, the one reaching furthest, then of
+    // the fewest kinds: a row of bays wall | window | wall in equal
+    // thirds is also pieces of two thirds (wall window, wall wall, window
+    // wall), of three kinds where the bays are of one.
+    auto kinds_in = [&](const PieceRun& run) {
+      std::set<std::size_t> seen;
+      for (std::size_t k = 0; k + 1 < run.starts.size(); ++k)
+        seen.insert(tile_shape(group(axis, parts, run.starts[k], run.starts[k + 1])));
+      return seen.size();
+    };
+    std::vector<PieceRun> runs;
+    for (std::size_t i = 0; i < n;) {
+      std::optional<PieceRun> run;
+      std::size_t run_kinds = 0;
+      for (std::size_t j = i + 1; j < n && j - i <= kMaxPartsPerTile; ++j) {
+        if (bare(i, j)) continue;
+        const double length = at[j] - at[i];
+        const auto next = piece_end(j, length);
+        if (!next || bare(j, *next)) continue;
+        PieceRun here{{i, j, *next}};
+        for (auto more = piece_end(*next, length); more && !bare(here.starts.back(), *more);
+             more = piece_end(here.starts.back(), length))
+          here.starts.push_back(*more);
+        const std::size_t here_kinds = kinds_in(here);
+        if (!run || here.starts.back() > run->starts.back() ||
+            (here.starts.back() == run->starts.back() && here_kinds < run_kinds)) {
+          run = std::move(here);
+          run_kinds = here_kinds;
+        }
+      }
+      if (!run) {
+        ++i;
+        continue;
+      }
+      i = run->starts.back();
+      runs.push_back(std::move(*run));
+    }
+    if (runs.empty()) return false;
+    // The kinds of the row's pieces; a kind seen once is the odd tile
+    // unless other rows showed it trading places.
+    std::map<std::size_t, std::size_t> kinds;  // shape -> pieces
+    std::vector<std::vector<std::size_t>> shapes(runs.size());
+    for (std::size_t r = 0; r < runs.size(); ++r)
+      for (std::size_t k = 0; k + 1 < runs[r].starts.size(); ++k) {
+        shapes[r].push_back(tile_shape(group(axis, parts, runs[r].starts[k], runs[r].starts[k + 1])));
+        ++kinds[shapes[r].back()];
+      }
+    auto trades = [&](std::size_t shape) { return kinds[shape] >= 2 || trading_.shapes_seen.count(shape) > 0; };
+    // Runs cut around odd tiles; segments in order: runs of pieces, and
+    // stretches of parts between.
+    struct Segment {
+      std::size_t from, to;
+      std::vector<std::size_t> starts;  // empty: a stretch
+    };
+    std::vector<Segment> segments;
+    auto stretch = [&](std::size_t from, std::size_t to) {
+      if (from == to) return;
+      if (!segments.empty() && segments.back().starts.empty() && segments.back().to == from) segments.back().to = to;
+      else segments.push_back({from, to, {}});
+    };
+    std::size_t covered = 0;
+    bool mixed;
+    std::size_t done = 0;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      stretch(done, runs[r].starts.front());
+      std::vector<std::size_t> current;
+      auto close = [&] {
+        if (current.size() >= 2) {
+          segments.push_back({current.front(), current.back(), current});
+          covered += current.back() - current.front();
+        }
+        current.clear();
+      };
+      for (std::size_t k = 0; k + 1 < runs[r].starts.size(); ++k) {
+        const std::size_t from = runs[r].starts[k], to = runs[r].starts[k + 1];
+        if (!trades(shapes[r][k])) {
+          close();
+          stretch(from, to);
+          continue;
+        }
+        if (current.empty()) current.push_back(from);
+        current.push_back(to);
+      }
+      close();
+      done = segments.empty() ? runs[r].starts.front() : segments.back().to;
+      done = std::max(done, runs[r].starts.front());
+    }
+    stretch(done, n);
+    // Tiles of two kinds or more in the runs, or of a kind other rows
+    // showed trading places: runs of balcony bays and of window bays
+    // around the odd bay are runs of the one choice.
+    std::set<std::size_t> in_runs;
+    for (const Segment& seg : segments)
+      for (std::size_t k = 0; k + 1 < seg.starts.size(); ++k)
+        in_runs.insert(tile_shape(group(axis, parts, seg.starts[k], seg.starts[k + 1])));
+    mixed = in_runs.size() >= 2 ||
+            std::any_of(in_runs.begin(), in_runs.end(), [&](std::size_t k) { return trading_.shapes_seen.count(k) > 0; });
+    if (2 * covered < n) return false;
+    if (!mixed) {
+      // A row of one kind here, which another row may show trading.
+      trading_.shapes_lone.insert(in_runs.begin(), in_runs.end());
+      return false;
+    }
+    // Note what the row showed: kinds in two tiles or more trade places.
+    for (const auto& [shape, count] : kinds) (count >= 2 ? trading_.shapes_seen : trading_.shapes_lone).insert(shape);
+    std::vector<SplitPart> out;
+    for (const Segment& seg : segments) {
+      if (!seg.starts.empty()) {
+        std::vector<double> local;
+        std::vector<std::size_t> starts;
+        for (std::size_t i = seg.from; i <= seg.to; ++i) local.push_back(at[i] - at[seg.from]);
+        for (std::size_t st : seg.starts) starts.push_back(st - seg.from);
+        const double tile = local.back() / static_cast<double>(starts.size() - 1);
+        auto part = fold_tiles(axis, parts, seg.from, local, starts, tile, false, Exchange::Shapes);
+        if (!part) return false;
+        out.push_back(*part);
+      } else if (seg.to - seg.from == 1) {
+        out.push_back(parts[seg.from]);
+      } else {
+        bool relative = true;
+        for (std::size_t j = seg.from; j < seg.to; ++j) relative = relative && parts[j].size.relative;
+        if (!relative) return false;
+        out.push_back({Size{Expr::number(at[seg.to] - at[seg.from]), true}, group(axis, parts, seg.from, seg.to)});
+      }
+    }
+    parts = std::move(out);
+    return true;
+  }
+
+  // A node's shape: its structure with every size and amount left out
+  // (memoised), so that tiles of one kind whose sizes were drawn tile by
+  // tile are one kind.
+  std::size_t tile_shape(NodeId id) {
+    if (const auto it = shapes_.find(id); it != shapes_.end()) return it->second;
+    const Operation& op = g_.op(id);
+    std::size_t h = hash_combine(0x5eed, op.index());
+    if (const auto* p = std::get_if<Primitive>(&op)) h = hash_combine(h, p->label);
+    auto axis_of = [](const Expr& e) { return static_cast<std::size_t>(e.literal_axis().value_or(9)); };
+    if (const auto* sp = std::get_if<Split>(&op)) {
+      h = hash_combine(h, axis_of(sp->axis));
+      for (const SplitPart& part : sp->parts) h = hash_combine(hash_combine(h, part.size.relative), tile_shape(part.child));
+    } else {
+      if (const auto* r = std::get_if<Repeat>(&op)) h = hash_combine(h, axis_of(r->axis));
+      if (const auto* r = std::get_if<RepeatN>(&op)) h = hash_combine(h, axis_of(r->axis));
+      std::vector<NodeId> children;
+      for_each_child(op, [&](NodeId c) { children.push_back(c); });
+      for (NodeId c : children) h = hash_combine(h, tile_shape(c));
+    }
+    shapes_.emplace(id, h);
+    return h;
+  }
+
   // The length of parts[i, i + period), all literal.
   static double length_of(const std::vector<SplitPart>& parts, std::size_t i, std::size_t period) {
     double length = 0;
@@ -358,9 +544,13 @@ class Folder {
     return std::nullopt;
   }
 
+  // How fold_tiles tells tiles that may trade places: by the labels they
+  // hold (exchangeable), or by their kinds, already told (segment_kinds).
+  enum class Exchange { Labels, Shapes };
+
   std::optional<SplitPart> fold_tiles(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from,
                                       const std::vector<double>& at, const std::vector<std::size_t>& starts,
-                                      double tile, bool within_copies = false) {
+                                      double tile, bool within_copies = false, Exchange exchange = Exchange::Labels) {
     const std::size_t k = starts.size() - 1;
     // Every cut stays where it was: inside a tile, its parts keep their
     // shares of the tile.
@@ -389,7 +579,9 @@ class Folder {
       if (it == held.end()) held.emplace_back(piece, 1.0);
       else it->second += 1;
     }
-    if (held.size() > 1 && (!built || empty || !(within_copies ? seen_trading(held) : exchangeable(held))))
+    // (Tiles segment_kinds found are exchangeable by their kinds already.)
+    if (held.size() > 1 && exchange == Exchange::Labels &&
+        (!built || empty || !(within_copies ? seen_trading(held) : exchangeable(held))))
       return std::nullopt;
     NodeId body = held[0].first;
     if (held.size() > 1) {
@@ -549,6 +741,11 @@ class Folder {
         }
       }
       if (unlike && !folded) fold_unlike_tiles(0, std::nullopt);
+      // Else a row of tiles of a few kinds with odd tiles among them.
+      if (unlike && !folded && segment_kinds(s.axis, parts)) {
+        folded = true;
+        changed = true;
+      }
       // Else a row of compound tiles with other parts among them (a shop
       // front of bays with the entrance bay after some of them): each run
       // of the tiles a repeat, each stretch between runs one group.
@@ -571,6 +768,7 @@ class Folder {
   TileCounts* counts_;  // where to note each repeat's tile count, or null
   const std::vector<bool>* kept_;  // by node id: left as it is, or null
   TradingLabels& trading_;
+  std::unordered_map<NodeId, std::size_t> shapes_;  // tile_shape, by node id
   std::vector<NodeId> memo_;  // by node id; kNotYet until folded
   std::vector<std::vector<LabelId>> labels_;  // labels_below, by node id
   std::vector<bool> labels_known_;            // by node id: labels_ holds its labels

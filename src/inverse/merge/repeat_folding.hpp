@@ -82,8 +82,11 @@ using TileCounts = std::unordered_map<NodeId, std::vector<TileSeen>>;
 // being held by one tile only (lone); a label seen anywhere counts as
 // trading places everywhere. Merging folds again when some lone label
 // was seen elsewhere (merge.cpp).
+// Kinds of tiles (tile shapes: structure, sizes aside) are noted alike
+// by rows that segment_kinds reads.
 struct TradingLabels {
   std::set<LabelId> seen, lone;
+  std::set<std::size_t> shapes_seen, shapes_lone;
 };
 
 // Rewrites every split below root whose sizes are literals; returns the new
