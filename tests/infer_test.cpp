@@ -420,5 +420,17 @@ TEST(Infer, AGrammarMadeAgainAndPassedIsWritten) {
   }
 }
 
+// Where every attempt's grammar misses an example, the last leaves rows of
+// unlike tiles as each example has them (MergeOptions::fold_unlike): a
+// grammar with fewer generalisations, not an error. Bays in equal thirds
+// whose kinds are drawn tile by tile were read as tiles a third long.
+TEST(Infer, RowsOfUnlikeTilesThatNoFoldingDerivesStillGiveAGrammar) {
+  const Grammar source = read_grammar_file(VERN_SOURCE_DIR "/tests/data/thirds_tile_choice.grm");
+  const std::vector<Example> examples = test::derived_examples(source, 10);
+  Inference inferred;
+  ASSERT_NO_THROW(inferred = infer(examples, {}));
+  EXPECT_TRUE(test::derives_every_example(inferred.grammar, examples));
+}
+
 }  // namespace
 }  // namespace vern

@@ -123,10 +123,11 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
   };
   // The examples' graphs merged within `tolerance`, numbers tidied (each
   // moved by at most a quarter of `exact`) and frames shared: the merged root.
-  auto merged = [&](Grammar& g, double tolerance, double exact, bool draw_sizes) {
+  auto merged = [&](Grammar& g, double tolerance, double exact, bool draw_sizes, bool fold_unlike = true) {
     MergeOptions merge;
     merge.tolerance = tolerance;
     merge.draw_sizes = draw_sizes;
+    merge.fold_unlike = fold_unlike;
     merge.uniform_distributions = options.uniform_distributions;
     merge.placed = placed;
     NodeId root = merge_examples(g, roots, merge);
@@ -260,14 +261,20 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
   struct Attempt {
     double merge, exact;
     bool draw_sizes = true;
+    bool fold_unlike = true;
   };
   std::vector<Attempt> attempts{{out.tolerance, smallest}};
   if (smallest < out.tolerance) attempts.push_back({smallest, smallest});
   for (const double finer : {10.0, 100.0}) attempts.push_back({smallest / finer, smallest / finer});
   attempts.push_back({attempts[0].merge, attempts[0].exact, false});
+  // Last, rows of unlike tiles left as each example has them (a row of
+  // bays in equal thirds read as tiles a third long, which another
+  // example's row does not fit): the fewest generalisations, but a
+  // grammar rather than none.
+  attempts.push_back({attempts[0].merge, attempts[0].exact, false, false});
   std::optional<NotDerived> failed;
   for (std::size_t k = 0; k < attempts.size(); ++k) {
-    const auto [tolerance, exact, draw_sizes] = attempts[k];
+    const auto [tolerance, exact, draw_sizes, fold_unlike] = attempts[k];
     failed.reset();
     if (k > 0) {
       out.tolerance = tolerance;
@@ -275,7 +282,9 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
       out.twins = {};
       graph.rollback(*unmerged);
     }
-    generalise_from(graph, k == 0 && first_merge ? *first_merge : merged(graph, tolerance, exact, draw_sizes), tolerance, exact);
+    generalise_from(graph,
+                    k == 0 && first_merge ? *first_merge : merged(graph, tolerance, exact, draw_sizes, fold_unlike),
+                    tolerance, exact);
     // Past the parts checked quickly, the grammar is the examples' cuts,
     // merged and tidied only (docs/inference.md, "Large examples").
     if (out.joint.derives_examples || parts > kJoinedPartsLimit) break;
@@ -286,7 +295,8 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     const Example& e = examples[failed->example];
     throw Error(ErrorKind::Internal,
                 "infer: error: no grammar inferred derives " + e.source + ", even with sizes held ten and a "
-                    "hundred times closer than its tolerance, or kept as shares: " +
+                    "hundred times closer than its tolerance, kept as shares, or rows of unlike tiles left "
+                    "as they are: " +
                     failed->why +
                     "\n  hint: please report this with the examples; a smaller --tolerance may get past it");
   }

@@ -895,7 +895,7 @@ void carry_rows(const std::vector<std::pair<NodeId, NodeId>>& rebuilt, RowBook& 
 
 NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeOptions& options) {
   std::vector<NodeId> folded;
-  const UnlikeTiles unlike = roots.size() > 1 ? UnlikeTiles::Fold : UnlikeTiles::Keep;
+  const UnlikeTiles unlike = roots.size() > 1 && options.fold_unlike ? UnlikeTiles::Fold : UnlikeTiles::Keep;
   TileCounts tile_counts;
   // Tiers set in step by step are nested first (inset_runs.hpp), so that
   // recursion is found below and no run of them is read as tiles.

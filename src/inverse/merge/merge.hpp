@@ -60,6 +60,11 @@ struct MergeOptions {
   // bay whose parts keep one proportion is one node at every width it
   // was seen at, which that step cannot tell from a bay seen at one.
   bool draw_sizes = true;
+  // Equal tiles of unlike contents (repeat_folding.hpp's UnlikeTiles::Fold)
+  // folded from two examples on. infer's last attempt leaves them out
+  // where every other attempt's grammar missed an example: each row then
+  // keeps its own tiles, as one example alone does.
+  bool fold_unlike = true;
   // The nodes of placed groups (split_graph.hpp): parts no straight cut
   // separates, placed with S(...) that reaches into the next piece. check
   // can follow such a group only by deriving it, which needs one outcome:

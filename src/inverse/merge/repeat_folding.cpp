@@ -335,6 +335,7 @@ class Folder {
       for (std::size_t k = 0; k + 1 < runs[r].starts.size(); ++k) {
         const std::size_t from = runs[r].starts[k], to = runs[r].starts[k + 1];
         if (!trades(shapes[r][k])) {
+          trading_.shapes_lone.insert(shapes[r][k]);  // another row may show it trading
           close();
           stretch(from, to);
           continue;
