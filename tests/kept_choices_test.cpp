@@ -107,5 +107,17 @@ TEST(KeptChoices, KindsKeptThroughAFrameStayKeptBesideSizesDrawnOnce) {
   EXPECT_TRUE(test::derives_every_example(inferred.grammar, examples));
 }
 
+// Kinds kept per building are read through a frame that is a rule
+// several places call: its draws right after the choice took the frame
+// count for that choice (tests/data/kept_frame_rule.grm says where this
+// comes from). Variants then keep one kind per house, as the source does.
+TEST(KeptChoices, KindsKeptThroughAFrameOtherPlacesCallToo) {
+  const Grammar source = read_grammar_file(VERN_SOURCE_DIR "/tests/data/kept_frame_rule.grm");
+  const std::vector<Example> examples = test::derived_examples(source, 30);
+  const Inference inferred = infer(examples, {});
+  EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 1001, 1040, 4));
+  EXPECT_TRUE(test::derives_every_example(inferred.grammar, examples));
+}
+
 }  // namespace
 }  // namespace vern

@@ -23,6 +23,9 @@ namespace {
 // for their never doing so to say they are kept: e^-3, one chance in 20.
 constexpr double kExpectedTogether = 3;
 
+// Rules of a frame passed through on the way to a choice (FlatOption).
+constexpr std::size_t kMaxThrough = 2;
+
 // Alternatives of one choice among which kinds are searched (every set of
 // them is tried): a choice of more is not read for kinds.
 constexpr std::size_t kMaxKindsSearched = 12;
@@ -35,18 +38,27 @@ struct Taken {
 };
 
 // An alternative as kinds are read: one of the choice's own, or, where
-// that alternative holds the only call of a rule whose body is a choice
-// of its own (bays each a frame around an infill or a window, the frame
-// one alternative beside a pair of windows), one of that rule's
-// alternatives in its frame. Kinds kept per building may lie on both
+// that alternative holds one call of a rule whose body is a choice of its
+// own (bays each a frame around an infill or a window, the frame one
+// alternative beside a pair of windows, perhaps a rule of its own), one
+// of that rule's alternatives in its frame. Kinds kept per building may lie on both
 // levels: houses of pairs and windows, houses of infills and windows.
 struct FlatOption {
   std::size_t outer = 0;               // the choice's alternative
   std::optional<RuleId> inner;         // the rule it calls, if read through it
   std::size_t index = 0;               // that rule's alternative
-  NodeId call = 0;                     // the call in the outer alternative
+  NodeId call = 0;                     // the call of that rule
+  // The calls on the way to it, outermost first: rules of no parameters
+  // (a frame written as a rule of its own), each in the body of the one
+  // before (the first in the outer alternative).
+  std::vector<NodeId> through;
 };
 
+// Per example, the draws of the choice and how often each flat option
+// was taken. A rule read through may be called elsewhere too: its draw
+// counts for an alternative only as the first draw of that rule after the
+// choice took the alternative (witness steps follow the derivation, depth
+// first), one per draw of the choice.
 Taken taken_by(const std::vector<CheckResult>& results, const Grammar& g, NodeId choose,
                const std::vector<FlatOption>& flat) {
   const std::size_t outer = std::get<Choose>(g.op(choose)).options.size();
@@ -54,63 +66,60 @@ Taken taken_by(const std::vector<CheckResult>& results, const Grammar& g, NodeId
   for (const CheckResult& r : results) {
     t.draws.push_back(0);
     t.options.emplace_back(flat.size(), 0);
-    std::vector<std::size_t> outer_taken(outer, 0);
-    std::map<std::pair<NodeId, std::size_t>, std::size_t> inner_taken;  // (choice, alternative) -> times
+    constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+    std::size_t pending = kNone;  // the alternative just taken, if read through a rule
     for (const CheckStep& step : r.steps) {
       if (step.kind != CheckStep::Kind::Alternative) continue;
       if (step.node == choose && step.index < outer) {
         ++t.draws.back();
-        ++outer_taken[step.index];
-      } else {
-        ++inner_taken[{step.node, step.index}];
+        pending = kNone;
+        for (std::size_t f = 0; f < flat.size(); ++f) {
+          if (flat[f].outer != step.index) continue;
+          if (flat[f].inner) pending = step.index;
+          else ++t.options.back()[f];
+        }
+        continue;
       }
+      if (pending == kNone) continue;
+      for (std::size_t f = 0; f < flat.size(); ++f)
+        if (flat[f].outer == pending && flat[f].inner && g.rules[*flat[f].inner].body == step.node &&
+            flat[f].index == step.index) {
+          ++t.options.back()[f];
+          pending = kNone;
+          break;
+        }
     }
-    for (std::size_t f = 0; f < flat.size(); ++f)
-      t.options.back()[f] = flat[f].inner ? inner_taken[{g.rules[*flat[f].inner].body, flat[f].index}]
-                                          : outer_taken[flat[f].outer];
   }
   return t;
 }
 
-// How many times each rule is called, over every path through every
-// rule's body (a call inside a node two parents share counts twice).
-std::vector<std::size_t> call_counts(const Grammar& g) {
-  std::vector<std::size_t> calls(g.rules.size(), 0);
-  std::unordered_map<NodeId, std::vector<std::pair<RuleId, std::size_t>>> below;  // node -> calls under it
-  std::function<const std::vector<std::pair<RuleId, std::size_t>>&(NodeId)> under =
-      [&](NodeId n) -> const std::vector<std::pair<RuleId, std::size_t>>& {
-    if (const auto it = below.find(n); it != below.end()) return it->second;
-    std::map<RuleId, std::size_t> count;
-    if (const auto* c = std::get_if<Call>(&g.op(n))) ++count[c->rule];
-    for_each_child(g.op(n), [&](NodeId child) {
-      for (const auto& [rule, times] : under(child)) count[rule] += times;
-    });
-    return below[n] = {count.begin(), count.end()};
-  };
-  for (const Rule& r : g.rules)
-    for (const auto& [rule, times] : under(r.body)) calls[rule] += times;
-  return calls;
-}
-
 // The choice's alternatives as kinds are read (FlatOption): each as it
-// is, or, where it holds the only call of a rule of a plain choice,
-// reached through splits and transforms only (not a repeat: one draw of
-// the alternative, one of the rule), each of that rule's alternatives.
+// is, or, where it holds one call of a rule of a plain choice, reached
+// through splits, transforms and rules of no parameters only (not a
+// repeat: one draw of the alternative, one of the rule), each of that
+// rule's alternatives.
 // Empty where no alternative reads through.
-std::vector<FlatOption> flat_options(const Grammar& g, const Choose& c, const std::vector<std::size_t>& calls) {
+std::vector<FlatOption> flat_options(const Grammar& g, const Choose& c) {
   std::vector<FlatOption> flat;
   bool through = false;
   for (std::size_t i = 0; i < c.options.size(); ++i) {
     std::optional<NodeId> site;
+    std::vector<NodeId> site_through, path;
     std::size_t sites = 0;
     std::function<void(NodeId)> visit = [&](NodeId n) {
       const Operation& op = g.op(n);
       if (const auto* call = std::get_if<Call>(&op)) {
         const Rule& rule = g.rules[call->rule];
+        if (!rule.params.empty() || !call->args.empty()) return;
         const auto* inner = std::get_if<Choose>(&g.op(rule.body));
-        if (inner && plain_choice(*inner) && rule.params.empty() && call->args.empty() && calls[call->rule] == 1) {
+        if (inner && plain_choice(*inner)) {
           site = n;
+          site_through = path;
           ++sites;
+        } else if (!inner && path.size() < kMaxThrough) {
+          path.push_back(n);
+          visit(rule.body);
+          path.pop_back();
         }
         return;
       }
@@ -119,12 +128,12 @@ std::vector<FlatOption> flat_options(const Grammar& g, const Choose& c, const st
     };
     visit(c.options[i].child);
     if (sites != 1) {
-      flat.push_back({i, std::nullopt, 0, 0});
+      flat.push_back({i, std::nullopt, 0, 0, {}});
       continue;
     }
     const RuleId rule = std::get<Call>(g.op(*site)).rule;
     const std::size_t count = std::get<Choose>(g.op(g.rules[rule].body)).options.size();
-    for (std::size_t j = 0; j < count; ++j) flat.push_back({i, rule, j, *site});
+    for (std::size_t j = 0; j < count; ++j) flat.push_back({i, rule, j, *site, site_through});
     through = true;
   }
   if (!through) return {};
@@ -273,9 +282,19 @@ void keep(Grammar& g, RuleId rule, const std::vector<FlatOption>& flat, const st
     double total = 0;
     for (const ChooseOption& o : inner.options) total += *o.priority.literal();
     const double weight = *outer.priority.literal() * *inner.options[f.index].priority.literal() / total;
-    std::vector<NodeId> replace(f.call + 1, kNoReplacement);
-    replace[f.call] = inner.options[f.index].child;
-    options.push_back({Expr{}, Expr::number(weight), substitute(g, outer.child, replace)});
+    // The rule's alternative in place of its call, in the body holding
+    // the call, and that body in place of the call of its rule, out to
+    // the outer alternative.
+    auto in_place = [&](NodeId body, NodeId call, NodeId by) {
+      std::vector<NodeId> replace(call + 1, kNoReplacement);
+      replace[call] = by;
+      return substitute(g, body, replace);
+    };
+    std::vector<NodeId> bodies{outer.child};
+    for (const NodeId on_way : f.through) bodies.push_back(g.rules[std::get<Call>(g.op(on_way)).rule].body);
+    NodeId built = in_place(bodies.back(), f.call, inner.options[f.index].child);
+    for (std::size_t k = f.through.size(); k-- > 0;) built = in_place(bodies[k], f.through[k], built);
+    options.push_back({Expr{}, Expr::number(weight), built});
   }
   for (std::size_t k = 0; k < kinds.size(); ++k) {
     const Expr is_k = Expr::binary(BinaryOp::Eq, Expr::param(param), Expr::number(static_cast<double>(k)));
@@ -311,14 +330,13 @@ std::vector<Kept> kept_choices(const Grammar& g, const std::vector<Example>& exa
     if (c && plain_choice(*c) && r != g.start_rule) candidates.push_back(r);
   }
   if (candidates.empty() || !witnesses_of(g, examples, options, witnesses)) return {};
-  const std::vector<std::size_t> calls = call_counts(g);
   std::vector<Kept> out;
   for (const RuleId r : candidates) {
     const NodeId body = g.rules[r].body;
     const Choose& c = std::get<Choose>(g.op(body));
     std::vector<FlatOption> own;
-    for (std::size_t i = 0; i < c.options.size(); ++i) own.push_back({i, std::nullopt, 0, 0});
-    for (const std::vector<FlatOption>& flat : {own, flat_options(g, c, calls)}) {
+    for (std::size_t i = 0; i < c.options.size(); ++i) own.push_back({i, std::nullopt, 0, 0, {}});
+    for (const std::vector<FlatOption>& flat : {own, flat_options(g, c)}) {
       if (flat.empty()) continue;
       std::vector<std::size_t> kinds = kept_kinds(taken_by(witnesses.results, g, body, flat), flat.size());
       if (!kinds.empty()) out.push_back({r, flat, std::move(kinds)});

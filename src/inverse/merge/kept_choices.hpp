@@ -8,11 +8,13 @@
 // takes. Alternatives that never share an example, though each is taken
 // in several and, drawn freely, would have shared some (three examples or
 // more expected), are kinds kept per building (the largest such set); the
-// others go with any kind. An alternative that holds the only call of a
-// rule that is a choice of its own (a frame of render | opening | render
-// whose opening is glass or an infill, beside a bay of paired windows) is
-// read through it as well: kinds may lie on both levels (houses of pairs
-// and glass, houses of infills and glass). The choice then takes a parameter, `kind(b) : b == 0 --> ...`,
+// others go with any kind. An alternative that holds one call of a rule
+// that is a choice of its own (a frame of render | opening | render, maybe
+// a rule of its own, whose opening is glass or an infill, beside a bay of
+// paired windows) is read through it as well, its draws those right after
+// the choice took the alternative: kinds may lie on both levels (houses of
+// pairs and glass, houses of infills and glass). The choice then takes a
+// parameter, `kind(b) : b == 0 --> ...`,
 // passed down from the start rule through every rule that leads to it,
 // drawn once per building there (`randint(0, k - 1)`). Kept only if every
 // example still derives.
