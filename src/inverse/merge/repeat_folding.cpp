@@ -231,11 +231,12 @@ class Folder {
   // tile among them (bays each a balcony or a window bay, the entrance or
   // a bay of paired windows at some place): no pattern recurs part for
   // part, but the row is runs of pieces of one length. Read left to
-  // right, each run is the shortest piece (not a bare primitive) that the
-  // next piece repeats in length, for as long as pieces of that length
-  // follow (of several, the longest run, then the one of fewest kinds). A piece whose kind (its shape, sizes aside: tile_shape) is
-  // the only one of its kind in the row, and no other row showed trading
-  // places (TradingLabels::shapes), is the odd tile: it stands alone,
+  // right, each run is a piece (not a bare primitive) that the next piece
+  // repeats in length, for as long as pieces of that length follow (of
+  // several, the longest run, then the one of fewest kinds). A piece
+  // whose kind (its shape, sizes aside: tile_shape) is the only one of its
+  // kind in the row, and no other row showed trading places
+  // (TradingLabels::shapes_seen), is the odd tile: it stands alone,
   // between runs. Each run becomes a repeat of a choice of its pieces
   // (merging unites them), each stretch between runs a part or one
   // group. Only where the runs hold tiles of two kinds or more, or of a
@@ -320,8 +321,7 @@ class Folder {
       else segments.push_back({from, to, {}});
     };
     std::size_t covered = 0;
-    bool mixed;
-    std::size_t done = 0;
+    std::size_t done = 0;  // parts placed in segments so far
     for (std::size_t r = 0; r < runs.size(); ++r) {
       stretch(done, runs[r].starts.front());
       std::vector<std::size_t> current;
@@ -344,8 +344,7 @@ class Folder {
         current.push_back(to);
       }
       close();
-      done = segments.empty() ? runs[r].starts.front() : segments.back().to;
-      done = std::max(done, runs[r].starts.front());
+      done = runs[r].starts.back();
     }
     stretch(done, n);
     // Tiles of two kinds or more in the runs, or of a kind other rows
@@ -355,8 +354,9 @@ class Folder {
     for (const Segment& seg : segments)
       for (std::size_t k = 0; k + 1 < seg.starts.size(); ++k)
         in_runs.insert(tile_shape(group(axis, parts, seg.starts[k], seg.starts[k + 1])));
-    mixed = in_runs.size() >= 2 ||
-            std::any_of(in_runs.begin(), in_runs.end(), [&](std::size_t k) { return trading_.shapes_seen.count(k) > 0; });
+    const bool mixed = in_runs.size() >= 2 || std::any_of(in_runs.begin(), in_runs.end(), [&](std::size_t k) {
+                         return trading_.shapes_seen.count(k) > 0;
+                       });
     if (2 * covered < n) return false;
     if (!mixed) {
       // A row of one kind here, which another row may show trading.

@@ -43,6 +43,13 @@
 // one to hold some label (a ground floor with the door stays below the
 // storeys, which fold). Merging then unites the choices of rows of one kind
 // (tile_choices.hpp).
+//
+// Rows of tiles of a few kinds (UnlikeTiles::Fold): where a row is runs of
+// pieces of one length whose kinds (structure, sizes aside) vary, bays
+// each a balcony or a window bay with openings drawn bay by bay around an
+// entrance or a bay of paired windows at some place, each run becomes a
+// repeat of a choice of its pieces and the odd tile (a kind alone in the
+// row, not seen trading in another) stands between them.
 #pragma once
 
 #include <cstdint>
