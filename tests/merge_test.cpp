@@ -186,8 +186,7 @@ TEST(Merge, PlacesThatCombineFreelyBecomeChoicesAndCoupledOnesStay) {
   ASSERT_TRUE(stretching->size.literal().has_value());
   EXPECT_GT(*stretching->size.literal(), 1.0);  // three tiles on the examples' 3 units
   EXPECT_LT(*stretching->size.literal(), 1.5);
-  const auto* column = stretching;
-  const auto* row = std::get_if<RepeatN>(&g.op(column->child));
+  const auto* row = std::get_if<RepeatN>(&g.op(stretching->child));
   ASSERT_NE(row, nullptr);
   const auto* cell = std::get_if<Choose>(&g.op(row->child));
   ASSERT_NE(cell, nullptr);
