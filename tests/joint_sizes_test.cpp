@@ -629,5 +629,26 @@ body(h, e) --> split(x){
   EXPECT_EQ(apart, 0u) << write_grammar(inferred.grammar);
 }
 
+// Where joining sizes keeps its draws to the values seen (a variant would
+// leave some part no room), a choice of values stays a choice: the door
+// bay after none, one or two bays of 3.8 m (choice(0, 3.8, 7.6)) does not
+// become a range that puts it off the bays' grid.
+TEST(JointSizes, ADrawKeptToTheValuesSeenStaysAChoiceOfThem) {
+  const Grammar source = read_grammar_file(VERN_SOURCE_DIR "/tests/data/door_bays_on_grid.grm");
+  const Inference inferred = infer(examples_of(source, 30), {});
+  std::size_t doors = 0, astray = 0;
+  for (std::uint64_t seed = 1001; seed <= 1040; ++seed)
+    for (const LabelledBox& b : test::derived_parts(derive_seed(inferred.grammar, seed))) {
+      if (b.label != "portal") continue;
+      ++doors;
+      // Each door 1.2 m wide in the middle of a 3.8 m bay: 1.3 m past a
+      // multiple of 3.8 from the row's start at x = 0.
+      const double bays = (b.min.x - 1.3) / 3.8;
+      astray += std::abs(bays - std::round(bays)) * 3.8 > 1e-3 ? 1 : 0;
+    }
+  EXPECT_GE(doors, 40u);
+  EXPECT_EQ(astray, 0u) << write_grammar(inferred.grammar);
+}
+
 }  // namespace
 }  // namespace vern

@@ -794,8 +794,12 @@ class Joiner {
       return false;
     };
     if (any_without_room()) {
-      // Variants would get no room: keep to the values seen.
+      // Variants would get no room: keep to the values seen. A choice of
+      // the values seen (a door bay after no, one or two bays of 3.8 m:
+      // choice(0, 3.8, 7.6)) keeps to them already, and stays a choice: a
+      // range between them would put the door bay off the bays' grid.
       for (std::size_t k = 0; k < drawn.size(); ++k) {
+        if (drawn[k].kind == DistributionKind::Choice || drawn[k].kind == DistributionKind::Constant) continue;
         const auto [lo, hi] = std::ranges::minmax(drawn_values[k]);
         drawn[k] = Distribution{DistributionKind::Uniform, {}, lo, hi};
         ranges[k] = {lo, hi};
