@@ -23,6 +23,9 @@ namespace {
 // for their never doing so to say they are kept: e^-3, one chance in 20.
 constexpr double kExpectedTogether = 3;
 
+// Rounds of pinning calls to one kind (pin_kinds), each one call more.
+constexpr std::size_t kMaxPinRounds = 4;
+
 // Rules of a frame passed through on the way to a choice (FlatOption).
 constexpr std::size_t kMaxThrough = 2;
 
@@ -60,7 +63,7 @@ struct FlatOption {
 // choice took the alternative (witness steps follow the derivation, depth
 // first), one per draw of the choice.
 Taken taken_by(const std::vector<CheckResult>& results, const Grammar& g, NodeId choose,
-               const std::vector<FlatOption>& flat) {
+               const std::vector<FlatOption>& flat, bool by_row = false) {
   const std::size_t outer = std::get<Choose>(g.op(choose)).options.size();
   Taken t;
   for (const CheckResult& r : results) {
@@ -69,6 +72,13 @@ Taken taken_by(const std::vector<CheckResult>& results, const Grammar& g, NodeId
     constexpr std::size_t kNone = static_cast<std::size_t>(-1);
     std::size_t pending = kNone;  // the alternative just taken, if read through a rule
     for (const CheckStep& step : r.steps) {
+      // By row: each repeat's tiles (a row of bays) counted apart.
+      if (by_row && step.kind == CheckStep::Kind::Tiles) {
+        t.draws.push_back(0);
+        t.options.emplace_back(flat.size(), 0);
+        pending = kNone;
+        continue;
+      }
       if (step.kind != CheckStep::Kind::Alternative) continue;
       if (step.node == choose && step.index < outer) {
         ++t.draws.back();
@@ -317,6 +327,7 @@ struct Kept {
   RuleId rule = 0;
   std::vector<FlatOption> flat;   // its alternatives as kinds are read
   std::vector<std::size_t> kinds;  // into flat
+  bool by_row = false;             // read row by row (taken_by), not per building
 };
 
 // Every choice showing kinds kept per building, in rule order: read as
@@ -339,10 +350,112 @@ std::vector<Kept> kept_choices(const Grammar& g, const std::vector<Example>& exa
     for (const std::vector<FlatOption>& flat : {own, flat_options(g, c)}) {
       if (flat.empty()) continue;
       std::vector<std::size_t> kinds = kept_kinds(taken_by(witnesses.results, g, body, flat), flat.size());
-      if (!kinds.empty()) out.push_back({r, flat, std::move(kinds)});
+      if (!kinds.empty()) {
+        out.push_back({r, flat, std::move(kinds)});
+        continue;
+      }
+      // Kinds that no row mixes, though a building does: its ground floor
+      // always of one kind, its storeys of the kind kept (pinned below).
+      kinds = kept_kinds(taken_by(witnesses.results, g, body, flat, true), flat.size());
+      if (!kinds.empty()) out.push_back({r, flat, std::move(kinds), true});
     }
   }
   return out;
+}
+
+// Calls that pass the kind on (their last argument the caller's own last
+// parameter, `b`), by place: the rule whose body holds them, the node
+// holding them (kNoParent: the call is the body) and which of its
+// children they are (a ground floor's row cut around its door bay calls
+// the row twice). A node written alike in two rules is two places, each
+// of which may pass a kind of its own.
+struct PassingCalls {
+  RuleId rule = 0;
+  NodeId parent = 0;
+  std::vector<std::size_t> slots;
+};
+constexpr NodeId kNoParent = static_cast<NodeId>(-1);
+
+std::vector<PassingCalls> passing_calls(const Grammar& g) {
+  std::vector<PassingCalls> out;
+  for (RuleId r = 0; r < g.rules.size(); ++r) {
+    const Rule& rule = g.rules[r];
+    if (rule.params.empty() || rule.params.back() != "b") continue;
+    const Expr own = Expr::param(static_cast<std::uint32_t>(rule.params.size() - 1));
+    auto passes = [&](NodeId n) {
+      const auto* c = std::get_if<Call>(&g.op(n));
+      return c != nullptr && !c->args.empty() && c->args.back() == own;
+    };
+    if (passes(rule.body)) out.push_back({r, kNoParent, {0}});
+    std::set<NodeId> seen;
+    std::vector<NodeId> stack{rule.body};
+    while (!stack.empty()) {
+      const NodeId n = stack.back();
+      stack.pop_back();
+      if (!seen.insert(n).second) continue;
+      const std::vector<NodeId> children = node_children(g.op(n));
+      PassingCalls here{r, n, {}};
+      for (std::size_t i = 0; i < children.size(); ++i) {
+        if (passes(children[i])) here.slots.push_back(i);
+        stack.push_back(children[i]);
+      }
+      if (!here.slots.empty()) out.push_back(std::move(here));
+    }
+  }
+  return out;
+}
+
+// g with the calls at one place made to pass `kind` instead.
+void pin(Grammar& g, const PassingCalls& site, std::size_t kind) {
+  auto pinned = [&](NodeId call) {
+    Call c = std::get<Call>(g.op(call));
+    c.args.back() = Expr::number(static_cast<double>(kind));
+    return g.intern({std::move(c), g.node(call).loc});
+  };
+  if (site.parent == kNoParent) {
+    g.rules[site.rule].body = pinned(g.rules[site.rule].body);
+    return;
+  }
+  Operation op = g.op(site.parent);  // a copy: interning may move the arena
+  const std::vector<NodeId*> slots = child_slots(op);
+  for (const std::size_t i : site.slots) *slots[i] = pinned(*slots[i]);
+  const NodeId parent = g.intern({std::move(op), g.node(site.parent).loc});
+  std::vector<NodeId> replace(site.parent + 1, kNoReplacement);
+  replace[site.parent] = parent;
+  g.rules[site.rule].body = substitute(g, g.rules[site.rule].body, replace);
+}
+
+// Where a kind kept per building does not derive every example, calls
+// that pass the kind on may pass one kind always instead (a ground floor
+// of kind 0 under storeys of the kind kept): tried call by call, each
+// pinned to each kind, kept where more examples derive, until all do.
+// Whether all do; g as far as it got.
+bool pin_kinds(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options, std::size_t kinds,
+               std::vector<CheckResult>& results) {
+  auto derived = [](const std::vector<CheckResult>& r) {
+    return static_cast<std::size_t>(std::ranges::count_if(r, [](const CheckResult& c) { return c.derivable; }));
+  };
+  std::size_t best = derived(results);
+  for (std::size_t round = 0; round < kMaxPinRounds && best < examples.size(); ++round) {
+    bool improved = false;
+    for (const PassingCalls& site : passing_calls(g)) {
+      for (std::size_t kind = 0; kind < kinds && !improved; ++kind) {
+        Grammar pinned = g;
+        pin(pinned, site, kind);
+        std::vector<CheckResult> now;
+        const bool all = derives_examples(pinned, examples, options, now);
+        if (all || derived(now) > best) {
+          g = std::move(pinned);
+          best = all ? examples.size() : derived(now);
+          results = std::move(now);
+          improved = true;
+        }
+      }
+      if (improved) break;
+    }
+    if (!improved) break;
+  }
+  return best == examples.size();
 }
 
 }  // namespace
@@ -361,7 +474,9 @@ std::size_t keep_choices(Grammar& g, const std::vector<Example>& examples, const
     // the kept choice).
     if (k.flat.size() != std::get<Choose>(g.op(g.rules[k.rule].body)).options.size()) drop_unused_rules(candidate);
     std::vector<CheckResult> results;
-    if (!derives_examples(candidate, examples, options, results)) continue;
+    if (!derives_examples(candidate, examples, options, results) &&
+        !(k.by_row && pin_kinds(candidate, examples, options, k.kinds.size(), results)))
+      continue;
     g = std::move(candidate);
     witnesses.known = false;
     return 1;

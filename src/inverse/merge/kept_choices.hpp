@@ -18,6 +18,15 @@
 // passed down from the start rule through every rule that leads to it,
 // drawn once per building there (`randint(0, k - 1)`). Kept only if every
 // example still derives.
+//
+// A building may take one kind at some place always (its ground floor's
+// bays of the first kind, under storeys of the kind kept, one row rule for
+// both): then every building of the second kind shows both, but no row
+// does. Such kinds are read row by row (each repeat's tiles apart), and
+// where keeping them does not derive every example, the calls that pass
+// the kind on are made, place by place, to pass one kind always
+// (`row(0)` in the ground floor's split), kept where more examples derive,
+// until all do.
 #pragma once
 
 #include <cstddef>
