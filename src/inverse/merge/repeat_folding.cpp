@@ -267,7 +267,7 @@ class Folder {
     auto kinds_in = [&](const PieceRun& run) {
       std::set<std::size_t> seen;
       for (std::size_t k = 0; k + 1 < run.starts.size(); ++k)
-        seen.insert(tile_shape(group(axis, parts, run.starts[k], run.starts[k + 1])));
+        seen.insert(group_shape(axis, parts, run.starts[k], run.starts[k + 1]));
       return seen.size();
     };
     std::vector<PieceRun> runs;
@@ -304,7 +304,7 @@ class Folder {
     std::vector<std::vector<std::size_t>> shapes(runs.size());
     for (std::size_t r = 0; r < runs.size(); ++r)
       for (std::size_t k = 0; k + 1 < runs[r].starts.size(); ++k) {
-        shapes[r].push_back(tile_shape(group(axis, parts, runs[r].starts[k], runs[r].starts[k + 1])));
+        shapes[r].push_back(group_shape(axis, parts, runs[r].starts[k], runs[r].starts[k + 1]));
         ++kinds[shapes[r].back()];
       }
     auto trades = [&](std::size_t shape) { return kinds[shape] >= 2 || trading_.shapes_seen.count(shape) > 0; };
@@ -353,7 +353,7 @@ class Folder {
     std::set<std::size_t> in_runs;
     for (const Segment& seg : segments)
       for (std::size_t k = 0; k + 1 < seg.starts.size(); ++k)
-        in_runs.insert(tile_shape(group(axis, parts, seg.starts[k], seg.starts[k + 1])));
+        in_runs.insert(group_shape(axis, parts, seg.starts[k], seg.starts[k + 1]));
     const bool mixed = in_runs.size() >= 2 || std::any_of(in_runs.begin(), in_runs.end(), [&](std::size_t k) {
                          return trading_.shapes_seen.count(k) > 0;
                        });
@@ -395,15 +395,14 @@ class Folder {
   std::size_t tile_shape(NodeId id) {
     if (const auto it = shapes_.find(id); it != shapes_.end()) return it->second;
     const Operation& op = g_.op(id);
-    std::size_t h = hash_combine(0x5eed, op.index());
-    if (const auto* p = std::get_if<Primitive>(&op)) h = hash_combine(h, p->label);
-    auto axis_of = [](const Expr& e) { return static_cast<std::size_t>(e.literal_axis().value_or(9)); };
+    std::size_t h = 0;
     if (const auto* sp = std::get_if<Split>(&op)) {
-      h = hash_combine(h, axis_of(sp->axis));
-      for (const SplitPart& part : sp->parts) h = hash_combine(hash_combine(h, part.size.relative), tile_shape(part.child));
+      h = split_shape(sp->axis, sp->parts, 0, sp->parts.size(), false);
     } else {
-      if (const auto* r = std::get_if<Repeat>(&op)) h = hash_combine(h, axis_of(r->axis));
-      if (const auto* r = std::get_if<RepeatN>(&op)) h = hash_combine(h, axis_of(r->axis));
+      h = hash_combine(kShapeSeed, op.index());
+      if (const auto* p = std::get_if<Primitive>(&op)) h = hash_combine(h, p->label);
+      if (const auto* r = std::get_if<Repeat>(&op)) h = hash_combine(h, shape_axis(r->axis));
+      if (const auto* r = std::get_if<RepeatN>(&op)) h = hash_combine(h, shape_axis(r->axis));
       std::vector<NodeId> children;
       for_each_child(op, [&](NodeId c) { children.push_back(c); });
       for (NodeId c : children) h = hash_combine(h, tile_shape(c));
@@ -411,6 +410,24 @@ class Folder {
     shapes_.emplace(id, h);
     return h;
   }
+
+  // The shape group(axis, parts, from, to) would have, without interning
+  // the group: segment_kinds weighs every piece of every run it tries.
+  std::size_t group_shape(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from, std::size_t to) {
+    return split_shape(axis, parts, from, to, true);
+  }
+
+  // A split's shape from its parts [from, to), each relative where
+  // `all_relative` (a group's parts are) or as it says.
+  std::size_t split_shape(const Expr& axis, const std::vector<SplitPart>& parts, std::size_t from, std::size_t to,
+                          bool all_relative) {
+    std::size_t h = hash_combine(hash_combine(kShapeSeed, kSplitIndex), shape_axis(axis));
+    for (std::size_t i = from; i < to; ++i)
+      h = hash_combine(hash_combine(h, all_relative || parts[i].size.relative), tile_shape(parts[i].child));
+    return h;
+  }
+
+  static std::size_t shape_axis(const Expr& e) { return static_cast<std::size_t>(e.literal_axis().value_or(9)); }
 
   // The length of parts[i, i + period), all literal.
   static double length_of(const std::vector<SplitPart>& parts, std::size_t i, std::size_t period) {
@@ -761,6 +778,8 @@ class Folder {
   }
 
   static constexpr std::size_t kMaxPeriod = 8;
+  static constexpr std::size_t kShapeSeed = 0x5eed;
+  static inline const std::size_t kSplitIndex = Operation{std::in_place_type<Split>}.index();
   static constexpr std::size_t kMaxPartsPerTile = 16;
   static constexpr NodeId kNotYet = static_cast<NodeId>(-1);
   Grammar& g_;
