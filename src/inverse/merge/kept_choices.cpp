@@ -176,17 +176,20 @@ std::vector<std::size_t> kept_kinds(const Taken& t, std::size_t options) {
     }
     return expected >= kExpectedTogether;
   };
-  // The largest set of kinds pairwise exclusive (then the most draws):
-  // greedily by share, the commonest alternative, taken by houses of
-  // either kind, would shut both kinds out.
+  // The largest set of kinds pairwise exclusive (then the most draws),
+  // every set tried: taken greedily by share, the commonest alternative,
+  // which houses of either kind take, would shut both kinds out.
   std::vector<std::size_t> kinds;
   if (options > kMaxKindsSearched) return {};
   std::vector<std::uint32_t> apart(options, 0);  // per alternative: those it never shares an example with
   std::uint32_t eligible = 0;
   for (std::size_t i = 0; i < options; ++i) {
     if (examples_with(i) >= 2) eligible |= 1u << i;
-    for (std::size_t j = 0; j < options; ++j)
-      if (j != i && exclusive(i, j)) apart[i] |= 1u << j;
+    for (std::size_t j = i + 1; j < options; ++j)
+      if (exclusive(i, j)) {
+        apart[i] |= 1u << j;
+        apart[j] |= 1u << i;
+      }
   }
   std::uint32_t best = 0;
   double best_share = 0;
