@@ -192,13 +192,13 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     // Alternatives told apart only by how many tiles the examples showed
     // (two storeys in most houses, three in the tallest) are one repeat:
     // read from the examples' derivations, so likewise checked.
-    // A choice that each building makes once and keeps below (its bays
-    // all balconies or all windows) takes a parameter passed down from
-    // the start. Alternatives the others now derive (a row that happened
-    // to hold one door bay, beside a repeat of bays each a window or a
-    // door) only draw what no example asked for: dropped. All checked,
-    // and all read the examples' witnesses, found once between them
-    // where nothing changes.
+    // Whether some choice is made once per building and kept below (its
+    // bays all balconies or all windows) is read here, kept below.
+    // Alternatives the others now derive (a row that happened to hold
+    // one door bay, beside a repeat of bays each a window or a door) only
+    // draw what no example asked for: dropped. All checked, and all read
+    // the examples' witnesses, found once between them where nothing
+    // changes.
     bool kept = false;
     if (parts <= kJoinedPartsLimit) {
       Witnesses witnesses;

@@ -908,12 +908,13 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   // other rows show trading places (TradingLabels): the first pass reads
   // which labels do, the second folds with what every row showed.
   TradingLabels trading;
+  std::vector<NodeId> nested;
+  for (NodeId r : roots) nested.push_back(nest_inset_runs(g, r, options.tolerance, &copied));
   auto fold_all = [&] {
     folded.clear();
     tile_counts.clear();
-    for (NodeId r : roots)
-      folded.push_back(fold_repeats(g, nest_inset_runs(g, r, options.tolerance, &copied), options.tolerance, unlike,
-                                    &tile_counts, &copied, &trading));
+    for (NodeId r : nested)
+      folded.push_back(fold_repeats(g, r, options.tolerance, unlike, &tile_counts, &copied, &trading));
   };
   fold_all();
   if (std::any_of(trading.lone.begin(), trading.lone.end(), [&](LabelId l) { return trading.seen.count(l) > 0; }) ||
