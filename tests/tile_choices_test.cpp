@@ -119,6 +119,23 @@ TEST(TileChoices, ARowWhoseTilesAllHeldOneKindSharesTheChoiceOfRowsThatHeldMore)
   EXPECT_NE(held[1].find("I(roof)"), std::string::npos) << held[1];
 }
 
+TEST(TileChoices, ARowOfOneKindWeighsEveryTileItHolds) {
+  // Two rows of three plain buildings and one of a roofed building between
+  // two plain ones: seven plain tiles against two roofed, not one
+  // observation per row of one kind (a city whose edge blocks are all
+  // small buildings came back with its towers three times as common).
+  Grammar g;
+  const auto roots = examples(g, {row(2, plain(4), plain(4), plain(4)), row(2, plain(4), plain(4), plain(4)),
+                                  row(2, kRoofed, plain(4), kRoofed)});
+  const NodeId merged = merge_examples(g, roots, test::uniform_merge());
+  ASSERT_TRUE(std::holds_alternative<Repeat>(g.op(merged))) << write_operation(g, merged, {});
+  const auto held = alternatives(g, repeat_at(g, merged));
+  ASSERT_EQ(held.size(), 2u) << ::testing::PrintToString(held);
+  EXPECT_NE(held[0].find(" : 7"), std::string::npos) << held[0];
+  EXPECT_NE(held[1].find("I(roof)"), std::string::npos) << held[1];
+  EXPECT_NE(held[1].find(" : 2"), std::string::npos) << held[1];
+}
+
 TEST(TileChoices, TilesOfOneFrameAreOneFrameWithAChoiceWhereTheyDiffer) {
   // Storeys of glass and a wall, or glass and a balcony, all walls in one
   // house: one row kind whose frame stays, its part the choice, not a

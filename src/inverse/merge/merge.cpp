@@ -827,11 +827,19 @@ class Fitter {
 
 // A rebuilt repeat keeps the tile counts of the node it replaces.
 void carry_tile_counts(const std::vector<std::pair<NodeId, NodeId>>& rebuilt, TileCounts& tile_counts) {
+  // Several nodes rebuilt into one (two rows whose tiles now share one
+  // choice) made all their tiles; a node noted before keeps its notes.
+  std::unordered_map<NodeId, std::vector<NodeId>> carried;  // new node -> the old ones carried into it
   for (const auto& [old, now] : rebuilt) {
     const auto it = tile_counts.find(old);
-    if (it == tile_counts.end() || tile_counts.count(now)) continue;
+    if (it == tile_counts.end() || old == now) continue;
+    auto& from = carried[now];
+    if (from.empty() && tile_counts.count(now)) continue;
+    if (std::find(from.begin(), from.end(), old) != from.end()) continue;
+    from.push_back(old);
     std::vector<TileSeen> counts = it->second;  // a copy: inserting below may move it
-    tile_counts.emplace(now, std::move(counts));
+    auto& into = tile_counts[now];
+    into.insert(into.end(), counts.begin(), counts.end());
   }
 }
 
@@ -946,7 +954,7 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
       merged = generalise_free_parts(g, merged, options, kinds, rows, changed, &rebuilt, &joined);
       join_rows(g, joined, rows, counts);
       carry_notes(rebuilt, book, tile_counts);
-      const TileChoiceUnion united = unite_tile_choices(g, merged);
+      const TileChoiceUnion united = unite_tile_choices(g, merged, &tile_counts);
       carry_notes(united.replaced, book, tile_counts);
       merged = united.root;
       // A door bay at the start beside one after some bays: one split.

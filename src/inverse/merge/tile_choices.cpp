@@ -1,6 +1,7 @@
 #include "inverse/merge/tile_choices.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <tuple>
@@ -34,6 +35,7 @@ struct Slot {
   std::size_t part = kWholeTile;  // the tile itself, or this part of the tile's split
   NodeId held = 0;                // the choose there, or the lone tile
   Range tile;                     // the repeat's tile length (a range once merged)
+  double tiles = 0;               // how many tiles the repeat made in the examples (0: not known)
   std::vector<std::pair<NodeId, double>> options;
 };
 
@@ -43,7 +45,7 @@ using Place = std::tuple<std::uint8_t, std::size_t, std::size_t, std::uint8_t>;
 
 class Uniter {
  public:
-  explicit Uniter(Grammar& g) : g_(g), seen_(g.node_count(), false) {}
+  Uniter(Grammar& g, const TileCounts* tile_counts) : g_(g), tile_counts_(tile_counts), seen_(g.node_count(), false) {}
 
   TileChoiceUnion run(NodeId root) {
     collect(root);
@@ -86,17 +88,37 @@ class Uniter {
     std::unordered_map<std::size_t, NodeId> united;  // class -> its choose
     for (std::size_t c : classes) {
       std::vector<std::pair<NodeId, double>> options;
+      auto add = [&](NodeId alternative, double weight) {
+        auto it = std::find_if(options.begin(), options.end(), [&](const auto& o) { return o.first == alternative; });
+        if (it == options.end()) options.emplace_back(alternative, weight);
+        else it->second += weight;
+      };
+      // Slots that all hold one thing have nothing to unite (weighing it
+      // again by tiles would only round its weights anew).
+      const NodeId first = slots_[members[c].front()].held;
+      if (std::all_of(members[c].begin(), members[c].end(), [&](std::size_t s) { return slots_[s].held == first; }))
+        continue;
+      const bool by_tiles =
+          std::all_of(members[c].begin(), members[c].end(), [&](std::size_t s) { return slots_[s].tiles > 0; });
       std::vector<NodeId> counted;
       for (std::size_t s : members[c]) {
+        if (by_tiles) {
+          // Each repeat's tiles shared out by its choice's weights: a row
+          // of twelve plain buildings weighs twelve, not one, against the
+          // rows that held plain and roofed ones.
+          double total = 0;
+          for (const auto& held : slots_[s].options) total += held.second;
+          for (const auto& [alternative, weight] : slots_[s].options)
+            add(alternative, slots_[s].tiles * weight / total);
+          continue;
+        }
         if (std::find(counted.begin(), counted.end(), slots_[s].held) != counted.end()) continue;
         counted.push_back(slots_[s].held);
-        for (const auto& held : slots_[s].options) {
-          auto it = std::find_if(options.begin(), options.end(), [&](const auto& o) { return o.first == held.first; });
-          if (it == options.end()) options.push_back(held);
-          else it->second += held.second;
-        }
+        for (const auto& [alternative, weight] : slots_[s].options) add(alternative, weight);
       }
       if (options.size() < 2) continue;
+      if (by_tiles)
+        for (auto& option : options) option.second = std::max(1.0, std::round(option.second));
       if (std::get<1>(places_[c]) == kWholeTile && one_frame(options)) continue;
       Choose choose;
       for (const auto& [alternative, weight] : options)
@@ -149,7 +171,10 @@ class Uniter {
   }
 
   void add_slot(NodeId repeat, std::size_t part, NodeId held, const Place& place, Range tile) {
-    Slot slot{repeat, part, held, tile, {}};
+    Slot slot{repeat, part, held, tile, 0, {}};
+    if (tile_counts_)
+      if (const auto seen = tile_counts_->find(repeat); seen != tile_counts_->end())
+        for (const TileSeen& t : seen->second) slot.tiles += t.count;
     if (const Choose* c = plain_choose(g_.op(held))) {
       for (const ChooseOption& o : c->options) slot.options.emplace_back(o.child, *o.priority.literal());
     } else {
@@ -185,6 +210,7 @@ class Uniter {
   }
 
   Grammar& g_;
+  const TileCounts* tile_counts_;  // may be null
   std::vector<bool> seen_;  // by node id
   std::vector<Slot> slots_;  // grouped by repeat, in collection order
   std::vector<Place> places_;  // per slot
@@ -192,6 +218,8 @@ class Uniter {
 
 }  // namespace
 
-TileChoiceUnion unite_tile_choices(Grammar& g, NodeId root) { return Uniter(g).run(root); }
+TileChoiceUnion unite_tile_choices(Grammar& g, NodeId root, const TileCounts* tile_counts) {
+  return Uniter(g, tile_counts).run(root);
+}
 
 }  // namespace vern

@@ -6,7 +6,8 @@
 // along the same axis, the choice sits at the same place in the tile, and
 // they share an alternative; slots linked so, directly or through others,
 // become one choice over everything any of them held, weighted by how
-// often. A tile that always holds one thing counts as a choice of one.
+// often (by tiles: a city's blocks of small buildings at its edges weigh
+// every building they hold against the mixed blocks at its centre). A tile that always holds one thing counts as a choice of one.
 // Merging then unifies the rows, whose tiles now agree, and the blocks
 // above them in turn.
 //
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "graph/grammar.hpp"
+#include "inverse/merge/repeat_folding.hpp"
 
 namespace vern {
 
@@ -31,6 +33,9 @@ struct TileChoiceUnion {
   std::vector<std::pair<NodeId, NodeId>> replaced;
 };
 
-TileChoiceUnion unite_tile_choices(Grammar& g, NodeId root);
+// Weights: where folding counted every repeat's tiles (tile_counts), each
+// alternative weighs the tiles it stands for, a repeat's tiles shared out
+// by its choice's weights; otherwise the choices' own weights add up.
+TileChoiceUnion unite_tile_choices(Grammar& g, NodeId root, const TileCounts* tile_counts = nullptr);
 
 }  // namespace vern
