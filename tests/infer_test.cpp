@@ -432,5 +432,16 @@ TEST(Infer, RowsOfUnlikeTilesThatNoFoldingDerivesStillGiveAGrammar) {
   EXPECT_TRUE(test::derives_every_example(inferred.grammar, examples));
 }
 
+TEST(Infer, StoreysLineUpOnADoorThatIsOneBoxAfterOneBayOrMore) {
+  // The ground floor's bays before a bare door (one bay is a run of one,
+  // as two are a run of two) are the storeys' bays before their balcony
+  // bay: one size drawn once, so variants keep the storeys on the door.
+  const Grammar source = read_grammar_file(VERN_SOURCE_DIR "/tests/data/door_after_bays.grm");
+  const std::vector<Example> examples = test::derived_examples(source, 30);
+  const Inference inferred = infer(examples, {});
+  EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 1001, 1040, 4));
+  EXPECT_TRUE(test::derives_every_example(inferred.grammar, examples));
+}
+
 }  // namespace
 }  // namespace vern

@@ -398,5 +398,32 @@ TEST(RepeatFolding, BaysOfTwoKindsAroundAnOddBayAreRunsOfTheirChoiceAndTheOddBay
   EXPECT_EQ(pair->parts.size(), 5u);
 }
 
+TEST(RepeatFolding, ABayBeforeADoorAsWideAsTheBaysIsARunOfOne) {
+  // A bay of panes, then a door as wide as a bay, then bays of panes or
+  // panels drawn bay by bay (their sizes differing a little, as the rest
+  // of the row is shared out): the bay before the door is a run of one
+  // tile, as two bays before it would be a run of two, so that rows with
+  // the door after none, one or two bays are one structure; the door
+  // keeps its place (a bare primitive is never a tile).
+  auto bay = [](double wall, const char* opening) {
+    return " ~" + std::to_string(wall) + " : I(wall) | ~" + std::to_string(1.3 * wall) + " : I(" + opening +
+           ") | ~" + std::to_string(wall) + " : I(wall) |";
+  };
+  std::string row = "a --> split(x){" + bay(1, "pane") + " ~3.3 : I(door) |" + bay(0.95, "pane") +
+                    bay(0.95, "panel") + bay(0.95, "panel") + bay(0.95, "pane");
+  row.pop_back();
+  row += "}\n";
+  const Folded f = fold_text(row);
+  const auto* s = std::get_if<Split>(&f.g.op(f.body));
+  ASSERT_NE(s, nullptr) << flat(write_operation(f.g, f.body, {}));
+  ASSERT_EQ(s->parts.size(), 3u) << flat(write_operation(f.g, f.body, {}));
+  const auto* one = std::get_if<Repeat>(&f.g.op(s->parts[0].child));
+  ASSERT_NE(one, nullptr) << flat(write_operation(f.g, f.body, {}));
+  EXPECT_TRUE(std::holds_alternative<Primitive>(f.g.op(s->parts[1].child)));
+  const auto* after = std::get_if<Repeat>(&f.g.op(s->parts[2].child));
+  ASSERT_NE(after, nullptr);
+  EXPECT_TRUE(std::holds_alternative<Choose>(f.g.op(after->child)));
+}
+
 }  // namespace
 }  // namespace vern

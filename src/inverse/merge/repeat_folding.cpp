@@ -351,12 +351,99 @@ class Folder {
     // showed trading places: runs of balcony bays and of window bays
     // around the odd bay are runs of the one choice.
     std::set<std::size_t> in_runs;
+    std::map<std::size_t, std::pair<double, double>> run_lengths;  // shape -> the lengths of its pieces in runs
     for (const Segment& seg : segments)
-      for (std::size_t k = 0; k + 1 < seg.starts.size(); ++k)
-        in_runs.insert(group_shape(axis, parts, seg.starts[k], seg.starts[k + 1]));
+      for (std::size_t k = 0; k + 1 < seg.starts.size(); ++k) {
+        const std::size_t shape = group_shape(axis, parts, seg.starts[k], seg.starts[k + 1]);
+        in_runs.insert(shape);
+        const double length = at[seg.starts[k + 1]] - at[seg.starts[k]];
+        const auto [it, added] = run_lengths.try_emplace(shape, length, length);
+        it->second = {std::min(it->second.first, length), std::max(it->second.second, length)};
+      }
     const bool mixed = in_runs.size() >= 2 || std::any_of(in_runs.begin(), in_runs.end(), [&](std::size_t k) {
                          return trading_.shapes_seen.count(k) > 0;
                        });
+    // A stretch that starts (or ends) with tiles of the runs' kinds holds
+    // runs of them, one tile long too, beside the odd tile: the bay before
+    // a door as wide as the bays (the bays after it a little wider), as
+    // two bays before it would be a run; rows with the door after none,
+    // one or two bays are then one structure but for how long the run is.
+    // The rest of the stretch stays one piece: a stretch of tiles of kinds
+    // seen once here stays as it was.
+    auto tile_of_runs = [&](std::size_t p, std::size_t q) {
+      if (bare(p, q)) return false;
+      const auto known = run_lengths.find(group_shape(axis, parts, p, q));
+      // About as long as the runs' tiles of its kind (the rest of a row
+      // shared out differs by a little, not by a quarter).
+      return known != run_lengths.end() && at[q] - at[p] <= kTileGap * known->second.second &&
+             kTileGap * (at[q] - at[p]) >= known->second.first;
+    };
+    // The starts of tiles of the runs' kinds from `from` on (forward) or
+    // back from `to`, each the shortest such piece, within [from, to].
+    auto tiles_from = [&](std::size_t from, std::size_t to) {
+      std::vector<std::size_t> ends{from};
+      for (bool found = true; found;) {
+        found = false;
+        for (std::size_t q = ends.back() + 1; q <= to && q - ends.back() <= kMaxPartsPerTile && !found; ++q)
+          if (tile_of_runs(ends.back(), q)) {
+            ends.push_back(q);
+            found = true;
+          }
+      }
+      return ends;
+    };
+    auto tiles_to = [&](std::size_t from, std::size_t to) {
+      std::vector<std::size_t> starts{to};
+      for (bool found = true; found;) {
+        found = false;
+        for (std::size_t p = starts.back(); p-- > from && starts.back() - p <= kMaxPartsPerTile && !found;)
+          if (tile_of_runs(p, starts.back())) {
+            starts.push_back(p);
+            found = true;
+          }
+      }
+      std::reverse(starts.begin(), starts.end());
+      return starts;
+    };
+    std::vector<Segment> with_runs;
+    auto add_tiles = [&](const std::vector<std::size_t>& cuts) {
+      // Tiles of one length (within the tolerance) are one run.
+      for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+        const double length = at[cuts[k + 1]] - at[cuts[k]];
+        Segment* last = with_runs.empty() ? nullptr : &with_runs.back();
+        if (last && !last->starts.empty() && last->to == cuts[k] &&
+            std::abs(length - (at[last->starts[1]] - at[last->starts[0]])) <= tol_) {
+          last->starts.push_back(cuts[k + 1]);
+          last->to = cuts[k + 1];
+        } else {
+          with_runs.push_back({cuts[k], cuts[k + 1], {cuts[k], cuts[k + 1]}});
+        }
+        covered += cuts[k + 1] - cuts[k];
+      }
+    };
+    for (Segment& seg : segments) {
+      if (!seg.starts.empty()) {
+        with_runs.push_back(std::move(seg));
+        continue;
+      }
+      const std::vector<std::size_t> ahead = tiles_from(seg.from, seg.to), behind = tiles_to(seg.from, seg.to);
+      std::size_t ahead_covers = ahead.back() - seg.from, behind_covers = seg.to - behind.front();
+      // Only beside an odd tile that is a bare primitive (a door), the
+      // whole rest of the stretch: where the odd tile is built, the runs
+      // already reach it (a run of one is a run there too).
+      if (ahead.back() != seg.to && !bare(ahead.back(), seg.to)) ahead_covers = 0;
+      if (behind.front() != seg.from && !bare(seg.from, behind.front())) behind_covers = 0;
+      if (ahead_covers == 0 && behind_covers == 0) {
+        with_runs.push_back(std::move(seg));
+      } else if (ahead_covers >= behind_covers) {
+        add_tiles(ahead);
+        if (ahead.back() < seg.to) with_runs.push_back({ahead.back(), seg.to, {}});
+      } else {
+        if (seg.from < behind.front()) with_runs.push_back({seg.from, behind.front(), {}});
+        add_tiles(behind);
+      }
+    }
+    segments = std::move(with_runs);
     if (2 * covered < n) return false;
     if (!mixed) {
       // A row of one kind here, which another row may show trading.
@@ -778,6 +865,7 @@ class Folder {
   }
 
   static constexpr std::size_t kMaxPeriod = 8;
+  static constexpr double kTileGap = 1.25;  // how much longer or shorter a run of one may be than its kind's tiles
   static constexpr std::size_t kShapeSeed = 0x5eed;
   static inline const std::size_t kSplitIndex = Operation{std::in_place_type<Split>}.index();
   static constexpr std::size_t kMaxPartsPerTile = 16;
