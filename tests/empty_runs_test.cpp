@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "graph/nodes_below.hpp"
 #include "graph/writer.hpp"
 #include "inverse/merge/merge.hpp"
 #include "inverse/write/rule_naming.hpp"
@@ -17,8 +18,8 @@ namespace {
 
 // A row of bays 3.5 m wide with a door bay after `bays` of them, as one
 // example's graph: no run before the door when bays is 0.
-std::string row(int bays) {
-  const std::string bay = "repeat(x, 3.5){ split(x){ ~1 : I(wall) | ~1.5 : I(window) | ~1 : I(wall) } }";
+std::string row(int bays, const std::string& opening = "window") {
+  const std::string bay = "repeat(x, 3.5){ split(x){ ~1 : I(wall) | ~1.5 : I(" + opening + ") | ~1 : I(wall) } }";
   const double run = 3.5 * bays, rest = 21 - run - 3.5;
   std::string text = "split(x){ ";
   if (bays > 0) text += "~" + std::to_string(run) + " : " + bay + " | ";
@@ -37,6 +38,29 @@ TEST(EmptyRuns, ADoorBayAtTheStartIsTheRowWithNoBaysBeforeIt) {
   ASSERT_TRUE(run) << write_grammar(rules_for(g, merged, {}));
   EXPECT_EQ(run->lo, 0);
   EXPECT_NEAR(run->hi, 7, 1e-9);
+}
+
+TEST(EmptyRuns, StoreysWhoseBaysDifferAreRowsWithTheirRunZeroLongToo) {
+  // Storeys of a house, each with the door bay after the house's number
+  // of bays, their other bays of windows or of panels: the storeys of a
+  // house are a repeat of a choice of rows, and the houses with the door
+  // bay first have rows of one part fewer. Those rows are the others
+  // with their run zero long: every row in the merged choice has the run.
+  Grammar g;
+  std::vector<std::string> texts;
+  for (int bays : {0, 1, 2, 0, 1, 2})
+    texts.push_back("split(z){ ~3 : " + row(bays) + " | ~3 : " + row(bays, "panel") + " | ~3 : " + row(bays, "panel") +
+                    " | ~3 : " + row(bays) + " }");
+  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), test::uniform_merge());
+  // The rows: splits with the door among their parts.
+  const LabelId door = *g.find_label("door");
+  std::vector<NodeId> rows;
+  for (const NodeId id : nodes_below(g, merged))
+    if (const auto* s = std::get_if<Split>(&g.op(id)))
+      for (const SplitPart& p : s->parts)
+        if (const auto* prim = std::get_if<Primitive>(&g.op(p.child)); prim && prim->label == door) rows.push_back(id);
+  ASSERT_FALSE(rows.empty()) << write_grammar(rules_for(g, merged, {}));
+  for (const NodeId r : rows) EXPECT_EQ(std::get<Split>(g.op(r)).parts.size(), 5u) << write_grammar(rules_for(g, merged, {}));
 }
 
 }  // namespace

@@ -65,6 +65,63 @@ EmptyRuns pad_empty_runs(Grammar& g, NodeId root, SampleBook& book, RowBook& row
   EmptyRuns out{root, 0, {}};
   std::vector<NodeId> replace;
   std::vector<std::pair<NodeId, NodeId>> padded;
+  // The split b_id with a's run at its end, zero long; its notes too.
+  auto pad = [&](NodeId b_id, const Split& a, End end) {
+    const SplitPart& run = end == End::Front ? a.parts.front() : a.parts.back();
+    Split now = std::get<Split>(g.op(b_id));
+    const SplitPart empty{Size{Expr::number(0), run.size.relative}, run.child};
+    const std::size_t at = end == End::Front ? 0 : now.parts.size();
+    now.parts.insert(now.parts.begin() + static_cast<std::ptrdiff_t>(at), empty);
+    const NodeId padded_id = g.intern({std::move(now), g.node(b_id).loc});
+    if (const auto it = rows.find(b_id); it != rows.end()) {
+      std::vector<LengthRow> with = it->second;
+      for (LengthRow& r : with) r.lengths.insert(r.lengths.begin() + static_cast<std::ptrdiff_t>(at), 0.0);
+      rows[padded_id] = std::move(with);
+    }
+    if (const auto it = book.find(b_id); it != book.end()) {
+      std::vector<std::vector<Observation>> with = it->second;
+      std::vector<Observation> zeros;
+      if (!with.empty())
+        for (const Observation& o : with.front()) zeros.push_back({0.0, o.count, o.example});
+      with.insert(with.begin() + static_cast<std::ptrdiff_t>(at), std::move(zeros));
+      book[padded_id] = std::move(with);
+    }
+    return padded_id;
+  };
+  // The shorter inner node padded against the longer: a split missing the
+  // other's run; or, under a repeat, a choice of storeys (each storey's
+  // bays drawn anew) whose every split misses the run of one of the
+  // other choice's splits. kNoReplacement where it does not.
+  auto padded_inner = [&](NodeId shorter, NodeId longer) -> NodeId {
+    if (const auto* b = std::get_if<Split>(&g.op(shorter))) {
+      const auto* a = std::get_if<Split>(&g.op(longer));
+      if (!a) return kNoReplacement;
+      const auto end = missing_run(g, *a, *b);
+      return end ? pad(shorter, Split(*a), *end) : kNoReplacement;
+    }
+    const auto* bc = std::get_if<Choose>(&g.op(shorter));
+    const auto* ac = std::get_if<Choose>(&g.op(longer));
+    if (!bc || !ac) return kNoReplacement;
+    Choose now = *bc;
+    const Choose longer_choose = *ac;  // copies: padding interns
+    for (ChooseOption& option : now.options) {
+      const auto* b = std::get_if<Split>(&g.op(option.child));
+      if (!b) return kNoReplacement;
+      std::optional<NodeId> found;
+      for (const ChooseOption& other : longer_choose.options) {
+        const auto* a = std::get_if<Split>(&g.op(other.child));
+        if (!a) continue;
+        if (const auto end = missing_run(g, *a, *b)) {
+          found = pad(option.child, Split(*a), *end);
+          break;
+        }
+        b = std::get_if<Split>(&g.op(option.child));  // the arena may have moved
+      }
+      if (!found) return kNoReplacement;
+      option.child = *found;
+    }
+    return g.intern({std::move(now), g.node(shorter).loc});
+  };
   for (const NodeId id : nodes_below(g, root)) {
     const auto* choose = std::get_if<Choose>(&g.op(id));
     if (!choose) continue;
@@ -73,40 +130,19 @@ EmptyRuns pad_empty_runs(Grammar& g, NodeId root, SampleBook& book, RowBook& row
       const NodeId b_top = shorter.child;
       if (b_top < replace.size() && replace[b_top] != kNoReplacement) continue;
       const Wrapped b_wrap = unwrap(g, b_top);
-      const auto* b = std::get_if<Split>(&g.op(b_wrap.inner));
-      if (!b) continue;
+      const Operation& b_inner = g.op(b_wrap.inner);
+      if (!std::holds_alternative<Split>(b_inner) && !(std::holds_alternative<Choose>(b_inner) && !b_wrap.chain.empty()))
+        continue;
       for (const ChooseOption& longer : options) {
         if (longer.child == b_top) continue;
         const Wrapped a_wrap = unwrap(g, longer.child);
-        const auto* a = std::get_if<Split>(&g.op(a_wrap.inner));
-        if (!a || a_wrap.chain.size() != b_wrap.chain.size()) continue;
+        if (a_wrap.chain.size() != b_wrap.chain.size()) continue;
         bool alike = true;
         for (std::size_t k = 0; k < a_wrap.chain.size() && alike; ++k)
           alike = same_but_child(g, a_wrap.chain[k], b_wrap.chain[k]);
         if (!alike) continue;
-        const auto end = missing_run(g, *a, *b);
-        if (!end) continue;
-        const SplitPart& run = end == End::Front ? a->parts.front() : a->parts.back();
-        Split now = *b;
-        const SplitPart empty{Size{Expr::number(0), run.size.relative}, run.child};
-        const std::size_t at = end == End::Front ? 0 : now.parts.size();
-        now.parts.insert(now.parts.begin() + static_cast<std::ptrdiff_t>(at), empty);
-        const NodeId b_id = b_wrap.inner;
-        NodeId padded_id = g.intern({std::move(now), g.node(b_id).loc});
-        // Its notes, with the run's zeros.
-        if (const auto it = rows.find(b_id); it != rows.end()) {
-          std::vector<LengthRow> with = it->second;
-          for (LengthRow& r : with) r.lengths.insert(r.lengths.begin() + static_cast<std::ptrdiff_t>(at), 0.0);
-          rows[padded_id] = std::move(with);
-        }
-        if (const auto it = book.find(b_id); it != book.end()) {
-          std::vector<std::vector<Observation>> with = it->second;
-          std::vector<Observation> zeros;
-          if (!with.empty())
-            for (const Observation& o : with.front()) zeros.push_back({0.0, o.count, o.example});
-          with.insert(with.begin() + static_cast<std::ptrdiff_t>(at), std::move(zeros));
-          book[padded_id] = std::move(with);
-        }
+        NodeId padded_id = padded_inner(b_wrap.inner, a_wrap.inner);
+        if (padded_id == kNoReplacement) continue;
         // The wrappers round it, rebuilt; their notes carry over.
         for (std::size_t k = b_wrap.chain.size(); k-- > 0;) {
           Operation op = g.op(b_wrap.chain[k]);

@@ -13,6 +13,12 @@
 // that part at size 0 (a part of zero length is not derived), and the
 // two unify into one split whose run ranges down to 0. Every example
 // still derives: the part adds nothing where it is 0.
+//
+// The same under a repeat whose tile is a choice (storeys whose bays were
+// drawn storey by storey, so no two storeys of a house are one node):
+// each row of the shorter choice gains the run of a row of the longer
+// one whose parts it has but for that run, or the choice is left as it
+// is.
 #pragma once
 
 #include <utility>
