@@ -130,5 +130,11 @@ TEST(KeptChoices, KindsKeptThroughAFrameOtherPlacesCallToo) { expect_learnt("kep
 // and the ground floor's calls pass the first kind always (pin_kinds).
 TEST(KeptChoices, AGroundFloorOfOneKindUnderStoreysOfTheKindKept) { expect_learnt("kept_ground_kind.grm"); }
 
+// The same with the door bay a run of bays in, on every storey: the
+// ground floor's row is called twice (before and after the door), in the
+// front with no bays before the door once; of every place and kind, the
+// pin that derives the most examples is taken (tests/data says why).
+TEST(KeptChoices, AGroundFloorOfOneKindIsPinnedToTheKindThatDerivesMost) { expect_learnt("kept_kind_door_bays.grm"); }
+
 }  // namespace
 }  // namespace vern

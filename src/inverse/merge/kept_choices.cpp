@@ -431,7 +431,8 @@ void pin(Grammar& g, const PassingCalls& site, std::size_t kind) {
 // Where a kind kept per building does not derive every example, calls
 // that pass the kind on may pass one kind always instead (a ground floor
 // of kind 0 under storeys of the kind kept): tried call by call, each
-// pinned to each kind, kept where more examples derive, until all do.
+// pinned to each kind, the one where most examples derive kept, until
+// all do.
 // Whether all do; g as far as it got.
 bool pin_kinds(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options, std::size_t kinds,
                std::vector<CheckResult>& results) {
@@ -440,23 +441,30 @@ bool pin_kinds(Grammar& g, const std::vector<Example>& examples, const RewriteCh
   };
   std::size_t best = derived(results);
   for (std::size_t round = 0; round < kMaxPinRounds && best < examples.size(); ++round) {
-    bool improved = false;
+    // Of every place and kind, the pin that derives the most examples: the
+    // first that derives more may pin a ground floor to the wrong kind
+    // (one example more by chance) and shut the right one out.
+    std::optional<Grammar> chosen;
+    std::vector<CheckResult> chosen_results;
+    std::size_t chosen_derived = best;
     for (const PassingCalls& site : passing_calls(g)) {
-      for (std::size_t kind = 0; kind < kinds && !improved; ++kind) {
+      for (std::size_t kind = 0; kind < kinds && chosen_derived < examples.size(); ++kind) {
         Grammar pinned = g;
         pin(pinned, site, kind);
         std::vector<CheckResult> now;
         const bool all = derives_examples(pinned, examples, options, now);
-        if (all || derived(now) > best) {
-          g = std::move(pinned);
-          best = all ? examples.size() : derived(now);
-          results = std::move(now);
-          improved = true;
+        const std::size_t count = all ? examples.size() : derived(now);
+        if (count > chosen_derived) {
+          chosen = std::move(pinned);
+          chosen_results = std::move(now);
+          chosen_derived = count;
         }
       }
-      if (improved) break;
     }
-    if (!improved) break;
+    if (!chosen) break;
+    g = std::move(*chosen);
+    results = std::move(chosen_results);
+    best = chosen_derived;
   }
   return best == examples.size();
 }
