@@ -425,5 +425,34 @@ TEST(RepeatFolding, ABayBeforeADoorAsWideAsTheBaysIsARunOfOne) {
   EXPECT_TRUE(std::holds_alternative<Choose>(f.g.op(after->child)));
 }
 
+TEST(RepeatFolding, BaysTakenTwoByTwoGiveWayToTheBaysThemselves) {
+  // Balcony and window bays, a door one box as wide as a bay after the
+  // third, the bays after it a little wider: pieces of two bays reach
+  // further (the third bay and the door are as long as two bays) but
+  // each is two pieces of one bay, so the bays are the tiles: a run of
+  // three before the door, the door, a run of three after it.
+  auto bay = [](double width, bool balcony) {
+    const double wall = width / 4;
+    return " ~" + std::to_string(wall) + " : I(wall) | ~" + std::to_string(2 * wall) + " : " +
+           (balcony ? "split(z){ ~1 : I(balcony) | ~2 : I(pane) }" : "split(z){ ~1 : I(wall) | ~2 : I(pane) }") + " | ~" +
+           std::to_string(wall) + " : I(wall) |";
+  };
+  std::string row = "a --> split(x){" + bay(3.8, true) + bay(3.8, false) + bay(3.8, true) + " ~3.8 : I(door) |" +
+                    bay(3.9, false) + bay(3.9, true) + bay(3.9, false);
+  row.pop_back();
+  row += "}\n";
+  const Folded f = fold_text(row);
+  const auto* s = std::get_if<Split>(&f.g.op(f.body));
+  ASSERT_NE(s, nullptr) << flat(write_operation(f.g, f.body, {}));
+  ASSERT_EQ(s->parts.size(), 3u) << flat(write_operation(f.g, f.body, {}));
+  for (const std::size_t run : {0u, 2u}) {
+    const auto* tiles = std::get_if<Repeat>(&f.g.op(s->parts[run].child));
+    ASSERT_NE(tiles, nullptr) << run;
+    EXPECT_TRUE(std::holds_alternative<Choose>(f.g.op(tiles->child))) << run;
+  }
+  EXPECT_NEAR(*s->parts[0].size.value.literal(), 11.4, 1e-9);
+  EXPECT_TRUE(std::holds_alternative<Primitive>(f.g.op(s->parts[1].child)));
+}
+
 }  // namespace
 }  // namespace vern

@@ -233,7 +233,9 @@ class Folder {
   // part, but the row is runs of pieces of one length. Read left to
   // right, each run is a piece (not a bare primitive) that the next piece
   // repeats in length, for as long as pieces of that length follow (of
-  // several, the longest run, then the one of fewest kinds). A piece
+  // several, the longest run, then the one of fewest kinds; but a run
+  // whose pieces are each pieces of a run of shorter tiles gives way to
+  // that one: two bays are no tile where one bay is). A piece
   // whose kind (its shape, sizes aside: tile_shape) is the only one of its
   // kind in the row, and no other row showed trading places
   // (TradingLabels::shapes_seen), is the odd tile: it stands alone,
@@ -284,8 +286,20 @@ class Folder {
              more = piece_end(here.starts.back(), length))
           here.starts.push_back(*more);
         const std::size_t here_kinds = kinds_in(here);
-        if (!run || here.starts.back() > run->starts.back() ||
-            (here.starts.back() == run->starts.back() && here_kinds < run_kinds)) {
+        // A run whose pieces are each pieces of a run of shorter tiles (two
+        // bays taken as one) gives way to it, however far it reaches.
+        auto coarser_of = [](const PieceRun& coarse, const PieceRun& fine) {
+          if (coarse.starts[1] <= fine.starts[1]) return false;
+          for (const std::size_t cut : coarse.starts) {
+            if (cut > fine.starts.back()) break;
+            if (!std::binary_search(fine.starts.begin(), fine.starts.end(), cut)) return false;
+          }
+          return true;
+        };
+        const bool finer = run && coarser_of(*run, here);
+        const bool coarser = run && coarser_of(here, *run);
+        if (!run || finer || (!coarser && (here.starts.back() > run->starts.back() ||
+            (here.starts.back() == run->starts.back() && here_kinds < run_kinds)))) {
           run = std::move(here);
           run_kinds = here_kinds;
         }
