@@ -156,6 +156,21 @@ Folded fold_text(const std::string& text, UnlikeTiles unlike = UnlikeTiles::Fold
   return f;
 }
 
+// A row written as "a --> split(x){ part | part | ... |" (each piece
+// ending in a bar), closed and folded; the split it folds to, or null.
+struct FoldedRow {
+  Folded f;
+  const Split* split = nullptr;
+  std::string text() const { return flat(write_operation(f.g, f.body, {})); }
+};
+FoldedRow fold_row(std::string row) {
+  row.pop_back();
+  row += "}\n";
+  FoldedRow out{fold_text(row)};
+  out.split = std::get_if<Split>(&out.f.g.op(out.f.body));
+  return out;
+}
+
 const std::string kLow = "split(z){ ~1 : I(rect) | ~3 : nil }";
 const std::string kTall = "split(z){ ~3 : I(rect) | ~1 : nil }";
 
@@ -378,10 +393,9 @@ TEST(RepeatFolding, BaysOfTwoKindsAroundAnOddBayAreRunsOfTheirChoiceAndTheOddBay
   std::string row = "a --> split(x){" + bay(0.95, 1.9, true) + bay(0.9, 2.0, false) +
                     " ~0.9 : I(rect) | ~0.8 : I(pane) | ~0.4 : I(rect) | ~0.8 : I(pane) | ~0.9 : I(rect) |" +
                     bay(1.0, 1.9, true) + bay(0.95, 2.0, false) + bay(1.0, 1.9, true);
-  row.pop_back();
-  row += "}\n";
-  const Folded f = fold_text(row);
-  const auto* s = std::get_if<Split>(&f.g.op(f.body));
+  const FoldedRow folded = fold_row(row);
+  const Folded& f = folded.f;
+  const Split* s = folded.split;
   ASSERT_NE(s, nullptr);
   ASSERT_EQ(s->parts.size(), 3u);
   for (const std::size_t run : {0u, 2u}) {
@@ -411,11 +425,10 @@ TEST(RepeatFolding, ABayBeforeADoorAsWideAsTheBaysIsARunOfOne) {
   };
   std::string row = "a --> split(x){" + bay(1, "pane") + " ~3.3 : I(door) |" + bay(0.95, "pane") +
                     bay(0.95, "panel") + bay(0.95, "panel") + bay(0.95, "pane");
-  row.pop_back();
-  row += "}\n";
-  const Folded f = fold_text(row);
-  const auto* s = std::get_if<Split>(&f.g.op(f.body));
-  ASSERT_NE(s, nullptr) << flat(write_operation(f.g, f.body, {}));
+  const FoldedRow folded = fold_row(row);
+  const Folded& f = folded.f;
+  const Split* s = folded.split;
+  ASSERT_NE(s, nullptr) << folded.text();
   ASSERT_EQ(s->parts.size(), 3u) << flat(write_operation(f.g, f.body, {}));
   const auto* one = std::get_if<Repeat>(&f.g.op(s->parts[0].child));
   ASSERT_NE(one, nullptr) << flat(write_operation(f.g, f.body, {}));
@@ -439,11 +452,10 @@ TEST(RepeatFolding, BaysTakenTwoByTwoGiveWayToTheBaysThemselves) {
   };
   std::string row = "a --> split(x){" + bay(3.8, true) + bay(3.8, false) + bay(3.8, true) + " ~3.8 : I(door) |" +
                     bay(3.9, false) + bay(3.9, true) + bay(3.9, false);
-  row.pop_back();
-  row += "}\n";
-  const Folded f = fold_text(row);
-  const auto* s = std::get_if<Split>(&f.g.op(f.body));
-  ASSERT_NE(s, nullptr) << flat(write_operation(f.g, f.body, {}));
+  const FoldedRow folded = fold_row(row);
+  const Folded& f = folded.f;
+  const Split* s = folded.split;
+  ASSERT_NE(s, nullptr) << folded.text();
   ASSERT_EQ(s->parts.size(), 3u) << flat(write_operation(f.g, f.body, {}));
   for (const std::size_t run : {0u, 2u}) {
     const auto* tiles = std::get_if<Repeat>(&f.g.op(s->parts[run].child));
