@@ -26,6 +26,17 @@ std::string row(int bays, const std::string& opening = "window") {
   return text + "~1 : I(wall) | ~1.5 : I(door) | ~1 : I(wall) | ~" + std::to_string(rest) + " : " + bay + " }";
 }
 
+// The rows of a merged graph: splits with the door among their parts.
+std::vector<NodeId> door_rows(const Grammar& g, NodeId merged) {
+  const LabelId door = *g.find_label("door");
+  std::vector<NodeId> rows;
+  for (const NodeId id : nodes_below(g, merged))
+    if (const auto* s = std::get_if<Split>(&g.op(id)))
+      for (const SplitPart& p : s->parts)
+        if (const auto* prim = std::get_if<Primitive>(&g.op(p.child)); prim && prim->label == door) rows.push_back(id);
+  return rows;
+}
+
 TEST(EmptyRuns, ADoorBayAtTheStartIsTheRowWithNoBaysBeforeIt) {
   Grammar g;
   std::vector<std::string> texts;
@@ -52,13 +63,24 @@ TEST(EmptyRuns, StoreysWhoseBaysDifferAreRowsWithTheirRunZeroLongToo) {
     texts.push_back("split(z){ ~3 : " + row(bays) + " | ~3 : " + row(bays, "panel") + " | ~3 : " + row(bays, "panel") +
                     " | ~3 : " + row(bays) + " }");
   const NodeId merged = merge_examples(g, test::example_graphs(g, texts), test::uniform_merge());
-  // The rows: splits with the door among their parts.
-  const LabelId door = *g.find_label("door");
-  std::vector<NodeId> rows;
-  for (const NodeId id : nodes_below(g, merged))
-    if (const auto* s = std::get_if<Split>(&g.op(id)))
-      for (const SplitPart& p : s->parts)
-        if (const auto* prim = std::get_if<Primitive>(&g.op(p.child)); prim && prim->label == door) rows.push_back(id);
+  const std::vector<NodeId> rows = door_rows(g, merged);
+  ASSERT_FALSE(rows.empty()) << write_grammar(rules_for(g, merged, {}));
+  for (const NodeId r : rows) EXPECT_EQ(std::get<Split>(g.op(r)).parts.size(), 5u) << write_grammar(rules_for(g, merged, {}));
+}
+
+TEST(EmptyRuns, StoreysAllAlikeWithTheDoorBayFirstGainTheRunOfStoreysThatDiffer) {
+  // Houses with the door bay first whose storeys all came out alike (a
+  // repeat of one row) beside houses whose storeys differ (a repeat of a
+  // choice of rows): the one row is the others with their run zero long.
+  Grammar g;
+  std::vector<std::string> texts;
+  for (int bays : {0, 1, 2, 0, 1, 2}) {
+    const std::string second = bays == 0 ? row(bays) : row(bays, "panel");
+    texts.push_back("split(z){ ~3 : " + row(bays) + " | ~3 : " + second + " | ~3 : " + second + " | ~3 : " + row(bays) +
+                    " }");
+  }
+  const NodeId merged = merge_examples(g, test::example_graphs(g, texts), test::uniform_merge());
+  const std::vector<NodeId> rows = door_rows(g, merged);
   ASSERT_FALSE(rows.empty()) << write_grammar(rules_for(g, merged, {}));
   for (const NodeId r : rows) EXPECT_EQ(std::get<Split>(g.op(r)).parts.size(), 5u) << write_grammar(rules_for(g, merged, {}));
 }

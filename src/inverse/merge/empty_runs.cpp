@@ -88,37 +88,41 @@ EmptyRuns pad_empty_runs(Grammar& g, NodeId root, SampleBook& book, RowBook& row
     }
     return padded_id;
   };
-  // The shorter inner node padded against the longer: a split missing the
-  // other's run; or, under a repeat, a choice of storeys (each storey's
-  // bays drawn anew) whose every split misses the run of one of the
-  // other choice's splits. kNoReplacement where it does not.
-  auto padded_inner = [&](NodeId shorter, NodeId longer) -> NodeId {
-    if (const auto* b = std::get_if<Split>(&g.op(shorter))) {
-      const auto* a = std::get_if<Split>(&g.op(longer));
-      if (!a) return kNoReplacement;
-      const auto end = missing_run(g, *a, *b);
-      return end ? pad(shorter, Split(*a), *end) : kNoReplacement;
+  // The rows a node stands for: a split, or a choice of splits (a
+  // storey's row drawn anew storey by storey).
+  auto rows_of = [&](NodeId id) {
+    std::vector<NodeId> rows_here;
+    if (std::holds_alternative<Split>(g.op(id))) rows_here.push_back(id);
+    else if (const auto* c = std::get_if<Choose>(&g.op(id)))
+      for (const ChooseOption& o : c->options) rows_here.push_back(o.child);
+    return rows_here;
+  };
+  // A row of the shorter node padded with the run of a row of the longer
+  // one that it matches; kNoReplacement where none does.
+  auto padded_row = [&](NodeId row, const std::vector<NodeId>& longer_rows) -> NodeId {
+    if (!std::holds_alternative<Split>(g.op(row))) return kNoReplacement;
+    for (const NodeId other : longer_rows) {
+      const auto* a = std::get_if<Split>(&g.op(other));
+      if (!a) continue;
+      if (const auto end = missing_run(g, *a, std::get<Split>(g.op(row)))) return pad(row, Split(*a), *end);
     }
+    return kNoReplacement;
+  };
+  // The shorter node padded against the longer, each a split or, under
+  // a repeat, a choice of rows (storeys whose bays were drawn storey by
+  // storey): each row of the shorter gains the run of a row of the longer
+  // whose parts it has but for that run. kNoReplacement where some row
+  // does not.
+  auto padded_inner = [&](NodeId shorter, NodeId longer) -> NodeId {
+    const std::vector<NodeId> longer_rows = rows_of(longer);
+    if (std::holds_alternative<Split>(g.op(shorter))) return padded_row(shorter, longer_rows);
     const auto* bc = std::get_if<Choose>(&g.op(shorter));
-    const auto* ac = std::get_if<Choose>(&g.op(longer));
-    if (!bc || !ac) return kNoReplacement;
-    Choose now = *bc;
-    const Choose longer_choose = *ac;  // copies: padding interns
+    if (!bc) return kNoReplacement;
+    Choose now = *bc;  // a copy: padding interns
     for (ChooseOption& option : now.options) {
-      const auto* b = std::get_if<Split>(&g.op(option.child));
-      if (!b) return kNoReplacement;
-      std::optional<NodeId> found;
-      for (const ChooseOption& other : longer_choose.options) {
-        const auto* a = std::get_if<Split>(&g.op(other.child));
-        if (!a) continue;
-        if (const auto end = missing_run(g, *a, *b)) {
-          found = pad(option.child, Split(*a), *end);
-          break;
-        }
-        b = std::get_if<Split>(&g.op(option.child));  // the arena may have moved
-      }
-      if (!found) return kNoReplacement;
-      option.child = *found;
+      const NodeId padded_id = padded_row(option.child, longer_rows);
+      if (padded_id == kNoReplacement) return kNoReplacement;
+      option.child = padded_id;
     }
     return g.intern({std::move(now), g.node(shorter).loc});
   };
@@ -133,10 +137,13 @@ EmptyRuns pad_empty_runs(Grammar& g, NodeId root, SampleBook& book, RowBook& row
       const Operation& b_inner = g.op(b_wrap.inner);
       if (!std::holds_alternative<Split>(b_inner) && !(std::holds_alternative<Choose>(b_inner) && !b_wrap.chain.empty()))
         continue;
+      const bool b_choice = std::holds_alternative<Choose>(b_inner);
       for (const ChooseOption& longer : options) {
         if (longer.child == b_top) continue;
         const Wrapped a_wrap = unwrap(g, longer.child);
         if (a_wrap.chain.size() != b_wrap.chain.size()) continue;
+        // A choice of rows only under a repeat (the storeys' tiles).
+        if ((b_choice || std::holds_alternative<Choose>(g.op(a_wrap.inner))) && a_wrap.chain.empty()) continue;
         bool alike = true;
         for (std::size_t k = 0; k < a_wrap.chain.size() && alike; ++k)
           alike = same_but_child(g, a_wrap.chain[k], b_wrap.chain[k]);

@@ -15,10 +15,10 @@
 // still derives: the part adds nothing where it is 0.
 //
 // The same under a repeat whose tile is a choice (storeys whose bays were
-// drawn storey by storey, so no two storeys of a house are one node):
-// each row of the shorter choice gains the run of a row of the longer
-// one whose parts it has but for that run, or the choice is left as it
-// is.
+// drawn storey by storey, so no two storeys of a house are one node),
+// on either side: each row of the shorter tile (one row, or a choice of
+// rows) gains the run of a row of the longer one whose parts it has but
+// for that run, or the tile is left as it is.
 #pragma once
 
 #include <utility>

@@ -103,6 +103,17 @@ Split sized_view(const Operation& op) {
   return Split{r.axis, {SplitPart{Size{r.size, false}, r.child}}};
 }
 
+// Whether a part holds a run of tiles (a repeat), directly or through
+// the rules written for it (a row rule).
+bool holds_run(const Grammar& g, NodeId id) {
+  for (int depth = 0; depth < 4; ++depth) {
+    const auto* call = std::get_if<Call>(&g.op(id));
+    if (!call) break;
+    id = g.rules[call->rule].body;
+  }
+  return std::holds_alternative<Repeat>(g.op(id)) || std::holds_alternative<RepeatN>(g.op(id));
+}
+
 // The regions of a grammar, and a region's nodes rebuilt with new sizes.
 // Both follow the nodes in the order check() matches them, computing the
 // same derivation_path.
@@ -785,7 +796,12 @@ class Joiner {
       const auto& shown = at[leader_of[o]].length[i];
       const bool zero_seen =
           std::ranges::any_of(shown, [&](double v) { return !std::isnan(v) && std::abs(v) <= opt_.tolerance; });
-      return zero_seen ? low < -opt_.tolerance : !(low > 0);
+      // A run of tiles may be no tiles (its part is then not derived):
+      // the storeys' bays before their balcony bay, drawn with the ground
+      // floor's bays before its door, which the examples showed at 0.
+      const auto* split = std::get_if<Split>(&g_.op(r.splits[o].split));
+      const bool run = split && holds_run(g_, split->parts[i].child);
+      return zero_seen || run ? low < -opt_.tolerance : !(low > 0);
     };
     auto any_without_room = [&] {
       for (std::size_t o = 0; o < formula.size(); ++o)
