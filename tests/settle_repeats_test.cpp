@@ -87,6 +87,21 @@ TEST(SettleRepeats, CommonTileKeepsEveryCountAndClearsTheToleranceAtBothEnds) {
   EXPECT_FALSE(common_tile({{3, 9.0}, {4, 10.0}, {5, 15.9}, {5, 16.6}}, 0.2));
 }
 
+TEST(SettleRepeats, TilesThatDivideALengthExactlyAreTheTileDespiteFloatNoise) {
+  // Six bays of exactly 3.8 m summed to 22.8 (22.8 / 6 is
+  // 3.8000000000000003), beside rows of 20 and 26 m: 3.8 gives every
+  // count (six tiles on 22.8 by repeat_tile_count's forgiveness), not
+  // the 3.81 just above the noise, which gives fresh rows one bay fewer.
+  double six = 0;
+  for (int i = 0; i < 6; ++i) six += 3.8;
+  ASSERT_GT(six / 6, 3.8);
+  const std::vector<TileSeen> seen{{6, six}, {6, 20.0}, {7, 26.0}};
+  const auto t = common_tile(seen, 1e-6);
+  ASSERT_TRUE(t);
+  EXPECT_EQ(*t, 3.8);
+  for (const TileSeen& s : seen) EXPECT_EQ(repeat_tile_count(s.length, *t), s.count);
+}
+
 TEST(SettleRepeats, AConstantTileStaysAsItIs) {
   // Windows 3 m wide on 9 and 12 m: the tile is 3 (just above) in both.
   Grammar g;

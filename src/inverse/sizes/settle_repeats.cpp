@@ -186,7 +186,12 @@ std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tole
     }
     if (!std::isfinite(hi)) hi = 2 * lo;  // one tile everywhere: any size from the longest up
     if (!(hi > lo)) continue;
-    const auto t = shortest_decimal_in(lo, hi);
+    // A tile that divides a length exactly gives its count (the count
+    // forgives float noise: repeat_tile_count), so the lowest size is the
+    // tile itself less that noise: 3.8 m for runs of exactly 3.8 m bays
+    // summed to 11.400000000000002, not the 3.81 just above.
+    const double floor_noise = lo * 1e-10;
+    const auto t = shortest_decimal_in(lo - floor_noise, hi);
     if (!t) continue;
     if (gives_every_count_firmly(seen, *t, tolerance)) return t;
   }
