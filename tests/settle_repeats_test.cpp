@@ -88,14 +88,12 @@ TEST(SettleRepeats, CommonTileKeepsEveryCountAndClearsTheToleranceAtBothEnds) {
 }
 
 TEST(SettleRepeats, TilesThatDivideALengthExactlyAreTheTileDespiteFloatNoise) {
-  // Six bays of exactly 3.8 m summed to 22.8 (22.8 / 6 is
-  // 3.8000000000000003), beside rows of 20 and 26 m: 3.8 gives every
-  // count (six tiles on 22.8 by repeat_tile_count's forgiveness), not
-  // the 3.81 just above the noise, which gives fresh rows one bay fewer.
-  double six = 0;
-  for (int i = 0; i < 6; ++i) six += 3.8;
-  ASSERT_GT(six / 6, 3.8);
-  const std::vector<TileSeen> seen{{6, six}, {6, 20.0}, {7, 26.0}};
+  // A run of six bays of exactly 3.8 m measured a hair long (its parts'
+  // lengths summed as derived: 22.800000000005 m), beside rows of 20, 26
+  // and 34.5 m ([3.8, 3.83) gives every count): 3.8, which gives six
+  // tiles there too (repeat_tile_count forgives the noise), not the 3.82
+  // just above the noise, which gives some fresh rows a bay fewer.
+  const std::vector<TileSeen> seen{{6, 22.800000000005}, {6, 20.0}, {7, 26.0}, {10, 34.5}};
   const auto t = common_tile(seen, 1e-6);
   ASSERT_TRUE(t);
   EXPECT_EQ(*t, 3.8);
