@@ -629,16 +629,29 @@ body(h, e) --> split(x){
   EXPECT_EQ(apart, 0u) << write_grammar(inferred.grammar);
 }
 
+// A grammar learnt from 30 examples of tests/data/NAME, and the parts of
+// its variants of seeds 1001 to 1040.
+struct Learnt {
+  Grammar grammar;
+  std::vector<std::vector<LabelledBox>> variants;
+};
+Learnt learnt_from(const std::string& name) {
+  const Grammar source = read_grammar_file(std::string(VERN_SOURCE_DIR "/tests/data/") + name);
+  Learnt out{infer(examples_of(source, 30), {}).grammar, {}};
+  for (std::uint64_t seed = 1001; seed <= 1040; ++seed)
+    out.variants.push_back(test::derived_parts(derive_seed(out.grammar, seed)));
+  return out;
+}
+
 // Where joining sizes keeps its draws to the values seen (a variant would
 // leave some part no room), a choice of values stays a choice: the door
 // bay after none, one or two bays of 3.8 m (choice(0, 3.8, 7.6)) does not
 // become a range that puts it off the bays' grid.
 TEST(JointSizes, ADrawKeptToTheValuesSeenStaysAChoiceOfThem) {
-  const Grammar source = read_grammar_file(VERN_SOURCE_DIR "/tests/data/door_bays_on_grid.grm");
-  const Inference inferred = infer(examples_of(source, 30), {});
+  const Learnt learnt = learnt_from("door_bays_on_grid.grm");
   std::size_t doors = 0, astray = 0;
-  for (std::uint64_t seed = 1001; seed <= 1040; ++seed)
-    for (const LabelledBox& b : test::derived_parts(derive_seed(inferred.grammar, seed))) {
+  for (const std::vector<LabelledBox>& parts : learnt.variants)
+    for (const LabelledBox& b : parts) {
       if (b.label != "portal") continue;
       ++doors;
       // Each door 1.2 m wide in the middle of a 3.8 m bay: 1.3 m past a
@@ -647,7 +660,7 @@ TEST(JointSizes, ADrawKeptToTheValuesSeenStaysAChoiceOfThem) {
       astray += std::abs(bays - std::round(bays)) * 3.8 > 1e-3 ? 1 : 0;
     }
   EXPECT_GE(doors, 40u);
-  EXPECT_EQ(astray, 0u) << write_grammar(inferred.grammar);
+  EXPECT_EQ(astray, 0u) << write_grammar(learnt.grammar);
 }
 
 // The storeys' bays before their balcony bay are the ground floor's bays
@@ -658,11 +671,9 @@ TEST(JointSizes, ADrawKeptToTheValuesSeenStaysAChoiceOfThem) {
 // drawing its own run (12 of 125 railings; 83 before): at most one in
 // ten astray.
 TEST(JointSizes, ARunOfTilesDrawnOnceForTheStoreysMayBeNoTiles) {
-  const Grammar source = read_grammar_file(VERN_SOURCE_DIR "/tests/data/storeys_on_door_bay.grm");
-  const Inference inferred = infer(examples_of(source, 30), {});
+  const Learnt learnt = learnt_from("storeys_on_door_bay.grm");
   std::size_t railings = 0, astray = 0;
-  for (std::uint64_t seed = 1001; seed <= 1040; ++seed) {
-    const std::vector<LabelledBox> parts = test::derived_parts(derive_seed(inferred.grammar, seed));
+  for (const std::vector<LabelledBox>& parts : learnt.variants) {
     std::optional<double> door;  // the door bay's left side
     for (const LabelledBox& b : parts)
       if (b.label == "portal") door = b.min.x - 0.9;
@@ -674,7 +685,7 @@ TEST(JointSizes, ARunOfTilesDrawnOnceForTheStoreysMayBeNoTiles) {
     }
   }
   EXPECT_GE(railings, 40u);
-  EXPECT_LE(10 * astray, railings) << astray << " of " << railings << "\n" << write_grammar(inferred.grammar);
+  EXPECT_LE(10 * astray, railings) << astray << " of " << railings << "\n" << write_grammar(learnt.grammar);
 }
 
 }  // namespace
