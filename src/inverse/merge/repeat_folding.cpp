@@ -392,32 +392,25 @@ class Folder {
       return known != run_lengths.end() && at[q] - at[p] <= kTileGap * known->second.second &&
              kTileGap * (at[q] - at[p]) >= known->second.first;
     };
-    // The starts of tiles of the runs' kinds from `from` on (forward) or
-    // back from `to`, each the shortest such piece, within [from, to].
-    auto tiles_from = [&](std::size_t from, std::size_t to) {
-      std::vector<std::size_t> ends{from};
+    // The cuts of tiles of the runs' kinds from `from` on (forward) or
+    // back from `to`, each the shortest such piece, within [from, to],
+    // ascending.
+    auto tiles = [&](std::size_t from, std::size_t to, bool forward) {
+      std::vector<std::size_t> cuts{forward ? from : to};
       for (bool found = true; found;) {
         found = false;
-        for (std::size_t q = ends.back() + 1; q <= to && q - ends.back() <= kMaxPartsPerTile && !found; ++q)
-          if (tile_of_runs(ends.back(), q)) {
-            ends.push_back(q);
+        const std::size_t at_cut = cuts.back();
+        for (std::size_t step = 1; step <= kMaxPartsPerTile && !found; ++step) {
+          if (forward ? at_cut + step > to : at_cut < from + step) break;
+          const std::size_t p = forward ? at_cut : at_cut - step, q = forward ? at_cut + step : at_cut;
+          if (tile_of_runs(p, q)) {
+            cuts.push_back(forward ? q : p);
             found = true;
           }
+        }
       }
-      return ends;
-    };
-    auto tiles_to = [&](std::size_t from, std::size_t to) {
-      std::vector<std::size_t> starts{to};
-      for (bool found = true; found;) {
-        found = false;
-        for (std::size_t p = starts.back(); p-- > from && starts.back() - p <= kMaxPartsPerTile && !found;)
-          if (tile_of_runs(p, starts.back())) {
-            starts.push_back(p);
-            found = true;
-          }
-      }
-      std::reverse(starts.begin(), starts.end());
-      return starts;
+      if (!forward) std::reverse(cuts.begin(), cuts.end());
+      return cuts;
     };
     std::vector<Segment> with_runs;
     auto add_tiles = [&](const std::vector<std::size_t>& cuts) {
@@ -440,22 +433,22 @@ class Folder {
         with_runs.push_back(std::move(seg));
         continue;
       }
-      const std::vector<std::size_t> ahead = tiles_from(seg.from, seg.to), behind = tiles_to(seg.from, seg.to);
-      std::size_t ahead_covers = ahead.back() - seg.from, behind_covers = seg.to - behind.front();
       // Only beside an odd tile that is a bare primitive (a door), the
       // whole rest of the stretch: where the odd tile is built, the runs
       // already reach it (a run of one is a run there too).
-      if (ahead.back() != seg.to && !bare(ahead.back(), seg.to)) ahead_covers = 0;
-      if (behind.front() != seg.from && !bare(seg.from, behind.front())) behind_covers = 0;
-      if (ahead_covers == 0 && behind_covers == 0) {
-        with_runs.push_back(std::move(seg));
-      } else if (ahead_covers >= behind_covers) {
+      const std::vector<std::size_t> ahead = tiles(seg.from, seg.to, true);
+      if (ahead.size() > 1 && (ahead.back() == seg.to || bare(ahead.back(), seg.to))) {
         add_tiles(ahead);
         if (ahead.back() < seg.to) with_runs.push_back({ahead.back(), seg.to, {}});
-      } else {
-        if (seg.from < behind.front()) with_runs.push_back({seg.from, behind.front(), {}});
-        add_tiles(behind);
+        continue;
       }
+      const std::vector<std::size_t> behind = tiles(seg.from, seg.to, false);
+      if (behind.size() > 1 && bare(seg.from, behind.front())) {
+        with_runs.push_back({seg.from, behind.front(), {}});
+        add_tiles(behind);
+        continue;
+      }
+      with_runs.push_back(std::move(seg));
     }
     segments = std::move(with_runs);
     if (2 * covered < n) return false;
