@@ -277,6 +277,26 @@ TEST(BoxSplit, AYardBeforeABuildingWhoseTiersAreSetBackIsOneEmptyPart) {
   EXPECT_EQ(leaves(house.children[1]), (std::vector<std::uint32_t>{1, 2, 3}));
 }
 
+TEST(BoxSplit, AMarginRoundAPartThatSpansARowIsCutBeforeTheRows) {
+  // A portico before its wall: a pediment (x 2 to 8) over three columns
+  // whose last stands short of the pediment's end. The margins left and
+  // right of the pediment are the portico's, one empty part each, cut
+  // before colonnade and pediment: cut the other way round, the colonnade
+  // row would end where its last column does and only the pediment would
+  // say where the colonnade ends (a variant's columns could not line up
+  // with its pediment).
+  const SplitTree t = split({part("wall", {0, 1, 0}, {10, 3, 4}, 0), part("pediment", {2, 0, 3}, {8, 1, 4}, 1),
+                             part("column", {2, 0, 0}, {2.6, 1, 3}, 2), part("column", {4, 0, 0}, {4.6, 1, 3}, 3),
+                             part("column", {6, 0, 0}, {6.6, 1, 3}, 4)});
+  ASSERT_TRUE(cut_along(t, 1, 2));
+  const SplitTree& portico = t.children[0];
+  ASSERT_TRUE(cut_along(portico, 0, 3));
+  EXPECT_EQ(portico.children[0].kind, Kind::Empty);
+  EXPECT_EQ(portico.children[2].kind, Kind::Empty);
+  ASSERT_TRUE(cut_along(portico.children[1], 2, 2));
+  EXPECT_EQ(leaves(portico.children[1]), (std::vector<std::uint32_t>{1, 2, 3, 4}));
+}
+
 TEST(BoxSplit, AHouseBehindItsYardBetweenTwoWingsIsOnePiece) {
   // Two wings right across the plot's depth and, between them, a house of
   // two bays and two storeys set back 4 m: its bays are set back alike,

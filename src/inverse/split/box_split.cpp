@@ -31,7 +31,8 @@
 // a piece of a y-cut z first); and a cut that only peels empty space off a
 // container's ends waits for an axis that divides its parts (see cut),
 // unless every part borders that space alike (uniform_peel: a yard before
-// a whole building).
+// a whole building) or one part spans what lies between the space on both
+// sides (framed_peel: the margins round a pediment and its colonnade).
 // The bounds are sorted by radix sort on their
 // order-preserving bit patterns (11 bits a pass), ties in input order.
 //
@@ -343,7 +344,7 @@ class Splitter {
       const int a = w.axes[static_cast<std::size_t>(i)];
       if (w.lo[static_cast<std::size_t>(a)] == w.hi[static_cast<std::size_t>(a)]) continue;  // flat along a
       if (!find_pieces(w, a)) continue;
-      if (pieces_.size() == 1 && uniform_peel(w, a)) {
+      if (pieces_.size() == 1 && (uniform_peel(w, a) || framed_peel(w, a))) {
         cut_along(w, a);
         return;
       }
@@ -400,6 +401,29 @@ class Splitter {
     if (a != 2 && before && !alike_before) alike_before = front_right_across(w, a, false);
     if (a != 2 && after && !alike_after) alike_after = front_right_across(w, a, true);
     return (before || after) && (!before || alike_before) && (!after || alike_after);
+  }
+
+  // Does one box span the one piece of the last sweep along a from end to
+  // end, with empty space on both sides of it? Then that space is a margin
+  // of the whole piece (a portico set in on its front, its pediment right
+  // across it over a colonnade), peeled first: waiting for the rows would
+  // give each row its own margins, and a row whose last part stops short
+  // of the frame (the colonnade's last column) would lose where the frame
+  // ends, so nothing could keep it lined up with the pediment. Space on
+  // one side only is not a frame: the air over a row of buildings, the
+  // tallest of which may well be one box from the ground up, waits.
+  bool framed_peel(const Work& w, int a) const {
+    const auto ax = static_cast<std::size_t>(a);
+    const Span& piece = pieces_[0];
+    if (piece.lo == w.lo[ax] || piece.hi == w.hi[ax]) return false;
+    const Event* events = events_[ax].data();
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const Event e = events[i];
+      if ((e & 1u) != 0) continue;
+      const std::uint32_t box = e >> 1;
+      if (lo_[ax][box] == piece.lo && hi_[ax][box] == piece.hi) return true;
+    }
+    return false;
   }
 
   // Do the boxes on the container's bottom that start where the one piece
