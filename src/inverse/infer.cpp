@@ -20,6 +20,7 @@
 #include "inverse/sizes/overflow_splits.hpp"
 #include "inverse/sizes/progressions.hpp"
 #include "inverse/sizes/repeat_alternatives.hpp"
+#include "inverse/sizes/scope_by_count.hpp"
 #include "inverse/sizes/tidy_numbers.hpp"
 #include "inverse/split/box_split.hpp"
 #include "inverse/split/split_graph.hpp"
@@ -241,6 +242,9 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
       out.grammar.scope[axis] =
           distribution_expr(short_decimals(fit_size(sizes, tolerance, options.uniform_distributions), exact / 4));
     }
+    // Unless the plot follows a count drawn once per building (a pagoda as
+    // tall as its tiers): read from the examples' derivations, so checked.
+    if (parts <= kJoinedPartsLimit) tie_scope_to_counts(out.grammar, examples, {exact, options.threads});
   };
   // Sizes are merged within the largest example tolerance (a house far
   // from the origin is noisy to a centimetre, and its 0.6 m wall is the

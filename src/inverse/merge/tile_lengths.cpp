@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "graph/nodes_below.hpp"
 #include "inverse/merge/merge.hpp"
 
 namespace vern {
@@ -17,19 +18,12 @@ std::optional<std::size_t> axis_of(const Repeat& r) {
 }  // namespace
 
 TileLengths::TileLengths(const Grammar& g, NodeId root) {
-  std::vector<bool> seen(g.node_count(), false);
-  std::vector<NodeId> stack{root};
   std::array<std::vector<Range>, 3> lengths;
-  while (!stack.empty()) {
-    const NodeId id = stack.back();
-    stack.pop_back();
-    if (seen[id]) continue;
-    seen[id] = true;
-    const Operation& op = g.op(id);
-    if (const auto* r = std::get_if<Repeat>(&op))
+  walk_below(g, root, [&](NodeId id) {
+    if (const auto* r = std::get_if<Repeat>(&g.op(id)))
       if (const auto axis = axis_of(*r); axis && literal_range(r->size)) lengths[*axis].push_back(*literal_range(r->size));
-    for_each_child(op, [&](NodeId c) { stack.push_back(c); });
-  }
+    return true;
+  });
   for (std::size_t a = 0; a < 3; ++a) {
     std::sort(lengths[a].begin(), lengths[a].end(), [](const Range& x, const Range& y) { return x.lo < y.lo; });
     double longest = 0;  // the longest length so far
