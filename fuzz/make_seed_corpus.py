@@ -42,7 +42,8 @@ def grammar_seeds():
         "p --> split(y){ ~normal(1, 0.1) : q(k, x) | tnormal(1, 1, 0, 2) : nil | ~choice(1, 2, 3) : I(a) }\n"
         "q(n, ax) : n >= 1 && !(n == 2) || n != 3 --> repeatN(ax, max(1, min(n, 4))){ I(b) }\n"
         "q(n, ax) : abs(n) < floor(2.5) --> repeat(ax){ ceil(round(sqrt(2))) : S(~1, 0.5, ~1){ I(c) } }\n"
-        "q(n, ax) --> T(sin(pi), cos(0), 1 / 2){ R(z, pi / 2){ I(d) } } : 0.5\n",
+        "q(n, ax) --> T(sin(pi), cos(0), 1 / 2){ R(z, pi / 2){ I(d) } } : 0.5\n"
+        "q(n, ax) --> split(ax){ size(ax) / 4 : I(e) | ~size(z) : nil } : 0.25\n",
         "comp.grm": "p --> comp(f){ top : colour(red) | bottom : colour(0.2, 0.4, 0.6) | front : nil"
         " | back : I(w) | left : I(x1) | right : color(blue) }\n",
         "arrows.grm": "// other arrows\na -> b\nb → split(0){ 1 : I(r) | ~1 : c }\nc --> I(r)\n",

@@ -368,6 +368,23 @@ TEST(CheckOperations, ContinuousRandomArgumentsAreSolvedFor) {
   EXPECT_FALSE(check_text(g, {box("r", {0, 0, 0}, {1, 1, 9})}, {1, 1, 10}).derivable);
 }
 
+TEST(CheckOperations, SizeIsReadFromTheScopeBeingMatched) {
+  // Tiers of 3 m, as many as the plot's height holds: two on a plot 6 m
+  // high, so two tiers of 2 m and one of 2 m are not its buildings.
+  const std::string g =
+      "p --> t(round(size(z) / 3))\nt(n) : n > 0 --> split(z){ 3 : I(r) | ~1 : t(n - 1) }\nt(n) : n <= 0 --> nil";
+  const auto r = check_text(g, {box("r", {0, 0, 0}, {1, 1, 3}), box("r", {0, 0, 3}, {1, 1, 6})}, {1, 1, 6});
+  ASSERT_TRUE(r.derivable) << r.mismatch;
+  EXPECT_FALSE(check_text(g,
+                          {box("r", {0, 0, 0}, {1, 1, 2}), box("r", {0, 0, 2}, {1, 1, 4}), box("r", {0, 0, 4}, {1, 1, 6})},
+                          {1, 1, 6})
+                   .derivable);
+  // In a split's sizes too: a quarter of whatever scope it splits.
+  const std::string quarter = "p --> split(x){ ~1 : q | ~1 : q }\nq --> split(x){ size(x) / 4 : I(a) | ~1 : nil }";
+  EXPECT_TRUE(check_text(quarter, {box("a", {0, 0, 0}, {1, 1, 1}), box("a", {4, 0, 0}, {5, 1, 1})}, {8, 1, 1}).derivable);
+  EXPECT_FALSE(check_text(quarter, {box("a", {0, 0, 0}, {2, 1, 1}), box("a", {4, 0, 0}, {6, 1, 1})}, {8, 1, 1}).derivable);
+}
+
 TEST(CheckOperations, WhatCannotBeCheckedIsSaid) {
   const auto r = check_text("p --> T(rand(0, 1), 0, 0){ I(r) }", {box("r", {0.5, 0, 0}, {1.5, 1, 1})}, {1, 1, 1});
   EXPECT_FALSE(r.derivable);

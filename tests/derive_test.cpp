@@ -29,6 +29,28 @@ TEST(Derive, RelativeSizesShareTheScope) {
   EXPECT_NEAR(b[1].max.x - b[1].min.x, 3, kEps);
 }
 
+TEST(Derive, SizeReadsTheScopeWhereTheExpressionStands) {
+  // On a plot 8 x 1 x 10: a quarter of its width (the split's sizes read
+  // the split's scope), then the rest, passed its own width as an
+  // argument (the call stands in the part, 6 m wide), its height checked
+  // in a condition.
+  const auto d = derive_text(
+      "plot --> split(x){ size(x) / 4 : I(A) | ~1 : b(size(x)) }\n"
+      "b(w) : size(z) > 5 --> split(z){ w : I(B) | ~1 : split(x){ size(x) / 3 : I(C) | ~1 : nil } }\n"
+      "b(w) : size(z) <= 5 --> I(D)\n",
+      {8, 1, 10});
+  const auto b = boxes(d);
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(b[0].label, "A");
+  EXPECT_NEAR(b[0].max.x - b[0].min.x, 2, kEps);
+  EXPECT_EQ(b[1].label, "B");
+  EXPECT_NEAR(b[1].max.z - b[1].min.z, 6, kEps);
+  EXPECT_EQ(b[2].label, "C");
+  EXPECT_NEAR(b[2].max.x - b[2].min.x, 2, kEps);  // a third of b's 6 m
+  EXPECT_EQ(boxes(derive_text("plot --> b(1)\nb(w) : size(z) > 5 --> I(B)\nb(w) : size(z) <= 5 --> I(D)\n", {8, 1, 4}))[0].label,
+            "D");
+}
+
 TEST(Derive, TerminalsNotKeptLeaveTheRestAsItWas) {
   const std::string text =
       "p --> split(x){ ~1 : colour(1, 0, 0) | ~rand(1, 2) : I(a) } : 1\np --> repeat(y, 0.3){ I(b) } : 1";

@@ -107,6 +107,21 @@ TEST(Parser, AParameterMayShadowAFunctionName) {
   EXPECT_EQ(g.rules[g.start_rule].label, "p");
 }
 
+TEST(Parser, SizeReadsTheScopeOfARuleAndNowhereElse) {
+  // size(axis) in a rule's sizes, arguments and conditions; an axis
+  // parameter names the axis too.
+  const Grammar g = parse_grammar("p(a) : size(z) > 3 --> split(a){ size(a) / 2 : I(b) | ~1 : q(size(x)) }\n"
+                                  "q(w) --> I(c)\n");
+  EXPECT_TRUE(std::get<Choose>(g.op(g.rules[0].body)).options[0].condition.reads_scope());
+  // Constants and @scope are evaluated before there is any scope.
+  for (const char* text : {"w = size(x)\np --> I(b)\n", "@scope 10, 10, size(x)\np --> I(b)\n"}) {
+    const std::string e = parse_error(text);
+    EXPECT_NE(e.find("size() reads the size of the scope a rule's operation stands in"), std::string::npos) << e;
+    EXPECT_NE(e.find("use size() in a rule"), std::string::npos) << e;
+  }
+  EXPECT_NE(parse_error("p --> split(x){ size() : I(b) }").find("write size(x), size(y) or size(z)"), std::string::npos);
+}
+
 TEST(Parser, AlternativesBecomeOneChooseInFileOrder) {
   const Grammar g = parse_grammar("a --> I(x) : 2\nb --> nil\na(  ) : 1 > 0 --> I(y)\n");
   ASSERT_EQ(g.rules.size(), 2u);

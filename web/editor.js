@@ -2,7 +2,7 @@
 // line numbers, the line of an error marked and lines of a picked part lit.
 // (No editor library: the page loads nothing but three.js.)
 
-const KEYWORDS = /^(split|repeat|repeatN|comp|I|T|S|R|nil|colour|rand|randint|choice|tnormal|normal|min|max|abs|sqrt|floor|ceil|round|pi|x|y|z|front|back|left|right|top|bottom)$/;
+const KEYWORDS = /^(split|repeat|repeatN|comp|I|T|S|R|nil|colour|rand|randint|choice|tnormal|normal|min|max|abs|sqrt|floor|ceil|round|size|pi|x|y|z|front|back|left|right|top|bottom)$/;
 
 function escape(text) {
   return text.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');

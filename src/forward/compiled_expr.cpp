@@ -174,8 +174,8 @@ struct Compiler {
 
   Piece call(std::size_t i, Function f) {
     const std::size_t argc = e.node(i).argc;
-    if (f == Function::Choice) {
-      ok = false;  // picks one argument to evaluate: left to the tree evaluator
+    if (f == Function::Choice || f == Function::Size) {
+      ok = false;  // picks one argument to evaluate, or reads the scope: left to the tree evaluator
       return {};
     }
     if (argc == 0) {
@@ -207,7 +207,8 @@ struct Compiler {
       case Function::RandInt: op = Instr::RandInt, random = true; break;
       case Function::Normal: op = Instr::Normal, random = true; break;
       case Function::TNormal: op = Instr::TNormal, random = true; break;
-      case Function::Choice: break;
+      case Function::Choice:
+      case Function::Size: break;
     }
     const std::size_t want = op == Instr::TNormal ? 4 : random ? 2 : (op == Instr::Min || op == Instr::Max) ? argc : 1;
     if (op == Instr::End || argc != want) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "base/number_format.hpp"
 #include "base/stack_guard.hpp"
@@ -142,7 +143,7 @@ class Deriver {
   }
 
   const Value* params() const { return params_.data() + params_base_; }
-  EvalContext context(RandomStream& rng) const { return {params(), constants_.data(), &rng}; }
+  EvalContext context(RandomStream& rng) const { return {params(), constants_.data(), &rng, scope_size_}; }
 
   // Compiled code answers; where it cannot (and on every error) the tree
   // evaluator runs again from the same random state (compiled_expr.hpp).
@@ -528,6 +529,9 @@ class Deriver {
   std::vector<Terminal>& terminals_;
   LabelId rect_label_ = 0;
   std::vector<Value> constants_;
+  // The size of the scope of the node being derived, for size(axis); none
+  // while constants and @scope are evaluated.
+  const double* scope_size_ = nullptr;
   std::vector<Value> params_;     // the arguments of every call in the chain, from 0 to params_top_
   std::size_t params_top_ = 0;
   std::size_t params_base_ = 0;  // the running rule's first argument in params_
@@ -549,6 +553,13 @@ void Deriver::node(const Target& t, const Scope& s, std::uint64_t slot, std::uin
   if (t.kind == OpKind::Nil) return;
   const std::uint64_t key = child_key(parent_key, slot);
   RandomStream rng(key);
+  // The node's expressions read its scope (size(axis)); its parent's,
+  // evaluated after this returns, read the parent's again.
+  struct Restore {
+    const double*& slot;
+    const double* saved;
+    ~Restore() { slot = saved; }
+  } restore{scope_size_, std::exchange(scope_size_, &s.size[0])};
   switch (t.kind) {
     case OpKind::Split: return split(prog_.splits[t.index], t.node, s, key, rng);
     case OpKind::Repeat: return repeat(prog_.repeats[t.index], t.node, s, key, rng);

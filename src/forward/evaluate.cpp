@@ -56,6 +56,7 @@ struct Evaluator {
           if (v.is_number()) return v.number();
           not_a_number(i, v);
         }
+        if (static_cast<Function>(x.op) == Function::Size) return scope_size(i);
         return call(i, static_cast<Function>(x.op));
       }
     }
@@ -123,6 +124,17 @@ struct Evaluator {
     const std::size_t argc = roots(i, r);
     const auto k = static_cast<std::size_t>(std::floor(ctx.random->uniform() * static_cast<double>(argc)));
     return val(nth(i, std::min(k, argc - 1), r));
+  }
+
+  // size(axis): the scope's size along the axis its one argument names.
+  double scope_size(std::size_t i) const {
+    const Value a = val(i - 1);
+    const auto axis = a.to_axis();
+    if (!axis) fail_at(i, "size() takes an axis, found " + a.describe(), "write size(x), size(y) or size(z)");
+    if (!ctx.scope_size)
+      fail_at(i, "size() reads the size of the scope it stands in, and here there is none",
+              "constants and @scope are evaluated before any scope: use size() in a rule");
+    return ctx.scope_size[static_cast<std::size_t>(*axis)];
   }
 
   double call(std::size_t i, Function f) const {

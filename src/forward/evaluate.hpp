@@ -20,6 +20,9 @@ struct EvalContext {
   const Value* params = nullptr;     // the running rule's arguments
   const Value* constants = nullptr;  // this derivation's constant values
   RandomStream* random = nullptr;    // the running node's stream
+  // The size of the scope the expression stands in (x, y, z), for
+  // size(axis); none in constants and @scope, evaluated before any scope.
+  const double* scope_size = nullptr;
 };
 
 Value evaluate(const Expr& e, const EvalContext& ctx);

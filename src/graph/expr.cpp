@@ -10,7 +10,7 @@ namespace vern {
 
 namespace {
 
-constexpr std::array<FunctionInfo, 14> kFunctions{{
+constexpr std::array<FunctionInfo, 15> kFunctions{{
     {Function::Min, "min", 1, -1, false},
     {Function::Max, "max", 1, -1, false},
     {Function::Abs, "abs", 1, 1, false},
@@ -25,6 +25,7 @@ constexpr std::array<FunctionInfo, 14> kFunctions{{
     {Function::Normal, "normal", 2, 2, true},
     {Function::TNormal, "tnormal", 4, 4, true},
     {Function::Choice, "choice", 1, -1, true},
+    {Function::Size, "size", 1, 1, false},
 }};
 
 }  // namespace
@@ -220,6 +221,12 @@ std::optional<std::uint8_t> Expr::literal_axis() const {
 bool Expr::draws_random() const {
   return std::ranges::any_of(nodes(), [](const ExprNode& n) {
     return n.kind == ExprKind::Call && function_info(static_cast<Function>(n.op)).random;
+  });
+}
+
+bool Expr::reads_scope() const {
+  return std::ranges::any_of(nodes(), [](const ExprNode& n) {
+    return n.kind == ExprKind::Call && static_cast<Function>(n.op) == Function::Size;
   });
 }
 

@@ -41,6 +41,7 @@ enum class BinaryOp : std::uint8_t { Add, Sub, Mul, Div, Mod, Eq, Ne, Lt, Le, Gt
 enum class Function : std::uint8_t {
   Min, Max, Abs, Floor, Ceil, Round, Sqrt, Sin, Cos,
   Rand, RandInt, Normal, TNormal, Choice,
+  Size,  // size(axis): the scope's size along an axis, where the expression stands
 };
 
 // One table describes every function: its name, how many arguments it takes
@@ -116,6 +117,9 @@ class Expr {
   // parameter or anything computed).
   std::optional<std::uint8_t> literal_axis() const;
   bool draws_random() const;
+  // Whether it reads the scope it stands in (size(axis)): its value then
+  // depends on where it is evaluated, not only on its names and draws.
+  bool reads_scope() const;
   bool uses_params() const;
   // 1 + the highest parameter index read, 0 when none is.
   std::size_t params_read() const;

@@ -755,12 +755,15 @@ class Parser {
         expect(TokenKind::RParen, "to close the arguments of " + std::string(n), "write " + call_form(*f));
       }
       check_arity(*f, args.size(), t);
+      if (*f == Function::Size && !params_)
+        error(t.loc, "size() reads the size of the scope a rule's operation stands in, and here there is none",
+              "constants and @scope are evaluated before any scope: use size() in a rule");
       if (args.size() > kMaxArguments)
         error(t.loc, std::string(n) + " is given " + std::to_string(args.size()) + " arguments, more than " +
                          std::to_string(kMaxArguments),
               "split the list: choice(choice(a, b), choice(c, d)) draws as evenly when the halves are equal");
       for (const auto& a : args)
-        if (a.node(a.root()).kind == ExprKind::Axis)
+        if (*f != Function::Size && a.node(a.root()).kind == ExprKind::Axis)
           error(a.loc(), std::string(n) + " expects numbers, found an axis", "axes can only be compared with == and !=");
       return Expr::call(*f, std::move(args), t.loc);
     }
@@ -813,6 +816,7 @@ class Parser {
     const FunctionInfo& info = function_info(f);
     const std::string name(info.name);
     if (f == Function::Rand) return "rand() or rand(a, b)";
+    if (f == Function::Size) return "size(x), size(y) or size(z)";
     std::string args;
     for (int i = 0; i < info.min_args; ++i) args += std::string(i ? ", " : "") + static_cast<char>('a' + i);
     if (info.max_args < 0) args += ", ...";

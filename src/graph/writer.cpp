@@ -279,7 +279,7 @@ class ExprWriter {
         out += '(';
         const auto kids = e_.children(i);
         for (std::size_t k = 0; k < kids.size(); ++k) {
-          number_operand(kids[k], f.name);
+          if (f.function != Function::Size) number_operand(kids[k], f.name);  // size(x) takes an axis
           if (k > 0) out += ", ";
           write(out, kids[k], 0);
         }
@@ -291,7 +291,7 @@ class ExprWriter {
   }
 
   // The parser refuses an axis literal where a number is expected (every
-  // operator but == and !=, every function), so the writer does too.
+  // operator but == and !=, every function but size), so the writer does too.
   void number_operand(std::size_t i, std::string_view where) const {
     if (e_.node(i).kind == ExprKind::Axis)
       cannot_write(std::string("the axis ") + axis_name(static_cast<Axis>(e_.node(i).op)) + " as an operand of " +

@@ -106,7 +106,7 @@ bool Emptiness::may_derive_nothing(NodeId id) {
 }
 
 bool Emptiness::share_may_be_zero(const Expr& e) {
-  if (e.uses_params()) return true;
+  if (e.uses_params() || e.reads_scope()) return true;  // known only where it stands
   try {
     const Support values = expression_support(e, lookup_);
     return values.empty() || values.contains(0.0);

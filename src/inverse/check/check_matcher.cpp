@@ -33,7 +33,11 @@ Matcher::Matcher(const Grammar& g, const std::vector<LabelledBox>& boxes, double
       floating_(floating),
       learned_order_(learned_order),
       answer_only_(answer_only) {
-  lookup_ = [this](ExprKind kind, std::uint32_t index) { return vars_.binding(kind, index); };
+  lookup_ = [this](ExprKind kind, std::uint32_t index) {
+    if (kind != kScopeSize) return vars_.binding(kind, index);
+    if (scope_) return Binding{true, Value(scope_->size[static_cast<glm::length_t>(index)]), {}};
+    return Binding{false, {}, Support::range(0, kInf)};
+  };
 }
 
 bool Matcher::run(const Scope& start, const BoxList& all) {
@@ -56,14 +60,18 @@ void Matcher::restore(const Marks& m, bool keep) {
 
 std::optional<Possible> Matcher::evaluate(const Expr& e, NodeId id, const Scope& s, const char* what,
                                           std::size_t number) {
+  // Kept once computed where it reads nothing that changes: no parameter,
+  // no constant still unknown, not the scope.
   const bool fixed = std::none_of(e.nodes().begin(), e.nodes().end(), [&](const ExprNode& n) {
-    return n.kind == ExprKind::Param || (n.kind == ExprKind::Constant && vars_.constant(n.index).unknown >= 0);
+    return n.kind == ExprKind::Param || (n.kind == ExprKind::Constant && vars_.constant(n.index).unknown >= 0) ||
+           (n.kind == ExprKind::Call && static_cast<Function>(n.op) == Function::Size);
   });
   if (fixed) {
     const auto hit = fixed_values_.find(&e);
     if (hit != fixed_values_.end()) return hit->second;
   }
   auto name = [&] { return std::string(what) + (number ? " " + std::to_string(number) : ""); };
+  scope_ = &s;
   try {
     Possible p = possible_values(e, lookup_);
     if (fixed) fixed_values_.emplace(&e, p);

@@ -289,6 +289,8 @@ class Matcher {
   std::unordered_map<const Expr*, Possible> fixed_values_;
   CutsCache cuts_;
   BindingLookup lookup_;
+  // The scope the expression being evaluated stands in (size(axis)).
+  const Scope* scope_ = nullptr;
   Emptiness empty_;
   Mismatch best_;
   std::string uncheckable_;

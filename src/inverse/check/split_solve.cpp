@@ -22,6 +22,7 @@ double SplitSearch::violation(const ScaleState& sc) const {
 }
 
 bool SplitSearch::refresh_shares() {
+  m_.scope_ = &s_;
   for (std::size_t i = 0; i < parts_.size(); ++i) {
     try {
       parts_[i].share = expression_support(op_.parts[i].size.value, m_.lookup_).clamp(0, kInf);

@@ -307,6 +307,17 @@ struct Walker {
                    a.random || b.random);
   }
 
+  // size(axis): what the lookup says of the scope's size along the axis.
+  Possible scope_size(std::size_t i) const {
+    const Possible a = at(i - 1);
+    if (!a.exact) throw NotCheckable{"size() of an axis drawn at random"};
+    const auto axis = a.value.to_axis();
+    if (!axis) fail_at(i, "size() takes an axis, found " + a.value.describe());
+    const Binding b = lookup(kScopeSize, static_cast<std::uint32_t>(*axis));
+    if (b.known) return exact(b.value);
+    return inexact(b.support, false);
+  }
+
   static Support remainder(const Support& x, const Support& y) {
     if (x.empty() || y.empty()) return {};
     const double m = std::max(std::abs(y.lower()), std::abs(y.upper()));
@@ -321,6 +332,7 @@ struct Walker {
   }
 
   Possible call(std::size_t i, Function f) const {
+    if (f == Function::Size) return scope_size(i);
     const std::vector<std::size_t> roots = e.children(i);
     std::vector<Possible> args;
     args.reserve(roots.size());
@@ -412,6 +424,7 @@ struct Walker {
         for (std::size_t k = 0; k < args.size(); ++k) all = all.unite(num(k));
         return inexact(all, true);
       }
+      case Function::Size: break;  // answered above
     }
     return {};
   }

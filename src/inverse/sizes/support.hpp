@@ -86,8 +86,11 @@ struct Binding {
   Support support;  // when !known
 };
 
-// Looks up a name: kind is ExprKind::Param or ExprKind::Constant, index its slot.
+// Looks up a name: kind is ExprKind::Param or ExprKind::Constant, index its
+// slot; or, kind kScopeSize, the size of the scope the expression stands in
+// along axis `index` (size(axis)): known where the scope is, else a support.
 using BindingLookup = std::function<Binding(ExprKind kind, std::uint32_t index)>;
+inline constexpr ExprKind kScopeSize = ExprKind::Call;
 
 // The values an expression can take. `exact`: no draw and no unknown name
 // took part, and `value` is what derive() computes. Otherwise `support`
