@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "forward/derive.hpp"
 #include "graph/parser.hpp"
+#include "inverse/check/check.hpp"
 #include "graph/writer.hpp"
 #include "inverse/infer.hpp"
 #include "support/example_helpers.hpp"
@@ -29,16 +31,26 @@ const char* const kPagoda =
     "tiers(n - 1) | 1.2 : nil } | 1.2 : nil } }\n"
     "tiers(n) : n <= 0 --> split(z){ 2.5 : I(roof) | ~1 : nil }\n";
 
-TEST(ScopeByCount, APagodaAsTallAsItsTiersDrawsItsHeightFromItsTierCount) {
+TEST(ScopeByCount, APagodaAsTallAsItsTiersReadsItsTierCountOffItsPlot) {
   const Grammar source = parse_grammar(kPagoda);
-  const Inference inferred = infer(derived_examples(source, 10), {});
+  const std::vector<Example> examples = derived_examples(source, 10);
+  const Inference inferred = infer(examples, {});
   const std::string text = write_grammar(inferred.grammar);
-  EXPECT_NE(text.find(" = randint(3, 5)\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("3 * "), std::string::npos) << text;
+  EXPECT_NE(text.find(", 3 * randint(3, 5) + 2.5\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("(round((size(z) - 2.5) / 3))"), std::string::npos) << text;
   // On its own plots (generate without --scope): every variant a pagoda of
   // the source's, where a height drawn apart from the count gave one in
-  // three (tiers stretched or squeezed to the plot).
+  // four (tiers stretched or squeezed to the plot).
   EXPECT_TRUE(source_derives_variants(source, inferred.grammar, 1001, 1040));
+  // And on the examples' plots, as precision is measured: the count each
+  // plot's height holds, where a count drawn apart gave one in three.
+  for (std::size_t i = 0; i < examples.size(); ++i) {
+    DeriveOptions o;
+    o.seed = 1001 + i;
+    o.size = example_size(examples[i]);
+    const Example variant = example_of(derived_parts(derive(inferred.grammar, o)));
+    EXPECT_TRUE(check_example(source, variant.boxes, example_size(variant)).derivable) << "plot of example " << i;
+  }
 }
 
 // Tiers set in by 1 m, as shares of the plot (kShareTiers) or 3 m each
@@ -70,7 +82,8 @@ TEST(ScopeByCount, AHeightThatDoesNotFollowTheCountStaysItsOwn) {
 }
 
 TEST(ScopeByCount, APlotThatFollowsTheCountIsALineInItAndStillDerivesEveryExample) {
-  // Tiers of 3 m under a roof of 2 m: plots 3n + 2 high.
+  // Tiers of 3 m under a roof of 2 m: plots 3n + 2 high. The call stands
+  // on the plot: the count is read off it.
   Grammar g = parse_grammar(std::string("@scope 10, 10, choice(8, 11, 14)\nbuilding --> tiers(randint(2, 4))\n") +
                             kMetreTiers);
   std::vector<Example> examples;
@@ -78,8 +91,29 @@ TEST(ScopeByCount, APlotThatFollowsTheCountIsALineInItAndStillDerivesEveryExampl
   ASSERT_TRUE(derives_every_example(g, examples));
   EXPECT_EQ(tie_scope_to_counts(g, examples, {}), 1u);
   const std::string text = write_grammar(g);
-  EXPECT_NE(text.find("tiersN = randint(2, 4)\n@scope 10, 10, 3 * tiersN + 2\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("building --> tiers(tiersN)"), std::string::npos) << text;
+  EXPECT_NE(text.find("@scope 10, 10, 3 * randint(2, 4) + 2\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("building --> tiers(round((size(z) - 2) / 3))"), std::string::npos) << text;
+  EXPECT_TRUE(derives_every_example(g, examples));
+}
+
+TEST(ScopeByCount, ACountDrawnOnAPartOfThePlotIsAConstantThePlotFollows) {
+  // The same tiers on a podium 4 m high: the call stands on what the
+  // podium leaves, not on the plot, so the count is drawn once, as a
+  // constant, and the plot is the line in it.
+  const std::string podium = "building --> split(z){ 4 : I(podium) | ~1 : tiers(randint(2, 4)) }\n";
+  Grammar g = parse_grammar("@scope 10, 10, choice(12, 15, 18)\n" + podium + kMetreTiers);
+  std::vector<Example> examples;
+  for (const int n : {2, 3, 4, 3}) {
+    const Grammar fixed = parse_grammar("@scope 10, 10, " + std::to_string(3 * n + 6) +
+                                        "\nbuilding --> split(z){ 4 : I(podium) | ~1 : tiers(" + std::to_string(n) +
+                                        ") }\n" + kMetreTiers);
+    examples.push_back(example_of(derived_parts(fixed, 1)));
+  }
+  ASSERT_TRUE(derives_every_example(g, examples));
+  EXPECT_EQ(tie_scope_to_counts(g, examples, {}), 1u);
+  const std::string text = write_grammar(g);
+  EXPECT_NE(text.find("tiersN = randint(2, 4)\n@scope 10, 10, 3 * tiersN + 6\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("~1 : tiers(tiersN)"), std::string::npos) << text;
   EXPECT_TRUE(derives_every_example(g, examples));
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <unordered_set>
+#include <utility>
 
 #include "graph/nodes_below.hpp"
 #include "inverse/merge/substitute.hpp"
@@ -64,6 +66,24 @@ std::string count_name(const Grammar& g, const Call& call, std::size_t arg) {
   return name;
 }
 
+// a + b v, as a person writes it (2.5 + 3 * v reads 3 * v + 2.5).
+Expr line_in(const Fit& f, const Expr& v) {
+  Expr out = f.b == 1 ? v : Expr::binary(BinaryOp::Mul, Expr::number(f.b), v);
+  if (f.a > 0) return Expr::binary(BinaryOp::Add, std::move(out), Expr::number(f.a));
+  if (f.a < 0) return Expr::binary(BinaryOp::Sub, std::move(out), Expr::number(-f.a));
+  return out;
+}
+
+// The count whose line f gives the plot's size along axis a:
+// round((size(a) - f.a) / f.b).
+Expr count_on_plot(Axis a, const Fit& f) {
+  Expr v = Expr::call(Function::Size, {Expr::axis(a)});
+  if (f.a > 0) v = Expr::binary(BinaryOp::Sub, std::move(v), Expr::number(f.a));
+  if (f.a < 0) v = Expr::binary(BinaryOp::Add, std::move(v), Expr::number(-f.a));
+  if (f.b != 1) v = Expr::binary(BinaryOp::Div, std::move(v), Expr::number(f.b));
+  return Expr::call(Function::Round, {std::move(v)});
+}
+
 }  // namespace
 
 std::size_t tie_scope_to_counts(Grammar& g, const std::vector<Example>& examples, const RewriteCheck& options) {
@@ -74,6 +94,12 @@ std::size_t tie_scope_to_counts(Grammar& g, const std::vector<Example>& examples
   if (!derives_examples(g, examples, options, results)) return 0;
   const double tol = options.tolerance;
 
+  // The calls that stand on the plot itself: reached through choices only.
+  std::unordered_set<NodeId> on_plot;
+  walk_below(g, g.rules[g.start_rule].body, [&](NodeId id) {
+    if (std::holds_alternative<Call>(g.op(id))) on_plot.insert(id);
+    return std::holds_alternative<Choose>(g.op(id));
+  });
   const Grammar before = g;
   std::vector<NodeId> replace(g.node_count(), kNoReplacement);
   std::size_t tied = 0;
@@ -90,32 +116,36 @@ std::size_t tie_scope_to_counts(Grammar& g, const std::vector<Example>& examples
       std::vector<double> x;
       for (const auto& v : values) x.push_back(v[m]);
       if (std::ranges::max(x) - std::ranges::min(x) < 0.5) continue;  // one count: nothing follows it
-      std::optional<std::uint32_t> constant;
-      for (int axis = 0; axis < 3; ++axis) {
-        if (g.scope[static_cast<std::size_t>(axis)].uses_params()) continue;
+      std::vector<std::pair<std::size_t, Fit>> lines;  // the axes that follow the draw
+      for (std::size_t axis = 0; axis < 3; ++axis) {
+        if (g.scope[axis].uses_params()) continue;
         std::vector<double> y;
-        for (const Example& e : examples) y.push_back(example_size(e)[axis]);
+        for (const Example& e : examples) y.push_back(example_size(e)[static_cast<glm::length_t>(axis)]);
         Fit f = line_fit(x, y);
         f.worst = worst_miss(x, y, f.a, f.b);
         if (f.worst > tol || std::abs(f.b) <= tol) continue;
-        f = short_line(x, y, f, tol);
-        if (!constant) {
-          constant = static_cast<std::uint32_t>(g.constants.size());
-          g.constants.push_back({count_name(g, call, drawn[m]), call.args[drawn[m]], {}});
-          call.args[drawn[m]] = Expr::constant(*constant);
-          changed = true;
-        }
-        // The line as joint sizes write one in a parameter, the parameter
-        // then made the constant.
-        Linear line;
-        line.c0 = f.a;
-        line.add(0, f.b);
-        Expr size = linear_expr(line);
-        for (std::size_t i = 0; i < size.nodes().size(); ++i)
-          if (size.node(i).kind == ExprKind::Param) size.set_leaf(i, Expr::constant(*constant).node(0));
-        g.scope[static_cast<std::size_t>(axis)] = std::move(size);
-        ++tied;
+        lines.emplace_back(axis, short_line(x, y, f, tol));
       }
+      if (lines.empty()) continue;
+      changed = true;
+      tied += lines.size();
+      const Expr draw = call.args[drawn[m]];
+      const bool counts = std::ranges::all_of(x, [](double v) { return v == std::round(v); });
+      if (counts && lines.size() == 1 && on_plot.contains(id)) {
+        // The count read off the plot the call stands on, whatever its
+        // size: round((size(z) - 2.5) / 3); the plot drawn as the line.
+        const auto& [axis, f] = lines[0];
+        call.args[drawn[m]] = count_on_plot(static_cast<Axis>(axis), f);
+        g.scope[axis] = line_in(f, draw);
+        continue;
+      }
+      // Elsewhere (the call on a part of the plot, several axes following
+      // the draw, sizes rather than counts), the draw becomes a constant
+      // the call and the plot share.
+      const auto constant = static_cast<std::uint32_t>(g.constants.size());
+      g.constants.push_back({count_name(g, call, drawn[m]), draw, {}});
+      call.args[drawn[m]] = Expr::constant(constant);
+      for (const auto& [axis, f] : lines) g.scope[axis] = line_in(f, Expr::constant(constant));
     }
     if (changed) replace[id] = g.intern({std::move(call), g.node(id).loc});
   }
