@@ -51,6 +51,11 @@ void check_tree(const SplitTree& t, const std::vector<LabelledBox>& boxes, doubl
     case Kind::Unsplittable:
       for (const SplitTree& c : t.children) EXPECT_EQ(c.kind, Kind::Leaf);
       break;
+    case Kind::Comp:  // each face's tree is in the face's own frame, not the boxes'
+      EXPECT_GE(t.children.size(), 2u);
+      EXPECT_EQ(t.children.size(), t.faces.size());
+      for (const SplitTree& c : t.children) EXPECT_EQ(c.min, glm::dvec3(0.0));
+      break;
     case Kind::Split: {
       ASSERT_GE(t.axis, 0);
       ASSERT_LE(t.axis, 2);
@@ -200,6 +205,23 @@ TEST(BoxSplit, AnLPlansFrontIsCutOffBeforeCutsThroughItsYard) {
   ASSERT_TRUE(cut_along(t, 1, 2));
   ASSERT_TRUE(cut_along(t.children[0], 0, 4));
   EXPECT_EQ(leaves(t.children[0]), (std::vector<std::uint32_t>{0, 1, 2, 3}));
+}
+
+TEST(BoxSplit, FlatPartsRoundAnOpenBoxAreCutIntoItsFaces) {
+  // A front of two panels, two side walls and a roof, all flat, meeting
+  // at the corners: no straight cut separates them, but each lies on a
+  // face of the box they bound: comp(f), each face split in its frame.
+  const SplitTree t = split({part("wall", {0, 0, 0}, {4, 0, 4}, 0), part("door", {4, 0, 0}, {10, 0, 4}, 1),
+                             part("side", {0, 0, 0}, {0, 6, 4}, 2), part("side", {10, 0, 0}, {10, 6, 4}, 3),
+                             part("roof", {0, 0, 4}, {10, 6, 4}, 4)});
+  ASSERT_EQ(t.kind, Kind::Comp);
+  EXPECT_EQ(t.faces, (std::vector<Face>{Face::Front, Face::Left, Face::Right, Face::Top}));
+  ASSERT_TRUE(cut_along(t.children[0], 0, 2));  // the front: wall | door along its x
+  EXPECT_EQ(t.children[0].children[1].box, 1u);
+  EXPECT_EQ(t.children[0].children[1].max, glm::dvec3(10, 4, 0));
+  EXPECT_EQ(t.children[1].kind, Kind::Leaf);
+  EXPECT_EQ(t.children[1].box, 2u);
+  EXPECT_EQ(t.children[3].box, 4u);
 }
 
 TEST(BoxSplit, ASinglePartIsALeaf) {

@@ -211,17 +211,21 @@ TEST(SplitGraph, TurnedPartsKeepTheirTurnInsideTheirPlacement) {
 }
 
 TEST(SplitGraph, PartsThatShareAMinCornerAreStillAnError) {
-  // Two panels meeting at a corner: neither cuts nor corners separate them.
-  const Example ex = test::example_of(
-      test::numbered({part("wall", {0, 0, 0}, {1, 0, 1}), part("side", {0, 0, 0}, {0, 1, 1})}), "corner.obj");
+  // Two panels meeting at a corner, one of them standing inside the
+  // group (a third panel behind reaches past it): neither cuts, nor
+  // corners, nor faces (comp_faces.hpp) separate them.
+  const Example ex = test::example_of(test::numbered({part("wall", {0, 0, 0}, {1, 0, 1}),
+                                                      part("side", {0, 0, 0}, {0, 1, 1}),
+                                                      part("back", {-1, 1, 0}, {1, 1, 1})}),
+                                      "corner.obj");
   Grammar g;
   try {
     example_graph(g, ex, {default_tolerance(ex)});
     ADD_FAILURE() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::Input);
-    EXPECT_NE(std::string(e.what()).find("corner.obj:1:1: error: these 2 parts cannot be separated by straight cuts "
-                                         "(e.g. a pinwheel): 'wall.0' (line 1), 'side.1' (line 2)"),
+    EXPECT_NE(std::string(e.what()).find("corner.obj:1:1: error: these 3 parts cannot be separated by straight cuts "
+                                         "(e.g. a pinwheel): 'wall.0' (line 1), 'side.1' (line 2), 'back.2' (line 3)"),
               std::string::npos)
         << e.what();
   }

@@ -23,6 +23,7 @@
 #include "inverse/sizes/scope_by_count.hpp"
 #include "inverse/sizes/tidy_numbers.hpp"
 #include "inverse/split/box_split.hpp"
+#include "inverse/split/comp_faces.hpp"
 #include "inverse/split/split_graph.hpp"
 #include "inverse/write/rule_naming.hpp"
 
@@ -114,6 +115,7 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
     roots.clear();
     placed.clear();
     for (std::size_t i = 0; i < examples.size(); ++i) {
+      orient_face_parts(trees[i], laid_out[i], oriented.canonical, out.tolerance, oriented.turns[i]);
       roots.push_back(split_graph(graph, trees[i], laid_out[i].boxes, laid_out[i].source, oriented.turns[i],
                                   {cut(examples[i]), &out.warnings, &placed}));
       // Turned back to be laid out: turned again where it is derived.

@@ -68,14 +68,10 @@ NodeId turned_primitive(Grammar& g, LabelId label, const Orientation& turns) {
   return turned_node(g, g.intern(Node{Primitive{label}, {}}), turns);
 }
 
-namespace {
-
 double vertex_tolerance(const LabelledBox& box, double tolerance) {
   const glm::dvec3 size = box.max - box.min;
   return std::max(tolerance, 1e-4 * std::max({size.x, size.y, size.z}));
 }
-
-}  // namespace
 
 PartOrientations orient_parts(const std::vector<Example>& examples, const PrimitiveLibrary& library,
                               double tolerance) {

@@ -58,6 +58,8 @@ struct PartOrientations {
 
 // Vertices match within max(tolerance, 1e-4 of the part's largest size):
 // exporters round coordinates, and a wrong turn misses by the part's size.
+double vertex_tolerance(const LabelledBox& box, double tolerance);
+
 PartOrientations orient_parts(const std::vector<Example>& examples, const PrimitiveLibrary& library,
                               double tolerance);
 

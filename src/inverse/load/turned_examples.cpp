@@ -69,6 +69,16 @@ void layout(const SplitTree& t, const std::vector<LabelledBox>& boxes, std::stri
       out += ')';
       return;
     }
+    case SplitTree::Kind::Comp:
+      out += "C(";
+      for (std::size_t i = 0; i < t.children.size(); ++i) {
+        out += face_name(t.faces[i]);
+        out += ':';
+        layout(t.children[i], boxes, out);
+        out += '|';
+      }
+      out += ')';
+      return;
     case SplitTree::Kind::Split: break;
   }
   out += static_cast<char>('x' + t.axis);

@@ -104,7 +104,7 @@ class Tidier {
       out = tidy_split(id);
     } else if (std::holds_alternative<Choose>(here) || std::holds_alternative<Repeat>(here) ||
                std::holds_alternative<RepeatN>(here) || std::holds_alternative<Rotate>(here) ||
-               std::holds_alternative<Scale>(here)) {
+               std::holds_alternative<Scale>(here) || std::holds_alternative<Comp>(here)) {
       out = tidy_other(id);
     }
     memo_[id] = out;
@@ -172,6 +172,8 @@ class Tidier {
       }
     } else if (auto* turn = std::get_if<Rotate>(&op)) {
       turn->child = run(turn->child);
+    } else if (auto* faces = std::get_if<Comp>(&op)) {
+      for (CompPart& face : faces->parts) face.child = run(face.child);
     } else if (auto* resize = std::get_if<Scale>(&op)) {
       // A placed part's size (placements.hpp): off by at most the tolerance.
       // A relative one is a ratio to its piece, rounded where it was made

@@ -72,6 +72,7 @@
 
 #include "base/error.hpp"
 #include "inverse/load/coordinate_clusters.hpp"
+#include "inverse/split/comp_faces.hpp"
 
 namespace vern {
 
@@ -1100,6 +1101,12 @@ class Splitter {
     std::sort(group.begin(), group.end());
     SplitTree& node = *w.node;
     set_extent(node, w.lo_val, w.hi_val);
+    if (group.size() >= 2) {
+      if (const auto faces = comp_faces(boxes_, group, node.min, node.max, tolerance_)) {
+        comp(node, *faces);
+        return;
+      }
+    }
     node.kind = SplitTree::Kind::Unsplittable;
     node.children.resize(group.size());
     for (std::size_t i = 0; i < group.size(); ++i) {
@@ -1110,6 +1117,32 @@ class Splitter {
       leaf.box = group[i];
     }
     if (group.size() >= 2) groups_.push_back(std::move(group));
+  }
+
+  // A mass model's faces (comp_faces.hpp): each face's parts split in its
+  // own frame, as a facade on its own would be, their leaves naming the
+  // parts by their index here.
+  void comp(SplitTree& node, const std::vector<FaceParts>& faces) const {
+    node.kind = SplitTree::Kind::Comp;
+    for (const FaceParts& f : faces) {
+      SplitTree face = split_boxes(f.local, BoxSplitOptions{tolerance_}, source_);
+      renumber(face, f.boxes);
+      face.min = glm::dvec3(0.0);
+      face.max = f.size;
+      node.children.push_back(std::move(face));
+      node.faces.push_back(f.face);
+    }
+  }
+
+  // Without recursion: a face's tree may be as deep as a building's.
+  static void renumber(SplitTree& t, const std::vector<std::uint32_t>& index) {
+    std::vector<SplitTree*> stack{&t};
+    while (!stack.empty()) {
+      SplitTree* n = stack.back();
+      stack.pop_back();
+      if (n->kind == SplitTree::Kind::Leaf) n->box = index[n->box];
+      for (SplitTree& c : n->children) stack.push_back(&c);
+    }
   }
 
   // Overlapping boxes share an unsplittable container; look for them there.
@@ -1209,6 +1242,7 @@ void count(const SplitTree& t, std::size_t depth, SplitTreeStats& s) {
     case SplitTree::Kind::Empty: ++s.empties; break;
     case SplitTree::Kind::Split: ++s.splits; break;
     case SplitTree::Kind::Unsplittable: ++s.unsplittable; break;
+    case SplitTree::Kind::Comp: ++s.splits; break;
   }
   for (const SplitTree& c : t.children) count(c, depth + 1, s);
 }

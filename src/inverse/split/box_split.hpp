@@ -39,6 +39,7 @@
 
 #include <glm/glm.hpp>
 
+#include "graph/node.hpp"
 #include "inverse/load/example.hpp"
 
 namespace vern {
@@ -57,12 +58,14 @@ struct SplitTree {
     Empty,         // empty space (a gap between boxes): nil
     Split,         // cut along `axis` into `children`, in order, gaps included
     Unsplittable,  // no straight cut divides it: its boxes as Leaf children
+    Comp,          // flat parts round an open box: one child per face, in the face's frame (comp_faces.hpp)
   };
   Kind kind = Kind::Empty;
   int axis = -1;  // Split: 0, 1, 2 for x, y, z; otherwise -1
   glm::dvec3 min{0.0}, max{0.0};  // this container's extent
   std::uint32_t box = 0;          // Leaf: index into the boxes given to split_boxes
   std::vector<SplitTree> children;
+  std::vector<Face> faces;        // Comp: each child's face
 
   glm::dvec3 size() const { return max - min; }
   friend bool operator==(const SplitTree&, const SplitTree&) = default;

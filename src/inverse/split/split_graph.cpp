@@ -29,6 +29,7 @@ class GraphBuilder {
       case SplitTree::Kind::Leaf: return leaf(t.box);
       case SplitTree::Kind::Empty: return nil();
       case SplitTree::Kind::Unsplittable: return placed(t);
+      case SplitTree::Kind::Comp: return comp(t);
       case SplitTree::Kind::Split: break;
     }
     // A split of one part is that part (toOp: "if there is only one child").
@@ -86,6 +87,13 @@ class GraphBuilder {
       if (std::abs(now - at) > options_.tolerance / 4) return false;
     }
     return true;
+  }
+
+  // comp(f){ front : ... | left : ... }: each face's tree in its frame.
+  NodeId comp(const SplitTree& t) {
+    Comp op;
+    for (std::size_t i = 0; i < t.children.size(); ++i) op.parts.push_back({t.faces[i], node(t.children[i])});
+    return g_.intern(Node{std::move(op), {}});
   }
 
   // Every leaf of one label is one node: looked up once per label, not
