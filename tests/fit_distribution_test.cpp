@@ -41,6 +41,25 @@ TEST(FitDistribution, RepeatedValuesAreAChoice) {
   expect_support_holds(d, v);
 }
 
+TEST(FitDistribution, ARareValueBesideRepeatedOnesIsStillAChoice) {
+  const std::vector<double> v = {3, 3.5, 3, 3.5, 3, 3.5, 3, 3.5, 3, 3.5, 4.25};
+  const Distribution d = fit_distribution(observations(v), {.resolution = 1e-6});
+  EXPECT_EQ(d.kind, DistributionKind::Choice);
+  EXPECT_EQ(d.values, (std::vector<double>{3, 3.5, 4.25}));
+}
+
+TEST(FitDistribution, OneValueSeenOftenWithTheRestSpreadIsNoChoice) {
+  // A roof 4 m high, squeezed where its barn outgrew the plot: 4 in
+  // eighteen examples, twelve other heights once each. A choice of the
+  // thirteen values listed every squeezed height seen and no other
+  // (issue 23, item 9: memorising, not generalising).
+  std::vector<double> v(18, 4.0);
+  for (int i = 0; i < 12; ++i) v.push_back(3.7 + 0.025 * i);
+  const Distribution d = fit_distribution(observations(v), {.resolution = 1e-6});
+  EXPECT_NE(d.kind, DistributionKind::Choice);
+  expect_support_holds(d, v);
+}
+
 TEST(FitDistribution, WholeBaysAreAChoiceOfEveryPointOfTheirRow) {
   // A door bay after one, two, four or five bays of 4.3 m, over seven
   // examples: the row's points, 12.9 m too (no example had three bays),

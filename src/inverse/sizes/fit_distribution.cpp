@@ -169,7 +169,12 @@ Distribution fit_distribution(const std::vector<Observation>& all, const FitOpti
   // choice(...) of the values seen, when they repeat.
   const std::vector<Observation> values = distinct(observations, options.resolution);
   const auto m = static_cast<double>(values.size());
-  if (m <= n / 2) {
+  // Values that repeat: a few values seen once beside them may be rare
+  // choices, but where most distinct values are seen once (one value
+  // seen again and again, the rest spread: a roof squeezed where its
+  // building outgrew the plot) the spread is no list to choose from.
+  const auto once = static_cast<double>(std::ranges::count_if(values, [](const Observation& o) { return o.count < 2; }));
+  if (m <= n / 2 && once <= std::max(1.0, m / 4)) {
     const double bic = m * std::log(n) - 2 * n * std::log(1 / m);
     if (bic < best.bic) {
       best = {};

@@ -9,7 +9,9 @@
 // every example stays derivable:
 //   - constant: all values within the resolution (no fitting needed);
 //   - choice(v1, ..., vm) of the distinct values, when values repeat
-//     (m <= n / 2): a discrete style, m parameters;
+//     (m <= n / 2, and at most a quarter of the m, or one, seen once: one
+//     value seen again and again beside a spread of values seen once
+//     each is no list to choose from): a discrete style, m parameters;
 // Observations of one value from one example (Observation::example) count
 // once, for every model: a value repeats only across examples.
 //   - rand(lo, hi), 2 parameters;
