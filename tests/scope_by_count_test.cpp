@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "forward/derive.hpp"
 #include "graph/parser.hpp"
 #include "inverse/check/check.hpp"
@@ -96,24 +98,45 @@ TEST(ScopeByCount, APlotThatFollowsTheCountIsALineInItAndStillDerivesEveryExampl
   EXPECT_TRUE(derives_every_example(g, examples));
 }
 
-TEST(ScopeByCount, ACountDrawnOnAPartOfThePlotIsAConstantThePlotFollows) {
-  // The same tiers on a podium 4 m high: the call stands on what the
-  // podium leaves, not on the plot, so the count is drawn once, as a
-  // constant, and the plot is the line in it.
+// The tiers on a podium written as `podium`, in examples of n tiers on
+// plots height(n) high.
+std::vector<Example> podium_examples(const std::string& podium, const std::function<double(int)>& height) {
+  std::vector<Example> out;
+  for (const int n : {2, 3, 4, 3}) {
+    std::string text = "@scope 10, 10, " + std::to_string(height(n)) + "\n" + podium + kMetreTiers;
+    text.replace(text.find("randint(2, 4)"), 13, std::to_string(n));
+    out.push_back(example_of(derived_parts(parse_grammar(text), 1)));
+  }
+  return out;
+}
+
+TEST(ScopeByCount, ACountOnABaseOfFixedHeightIsReadOffWhatTheBaseLeaves) {
+  // The tiers on a podium 4 m high: the call's scope is the plot less
+  // 4 m, so the count is read off it as 3n + 2 of what is left.
   const std::string podium = "building --> split(z){ 4 : I(podium) | ~1 : tiers(randint(2, 4)) }\n";
   Grammar g = parse_grammar("@scope 10, 10, choice(12, 15, 18)\n" + podium + kMetreTiers);
-  std::vector<Example> examples;
-  for (const int n : {2, 3, 4, 3}) {
-    const Grammar fixed = parse_grammar("@scope 10, 10, " + std::to_string(3 * n + 6) +
-                                        "\nbuilding --> split(z){ 4 : I(podium) | ~1 : tiers(" + std::to_string(n) +
-                                        ") }\n" + kMetreTiers);
-    examples.push_back(example_of(derived_parts(fixed, 1)));
-  }
+  const std::vector<Example> examples = podium_examples(podium, [](int n) { return 3 * n + 2 + 4; });
   ASSERT_TRUE(derives_every_example(g, examples));
   EXPECT_EQ(tie_scope_to_counts(g, examples, {}), 1u);
   const std::string text = write_grammar(g);
-  EXPECT_NE(text.find("tiersN = randint(2, 4)\n@scope 10, 10, 3 * tiersN + 6\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("~1 : tiers(tiersN)"), std::string::npos) << text;
+  EXPECT_NE(text.find("@scope 10, 10, 3 * randint(2, 4) + 6\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("~1 : tiers(round((size(z) - 2) / 3))"), std::string::npos) << text;
+  EXPECT_TRUE(derives_every_example(g, examples));
+}
+
+TEST(ScopeByCount, ACountOnAShareOfThePlotIsAConstantThePlotFollows) {
+  // The tiers on three quarters of the plot, a podium on the rest: what
+  // the call stands on is no fixed number of metres less than the plot,
+  // so the count is drawn once, as a constant, and the plot is the line
+  // in it.
+  const std::string podium = "building --> split(z){ ~1 : I(podium) | ~3 : tiers(randint(2, 4)) }\n";
+  Grammar g = parse_grammar("@scope 10, 10, rand(10, 20)\n" + podium + kMetreTiers);
+  const std::vector<Example> examples = podium_examples(podium, [](int n) { return (3 * n + 2) * 4.0 / 3; });
+  ASSERT_TRUE(derives_every_example(g, examples));
+  EXPECT_EQ(tie_scope_to_counts(g, examples, {}), 1u);
+  const std::string text = write_grammar(g);
+  EXPECT_NE(text.find("tiersN = randint(2, 4)\n@scope 10, 10, 4 * tiersN + 2.666667\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("~3 : tiers(tiersN)"), std::string::npos) << text;
   EXPECT_TRUE(derives_every_example(g, examples));
 }
 

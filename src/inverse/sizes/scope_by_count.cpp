@@ -1,16 +1,19 @@
 #include "inverse/sizes/scope_by_count.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 
 #include "graph/nodes_below.hpp"
 #include "inverse/merge/substitute.hpp"
 #include "inverse/sizes/linear_size.hpp"
+#include "inverse/sizes/tidy_numbers.hpp"
 
 namespace vern {
 
@@ -74,14 +77,64 @@ Expr line_in(const Fit& f, const Expr& v) {
   return out;
 }
 
-// The count whose line f gives the plot's size along axis a:
-// round((size(a) - f.a) / f.b).
-Expr count_on_plot(Axis a, const Fit& f) {
+// The count whose line f gives the plot's size along axis a, read at a
+// call whose scope is the plot less `less` metres along a (a base cut
+// off below it): round((size(a) - (f.a - less)) / f.b).
+Expr count_on_plot(Axis a, const Fit& f, double less) {
+  const double at = shortest_decimal(f.a - less, 1e-9 * std::max(1.0, std::abs(f.a)));
   Expr v = Expr::call(Function::Size, {Expr::axis(a)});
-  if (f.a > 0) v = Expr::binary(BinaryOp::Sub, std::move(v), Expr::number(f.a));
-  if (f.a < 0) v = Expr::binary(BinaryOp::Add, std::move(v), Expr::number(-f.a));
+  if (at > 0) v = Expr::binary(BinaryOp::Sub, std::move(v), Expr::number(at));
+  if (at < 0) v = Expr::binary(BinaryOp::Add, std::move(v), Expr::number(-at));
   if (f.b != 1) v = Expr::binary(BinaryOp::Div, std::move(v), Expr::number(f.b));
   return Expr::call(Function::Round, {std::move(v)});
+}
+
+// Per axis, how many metres less than the plot a node's scope is, where
+// that is the same on every plot: reached from the start rule through
+// choices, and splits whose part on the way is their one relative part
+// beside parts of literal metres (a base of 6 m under the tiers); along
+// any other split's axis, or below anything else, not known.
+using Less = std::array<std::optional<double>, 3>;
+std::unordered_map<NodeId, Less> calls_on_plot(const Grammar& g) {
+  std::unordered_map<NodeId, Less> out;
+  std::vector<std::pair<NodeId, Less>> stack{{g.rules[g.start_rule].body, Less{0.0, 0.0, 0.0}}};
+  std::unordered_set<NodeId> seen;
+  while (!stack.empty()) {
+    const auto [id, less] = stack.back();
+    stack.pop_back();
+    if (!seen.insert(id).second) {
+      if (auto it = out.find(id); it != out.end() && it->second != less) it->second = Less{};  // two ways in
+      continue;
+    }
+    const Operation& op = g.op(id);
+    if (std::holds_alternative<Call>(op)) {
+      out.emplace(id, less);
+    } else if (const auto* c = std::get_if<Choose>(&op)) {
+      for (const ChooseOption& o : c->options) stack.emplace_back(o.child, less);
+    } else if (const auto* s = std::get_if<Split>(&op)) {
+      const auto axis = s->axis.literal_axis();
+      double metres = 0;
+      std::size_t relative = 0;
+      bool literal = true;
+      for (const SplitPart& p : s->parts) {
+        if (p.size.relative) ++relative;
+        else if (const auto v = p.size.value.literal()) metres += *v;
+        else literal = false;
+      }
+      for (const SplitPart& p : s->parts) {
+        Less below = less;
+        if (!axis) {
+          below = Less{};
+        } else if (p.size.relative && relative == 1 && literal && below[*axis]) {
+          *below[*axis] += metres;
+        } else {
+          below[*axis].reset();
+        }
+        stack.emplace_back(p.child, below);
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -94,12 +147,8 @@ std::size_t tie_scope_to_counts(Grammar& g, const std::vector<Example>& examples
   if (!derives_examples(g, examples, options, results)) return 0;
   const double tol = options.tolerance;
 
-  // The calls that stand on the plot itself: reached through choices only.
-  std::unordered_set<NodeId> on_plot;
-  walk_below(g, g.rules[g.start_rule].body, [&](NodeId id) {
-    if (std::holds_alternative<Call>(g.op(id))) on_plot.insert(id);
-    return std::holds_alternative<Choose>(g.op(id));
-  });
+  // The calls whose scope is the plot less so many metres.
+  const std::unordered_map<NodeId, Less> on_plot = calls_on_plot(g);
   const Grammar before = g;
   std::vector<NodeId> replace(g.node_count(), kNoReplacement);
   std::size_t tied = 0;
@@ -131,17 +180,20 @@ std::size_t tie_scope_to_counts(Grammar& g, const std::vector<Example>& examples
       tied += lines.size();
       const Expr draw = call.args[drawn[m]];
       const bool counts = std::ranges::all_of(x, [](double v) { return v == std::round(v); });
-      if (counts && lines.size() == 1 && on_plot.contains(id)) {
-        // The count read off the plot the call stands on, whatever its
-        // size: round((size(z) - 2.5) / 3); the plot drawn as the line.
+      const auto where = on_plot.find(id);
+      if (counts && lines.size() == 1 && where != on_plot.end() && where->second[lines[0].first]) {
+        // The count read off the scope the call stands on, whatever the
+        // plot's size: round((size(z) - 2.5) / 3), or with a 6 m base cut
+        // off below, round((size(z) - 2.5) / 3) of the 6 m less; the plot
+        // drawn as the line.
         const auto& [axis, f] = lines[0];
-        call.args[drawn[m]] = count_on_plot(static_cast<Axis>(axis), f);
+        call.args[drawn[m]] = count_on_plot(static_cast<Axis>(axis), f, *where->second[axis]);
         g.scope[axis] = line_in(f, draw);
         continue;
       }
-      // Elsewhere (the call on a part of the plot, several axes following
-      // the draw, sizes rather than counts), the draw becomes a constant
-      // the call and the plot share.
+      // Elsewhere (a call whose scope is not the plot less fixed metres,
+      // several axes following the draw, sizes rather than counts), the
+      // draw becomes a constant the call and the plot share.
       const auto constant = static_cast<std::uint32_t>(g.constants.size());
       g.constants.push_back({count_name(g, call, drawn[m]), draw, {}});
       call.args[drawn[m]] = Expr::constant(constant);
