@@ -11,7 +11,8 @@
 // the examples' size along an axis is, example by example, a straight
 // line in a value drawn once per building (an argument drawn from a
 // finite set by a call the start rule makes, not below a repeat or
-// another call), the two are tied:
+// another call, of a rule that recurses: the count it runs down), the
+// two are tied:
 //   - a whole count on the plot itself (the call reached from the start
 //     rule through choices only) is read off whatever plot the grammar
 //     is given, and the plot is drawn as the line in the count:
