@@ -79,6 +79,10 @@ TEST(CompFaces, HousesCutIntoFacesByCompInferAsComp) {
   const std::string text = write_grammar(inferred.grammar);
   EXPECT_NE(text.find("comp(f){"), std::string::npos) << text;
   EXPECT_NE(text.find("1.4 : I(window)"), std::string::npos) << text;  // the window unturned in its face
+  // The walls too, on every face: the wall's mesh (from a front wall, in
+  // the world) is turned once for all faces, not written turned.
+  EXPECT_NE(text.find("left : I(wall)"), std::string::npos) << text;
+  EXPECT_EQ(text.find("R("), std::string::npos) << text;
   EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 1001, 1040));
 }
 

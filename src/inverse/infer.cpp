@@ -114,8 +114,8 @@ Inference infer_laid_out(const std::vector<Example>& examples, const InferOption
   auto build_graphs = [&](const std::vector<Example>& laid_out, const std::vector<int>& quarters, bool drop_trees) {
     roots.clear();
     placed.clear();
+    orient_face_parts(trees, laid_out, out.tolerance, oriented);
     for (std::size_t i = 0; i < examples.size(); ++i) {
-      orient_face_parts(trees[i], laid_out[i], oriented.canonical, out.tolerance, oriented.turns[i]);
       roots.push_back(split_graph(graph, trees[i], laid_out[i].boxes, laid_out[i].source, oriented.turns[i],
                                   {cut(examples[i]), &out.warnings, &placed}));
       // Turned back to be laid out: turned again where it is derived.

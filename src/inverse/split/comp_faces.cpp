@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
 
 #include "forward/scope.hpp"
 
@@ -38,10 +41,19 @@ std::vector<const SplitTree*> leaves_below(const SplitTree& t) {
 
 }  // namespace
 
-void orient_face_parts(const SplitTree& tree, const Example& example, const PrimitiveLibrary& canonical,
-                       double tolerance, std::vector<Orientation>& turns) {
+namespace {
+
+// A part on a face: where, and its vertices and box in the face's frame.
+struct FacePart {
+  std::size_t example = 0;
+  std::uint32_t box = 0;
+  std::vector<glm::dvec3> local;
+  glm::dvec3 min{0.0}, max{0.0};
+};
+
+// The parts on comp faces below one example's tree.
+void face_parts(const SplitTree& tree, const Example& example, std::size_t e, std::vector<FacePart>& out) {
   std::vector<const SplitTree*> stack{&tree};
-  std::vector<glm::dvec3> positions;
   while (!stack.empty()) {
     const SplitTree& t = *stack.back();
     stack.pop_back();
@@ -54,17 +66,66 @@ void orient_face_parts(const SplitTree& tree, const Example& example, const Prim
       const Scope s = face_scope(container, t.faces[f]);
       const glm::dmat3 to_local = glm::transpose(s.frame);
       for (const SplitTree* leaf : leaves_below(t.children[f])) {
-        const std::uint32_t b = leaf->box;
-        if (b >= example.positions.size() || b >= turns.size()) continue;
-        const LabelledBox& box = example.boxes[b];
-        const Mesh* mesh = canonical.find(box.label);
-        if (mesh == nullptr) continue;
-        example.positions.get(b, box.min, box.max, positions);
-        for (glm::dvec3& p : positions) p = to_local * (p - s.origin);
-        turns[b] = find_orientation(*mesh, positions, leaf->min, leaf->max, vertex_tolerance(box, tolerance))
-                       .value_or(Orientation{});
+        if (leaf->box >= example.positions.size()) continue;
+        FacePart p{e, leaf->box, {}, leaf->min, leaf->max};
+        const LabelledBox& box = example.boxes[leaf->box];
+        example.positions.get(leaf->box, box.min, box.max, p.local);
+        for (glm::dvec3& v : p.local) v = to_local * (v - s.origin);
+        out.push_back(std::move(p));
       }
     }
+  }
+}
+
+// The mesh in the unit box turned as R operations turn a scope: what
+// placing it unturned then gives what placing `mesh` turned gave.
+Mesh turned_mesh(const Mesh& mesh, const Orientation& turns) {
+  Scope s;
+  s.size = glm::dvec3(1.0);
+  for (const QuarterTurn& t : turns) s = rotated(s, t.axis, t.quarters * (std::numbers::pi / 2));
+  Mesh out = mesh;
+  for (glm::dvec3& p : out.positions) p = s.to_world(p);
+  for (glm::dvec3& n : out.normals) n = s.frame * n;
+  return out;
+}
+
+}  // namespace
+
+void orient_face_parts(const std::vector<SplitTree>& trees, const std::vector<Example>& examples, double tolerance,
+                       PartOrientations& oriented) {
+  std::vector<FacePart> parts;
+  for (std::size_t e = 0; e < trees.size() && e < examples.size(); ++e) face_parts(trees[e], examples[e], e, parts);
+  if (parts.empty()) return;
+  auto label_of = [&](const FacePart& p) -> const std::string& { return examples[p.example].boxes[p.box].label; };
+  auto tol_of = [&](const FacePart& p) { return vertex_tolerance(examples[p.example].boxes[p.box], tolerance); };
+  std::map<std::string, std::vector<std::size_t>> by_label;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const FacePart& p = parts[k];
+    by_label[label_of(p)].push_back(k);
+    if (p.example >= oriented.turns.size() || p.box >= oriented.turns[p.example].size()) continue;
+    const Mesh* mesh = oriented.canonical.find(label_of(p));
+    if (mesh == nullptr) continue;
+    oriented.turns[p.example][p.box] = find_orientation(*mesh, p.local, p.min, p.max, tol_of(p)).value_or(Orientation{});
+  }
+  // Labels whose every part is on a face, turned alike: rebased.
+  std::map<std::string, std::size_t> all;
+  for (const Example& e : examples)
+    for (const LabelledBox& b : e.boxes) ++all[b.label];
+  for (const auto& [label, ks] : by_label) {
+    const Mesh* mesh = oriented.canonical.find(label);
+    if (mesh == nullptr || ks.size() != all[label]) continue;
+    auto turns_of = [&](std::size_t k) -> Orientation& { return oriented.turns[parts[k].example][parts[k].box]; };
+    const Orientation first = turns_of(ks.front());
+    if (first.empty() || !std::ranges::all_of(ks, [&](std::size_t k) { return turns_of(k) == first; })) continue;
+    const Mesh rebased = turned_mesh(*mesh, first);
+    // Kept only where every part then needs no turn (checked, not assumed).
+    const bool unturned = std::ranges::all_of(ks, [&](std::size_t k) {
+      const auto t = find_orientation(rebased, parts[k].local, parts[k].min, parts[k].max, tol_of(parts[k]));
+      return t && t->empty();
+    });
+    if (!unturned) continue;
+    oriented.canonical.add(label, rebased);
+    for (const std::size_t k : ks) turns_of(k).clear();
   }
 }
 

@@ -44,12 +44,17 @@ std::optional<std::vector<FaceParts>> comp_faces(const std::vector<LabelledBox>&
                                                  const std::vector<std::uint32_t>& group, glm::dvec3 min,
                                                  glm::dvec3 max, double tolerance);
 
-// The turns of the parts on comp faces below `tree` (split_boxes of
-// `example`), as each face's frame sees them: a wall on the left face is
-// the front's wall unturned in its own frame, where the world sees it
-// turned a quarter about z. Replaces turns[b] for those parts; a part
-// whose mesh is no turn of its label's there keeps none.
-void orient_face_parts(const SplitTree& tree, const Example& example, const PrimitiveLibrary& canonical,
-                       double tolerance, std::vector<Orientation>& turns);
+// The turns of the parts on comp faces below each example's tree
+// (trees[i] split from examples[i]), as each face's frame sees them: a
+// wall on the left face is the front's wall unturned in its own frame,
+// where the world sees it turned a quarter about z. Replaces those parts'
+// turns in oriented.turns; a part whose mesh is no turn of its label's
+// there keeps none. A label whose parts all lie on faces, all turned
+// alike (a flat wall's mesh, taken from the world where it lies along x
+// and z, is turned a quarter about x in every face's frame), has its
+// canonical mesh turned so, and its parts none: `I(wall)`, not
+// `R(x, pi / 2){ I(wall) }` wherever a wall stands.
+void orient_face_parts(const std::vector<SplitTree>& trees, const std::vector<Example>& examples, double tolerance,
+                       PartOrientations& oriented);
 
 }  // namespace vern
