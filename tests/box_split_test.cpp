@@ -224,6 +224,27 @@ TEST(BoxSplit, FlatPartsRoundAnOpenBoxAreCutIntoItsFaces) {
   EXPECT_EQ(t.children[3].box, 4u);
 }
 
+TEST(BoxSplit, AMassWhoseStoreysLineUpRoundItsFacesIsOneMassOnItsPlinth) {
+  // A tower on a solid plinth, cut into its faces: each side a spandrel
+  // band under a glass band, at the same heights all round, and a flat
+  // roof. Cuts along z run through all four sides at the band's top; the
+  // bands are one mass's faces, each side's bands its own split.
+  std::vector<LabelledBox> boxes{part("plinth", {0, 0, 0}, {10, 10, 2})};
+  const glm::dvec3 lo[4] = {{0, 0, 0}, {0, 10, 0}, {0, 0, 0}, {10, 0, 0}};
+  const glm::dvec3 hi[4] = {{10, 0, 0}, {10, 10, 0}, {0, 10, 0}, {10, 10, 0}};
+  for (int s = 0; s < 4; ++s) {
+    boxes.push_back(part("spandrel", lo[s] + glm::dvec3(0, 0, 2), hi[s] + glm::dvec3(0, 0, 3)));
+    boxes.push_back(part("glass", lo[s] + glm::dvec3(0, 0, 3), hi[s] + glm::dvec3(0, 0, 8)));
+  }
+  boxes.push_back(part("roof", {0, 0, 8}, {10, 10, 8}));
+  const SplitTree t = split(test::numbered(boxes));
+  ASSERT_TRUE(cut_along(t, 2, 2));
+  const SplitTree& mass = t.children[1];
+  ASSERT_EQ(mass.kind, Kind::Comp);
+  EXPECT_EQ(mass.faces, (std::vector<Face>{Face::Front, Face::Back, Face::Left, Face::Right, Face::Top}));
+  EXPECT_TRUE(cut_along(mass.children[0], 1, 2));  // the front: spandrel under glass, along its y
+}
+
 TEST(BoxSplit, ASinglePartIsALeaf) {
   const SplitTree t = split({part("roof", {1, 2, 3}, {4, 6, 8})});
   EXPECT_EQ(t.kind, Kind::Leaf);

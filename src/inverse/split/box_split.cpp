@@ -325,6 +325,10 @@ class Splitter {
         return;
       }
     }
+    // A mass model's faces come before any cut: cuts through the open box
+    // would slice its faces into columns whose bays happen to line up
+    // front and back, each a flat part in empty space.
+    if (faces_of_mass(w)) return;
     // The axes in order, but a cut that only peels empty space off the
     // ends (one piece: a row of buildings under the air above its lowest
     // roofs) waits while another axis divides the parts themselves: the row
@@ -361,6 +365,7 @@ class Splitter {
           return;
         }
         group_partial_height_pieces(w, a);
+        group_mass_faces(w, a);
         cut_along(w, a);
         return;
       }
@@ -693,6 +698,51 @@ class Splitter {
       first = last + 1;
     }
     if (!any_full || std::none_of(joins.begin(), joins.end(), [](bool j) { return j; })) return;
+    if (compound_.size() != n) compound_.assign(n, kNone);
+    join_pieces(joins);
+  }
+
+  // Pieces along a that are all flat parts on the container's sides (or
+  // on its ends along a) are bands of a mass model's faces: a tower cut
+  // into its faces whose storeys line up round all four of them. Each
+  // run of two or more such pieces is one piece, its faces read as comp
+  // (faces_of_mass), so each face's storeys are its own repeat, not the
+  // whole mass cut into storeys of four faces each (the top one with the
+  // roof, another size).
+  void group_mass_faces(const Work& w, int a) {
+    const std::size_t n = pieces_.size();
+    for (std::size_t k = 0; k < 3; ++k)
+      if (w.lo[k] == w.hi[k]) return;
+    const auto ax = static_cast<std::size_t>(a);
+    auto on_face = [&](std::uint32_t box) {
+      for (std::size_t k = 0; k < 3; ++k)
+        if (lo_[k][box] == hi_[k][box] && (lo_[k][box] == w.lo[k] || lo_[k][box] == w.hi[k])) return true;
+      return false;
+    };
+    // Each piece's events lie together in the sweep's order: found by
+    // their rank, and read whole only where the first box opening there
+    // is on a face (a building of solid parts pays a search per piece).
+    std::vector<bool> faces(n, false);
+    const Event* events = events_[ax].data();
+    for (std::size_t p = 0; p < n; ++p) {
+      const Rank lo = pieces_[p].lo;
+      std::uint32_t i = static_cast<std::uint32_t>(
+          std::lower_bound(events + w.begin, events + w.end, lo,
+                           [&](Event e, Rank r) { return rank_of(ax, e) < r; }) -
+          events);
+      while (i < w.end && ((events[i] & 1u) != 0 || target_[span_of_[events[i] >> 1]] != p)) ++i;
+      if (i == w.end || !on_face(events[i] >> 1)) continue;
+      faces[p] = true;
+      for (; i < w.end && rank_of(ax, events[i]) <= pieces_[p].hi && faces[p]; ++i)
+        if ((events[i] & 1u) == 0 && target_[span_of_[events[i] >> 1]] == p && !on_face(events[i] >> 1)) faces[p] = false;
+    }
+    std::vector<bool> joins(n, false);
+    bool any = false;
+    for (std::size_t c = 1; c < n; ++c) {
+      joins[c] = faces[c] && faces[c - 1] && pieces_[c - 1].hi == pieces_[c].lo;
+      any = any || joins[c];
+    }
+    if (!any) return;
     if (compound_.size() != n) compound_.assign(n, kNone);
     join_pieces(joins);
   }
@@ -1092,21 +1142,40 @@ class Splitter {
   }
 
   // No straight cut divides the container: its boxes, in index order.
-  void unsplittable(const Work& w) {
+  // The container's boxes, by index.
+  std::vector<std::uint32_t> boxes_in(const Work& w) const {
     std::vector<std::uint32_t> group;
     for (std::uint32_t i = w.begin; i < w.end; ++i) {
       const std::uint32_t e = events_[0][i];
       if ((e & 1u) == 0) group.push_back(e >> 1);
     }
     std::sort(group.begin(), group.end());
+    return group;
+  }
+
+  // Is the container a mass model's faces (comp_faces.hpp)? Then it is
+  // written so. Tried only where it could be: a container thick on every
+  // axis whose first box is flat (a facade's container is flat itself, a
+  // building's first part mostly solid: either costs nothing more).
+  bool faces_of_mass(const Work& w) {
+    for (std::size_t a = 0; a < 3; ++a)
+      if (w.lo[a] == w.hi[a]) return false;
+    const std::uint32_t first = events_[0][w.begin] >> 1;
+    bool flat = false;
+    for (std::size_t a = 0; a < 3; ++a) flat = flat || lo_[a][first] == hi_[a][first];
+    if (!flat || w.end - w.begin < 4) return false;
     SplitTree& node = *w.node;
     set_extent(node, w.lo_val, w.hi_val);
-    if (group.size() >= 2) {
-      if (const auto faces = comp_faces(boxes_, group, node.min, node.max, tolerance_)) {
-        comp(node, *faces);
-        return;
-      }
-    }
+    const auto faces = comp_faces(boxes_, boxes_in(w), node.min, node.max, tolerance_);
+    if (!faces) return false;
+    comp(node, *faces);
+    return true;
+  }
+
+  void unsplittable(const Work& w) {
+    const std::vector<std::uint32_t> group = boxes_in(w);
+    SplitTree& node = *w.node;
+    set_extent(node, w.lo_val, w.hi_val);
     node.kind = SplitTree::Kind::Unsplittable;
     node.children.resize(group.size());
     for (std::size_t i = 0; i < group.size(); ++i) {
