@@ -737,12 +737,15 @@ class Splitter {
         if ((events[i] & 1u) == 0 && target_[span_of_[events[i] >> 1]] == p && !on_face(events[i] >> 1)) faces[p] = false;
     }
     std::vector<bool> joins(n, false);
-    bool any = false;
+    std::size_t joined = 0;
     for (std::size_t c = 1; c < n; ++c) {
       joins[c] = faces[c] && faces[c - 1] && pieces_[c - 1].hi == pieces_[c].lo;
-      any = any || joins[c];
+      joined += joins[c] ? 1 : 0;
     }
-    if (!any) return;
+    // Never all into one: that piece would be the container itself, cut
+    // again the same way for ever (its faces were no mass: faces_of_mass
+    // found none).
+    if (joined == 0 || joined + 1 == n) return;
     if (compound_.size() != n) compound_.assign(n, kNone);
     join_pieces(joins);
   }
