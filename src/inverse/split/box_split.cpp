@@ -1158,15 +1158,23 @@ class Splitter {
 
   // Is the container a mass model's faces (comp_faces.hpp)? Then it is
   // written so. Tried only where it could be: a container thick on every
-  // axis whose first box is flat (a facade's container is flat itself, a
-  // building's first part mostly solid: either costs nothing more).
+  // axis whose boxes all lie flat on its faces (a facade's container is
+  // flat itself, and a building's first solid part ends the look).
   bool faces_of_mass(const Work& w) {
     for (std::size_t a = 0; a < 3; ++a)
       if (w.lo[a] == w.hi[a]) return false;
-    const std::uint32_t first = events_[0][w.begin] >> 1;
-    bool flat = false;
-    for (std::size_t a = 0; a < 3; ++a) flat = flat || lo_[a][first] == hi_[a][first];
-    if (!flat || w.end - w.begin < 4) return false;
+    if (w.end - w.begin < 4) return false;
+    // Every box flat on one of the container's faces, by rank, before
+    // anything is gathered: most containers fail at their first box.
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      const Event e = events_[0][i];
+      if ((e & 1u) != 0) continue;
+      const std::uint32_t box = e >> 1;
+      bool on_face = false;
+      for (std::size_t a = 0; a < 3 && !on_face; ++a)
+        on_face = lo_[a][box] == hi_[a][box] && (lo_[a][box] == w.lo[a] || lo_[a][box] == w.hi[a]);
+      if (!on_face) return false;
+    }
     SplitTree& node = *w.node;
     set_extent(node, w.lo_val, w.hi_val);
     const auto faces = comp_faces(boxes_, boxes_in(w), node.min, node.max, tolerance_);
