@@ -212,6 +212,8 @@ class Splitter {
       rank_axis(a, bounds[a], tolerance);
       bounds[a] = {};
     }
+    for (std::uint32_t b = 0; b < n && !any_flat_; ++b)
+      for (std::size_t a = 0; a < 3; ++a) any_flat_ = any_flat_ || lo_[a][b] == hi_[a][b];
     scratch_.resize(2 * n);
     scratch2_.resize(2 * n);
     starts_.resize(2 * n + 1);
@@ -710,6 +712,7 @@ class Splitter {
   // whole mass cut into storeys of four faces each (the top one with the
   // roof, another size).
   void group_mass_faces(const Work& w, int a) {
+    if (!any_flat_) return;  // solid parts only: no faces
     const std::size_t n = pieces_.size();
     for (std::size_t k = 0; k < 3; ++k)
       if (w.lo[k] == w.hi[k]) return;
@@ -1161,6 +1164,7 @@ class Splitter {
   // axis whose boxes all lie flat on its faces (a facade's container is
   // flat itself, and a building's first solid part ends the look).
   bool faces_of_mass(const Work& w) {
+    if (!any_flat_) return false;
     for (std::size_t a = 0; a < 3; ++a)
       if (w.lo[a] == w.hi[a]) return false;
     if (w.end - w.begin < 4) return false;
@@ -1287,6 +1291,7 @@ class Splitter {
   const std::vector<LabelledBox>& boxes_;
   const std::string& source_;
   double tolerance_;  // metres: what snapping joins
+  bool any_flat_ = false;  // some box is flat on some axis: a mass's faces are possible
   std::array<std::vector<Rank>, 3> lo_, hi_;  // per axis, per box: ranks of its bounds
   std::array<Rank, 3> ranks_{};               // per axis: how many ranks
   std::array<double, 3> root_lo_{}, root_hi_{};  // the bounds of all boxes
