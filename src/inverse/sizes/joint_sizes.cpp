@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "graph/recursive_rules.hpp"
 #include "inverse/check/check.hpp"
 #include "inverse/check/derives_examples.hpp"
 #include "inverse/load/derived_example.hpp"
@@ -55,38 +56,6 @@ struct Region {
   std::uint64_t choice = 0;        // the path of that choice
   static constexpr std::size_t kNoRegion = ~std::size_t{0};
 };
-
-// Rules that can reach a call of themselves: a region never enters them
-// (their bodies run at several depths, each a different place).
-std::vector<bool> recursive_rules(const Grammar& g) {
-  const std::size_t n = g.rules.size();
-  std::vector<std::vector<RuleId>> calls(n);
-  for (RuleId r = 0; r < n; ++r) {
-    std::vector<NodeId> stack{g.rules[r].body};
-    std::unordered_set<NodeId> seen;
-    while (!stack.empty()) {
-      const NodeId id = stack.back();
-      stack.pop_back();
-      if (!seen.insert(id).second) continue;
-      if (const auto* c = std::get_if<Call>(&g.op(id))) calls[r].push_back(c->rule);
-      for_each_child(g.op(id), [&](NodeId child) { stack.push_back(child); });
-    }
-  }
-  std::vector<bool> out(n, false);
-  for (RuleId r = 0; r < n; ++r) {
-    std::vector<RuleId> stack(calls[r].begin(), calls[r].end());
-    std::vector<bool> seen(n, false);
-    while (!stack.empty() && !out[r]) {
-      const RuleId c = stack.back();
-      stack.pop_back();
-      if (c == r) out[r] = true;
-      if (c >= n || seen[c]) continue;
-      seen[c] = true;
-      stack.insert(stack.end(), calls[c].begin(), calls[c].end());
-    }
-  }
-  return out;
-}
 
 bool draws(const Split& s) {
   return std::ranges::any_of(s.parts, [](const SplitPart& p) { return p.size.value.draws_random(); });

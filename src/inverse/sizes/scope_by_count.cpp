@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "graph/nodes_below.hpp"
+#include "graph/recursive_rules.hpp"
 #include "inverse/merge/substitute.hpp"
 #include "inverse/sizes/linear_size.hpp"
 #include "inverse/sizes/tidy_numbers.hpp"
@@ -31,26 +32,6 @@ bool finite_draw(const Expr& e) {
   return f == Function::RandInt || f == Function::Choice;
 }
 
-// Does the rule call itself, directly or through the rules it calls?
-bool recursive(const Grammar& g, RuleId rule) {
-  std::vector<bool> reached(g.rules.size(), false);
-  std::vector<RuleId> todo{rule};
-  while (!todo.empty()) {
-    const RuleId r = todo.back();
-    todo.pop_back();
-    for (const NodeId id : nodes_below(g, g.rules[r].body)) {
-      const auto* call = std::get_if<Call>(&g.op(id));
-      if (!call) continue;
-      if (call->rule == rule) return true;
-      if (!reached[call->rule]) {
-        reached[call->rule] = true;
-        todo.push_back(call->rule);
-      }
-    }
-  }
-  return false;
-}
-
 // The calls a derivation makes exactly once, wherever it goes: reached
 // from the start rule's body through splits, choices and transforms, not
 // through a repeat or another rule; and of a rule that recurses, so that
@@ -62,11 +43,14 @@ std::vector<NodeId> calls_made_once(const Grammar& g) {
   walk_below(g, g.rules[g.start_rule].body, [&](NodeId id) {
     const Operation& op = g.op(id);
     if (const auto* call = std::get_if<Call>(&op)) {
-      if (std::ranges::any_of(call->args, finite_draw) && recursive(g, call->rule)) calls.push_back(id);
+      if (std::ranges::any_of(call->args, finite_draw)) calls.push_back(id);
       return false;
     }
     return !std::holds_alternative<Repeat>(op) && !std::holds_alternative<RepeatN>(op);
   });
+  if (calls.empty()) return calls;
+  const std::vector<bool> recursive = recursive_rules(g);
+  std::erase_if(calls, [&](NodeId id) { return !recursive[std::get<Call>(g.op(id)).rule]; });
   std::ranges::sort(calls);
   return calls;
 }

@@ -717,11 +717,6 @@ class Splitter {
     for (std::size_t k = 0; k < 3; ++k)
       if (w.lo[k] == w.hi[k]) return;
     const auto ax = static_cast<std::size_t>(a);
-    auto on_face = [&](std::uint32_t box) {
-      for (std::size_t k = 0; k < 3; ++k)
-        if (lo_[k][box] == hi_[k][box] && (lo_[k][box] == w.lo[k] || lo_[k][box] == w.hi[k])) return true;
-      return false;
-    };
     // Each piece's events lie together in the sweep's order: found by
     // their rank, and read whole only where the first box opening there
     // is on a face (a building of solid parts pays a search per piece).
@@ -734,10 +729,11 @@ class Splitter {
                            [&](Event e, Rank r) { return rank_of(ax, e) < r; }) -
           events);
       while (i < w.end && ((events[i] & 1u) != 0 || target_[span_of_[events[i] >> 1]] != p)) ++i;
-      if (i == w.end || !on_face(events[i] >> 1)) continue;
+      if (i == w.end || !on_face(w, events[i] >> 1)) continue;
       faces[p] = true;
       for (; i < w.end && rank_of(ax, events[i]) <= pieces_[p].hi && faces[p]; ++i)
-        if ((events[i] & 1u) == 0 && target_[span_of_[events[i] >> 1]] == p && !on_face(events[i] >> 1)) faces[p] = false;
+        if ((events[i] & 1u) == 0 && target_[span_of_[events[i] >> 1]] == p && !on_face(w, events[i] >> 1))
+          faces[p] = false;
     }
     std::vector<bool> joins(n, false);
     std::size_t joined = 0;
@@ -1148,6 +1144,14 @@ class Splitter {
   }
 
   // No straight cut divides the container: its boxes, in index order.
+  // Is the box flat on some axis, at the container's end along it (on one
+  // of its faces)?
+  bool on_face(const Work& w, std::uint32_t box) const {
+    for (std::size_t a = 0; a < 3; ++a)
+      if (lo_[a][box] == hi_[a][box] && (lo_[a][box] == w.lo[a] || lo_[a][box] == w.hi[a])) return true;
+    return false;
+  }
+
   // The container's boxes, by index.
   std::vector<std::uint32_t> boxes_in(const Work& w) const {
     std::vector<std::uint32_t> group;
@@ -1172,12 +1176,7 @@ class Splitter {
     // anything is gathered: most containers fail at their first box.
     for (std::uint32_t i = w.begin; i < w.end; ++i) {
       const Event e = events_[0][i];
-      if ((e & 1u) != 0) continue;
-      const std::uint32_t box = e >> 1;
-      bool on_face = false;
-      for (std::size_t a = 0; a < 3 && !on_face; ++a)
-        on_face = lo_[a][box] == hi_[a][box] && (lo_[a][box] == w.lo[a] || lo_[a][box] == w.hi[a]);
-      if (!on_face) return false;
+      if ((e & 1u) == 0 && !on_face(w, e >> 1)) return false;
     }
     SplitTree& node = *w.node;
     set_extent(node, w.lo_val, w.hi_val);

@@ -39,10 +39,6 @@ std::vector<const SplitTree*> leaves_below(const SplitTree& t) {
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 // A part on a face: where, and its vertices and box in the face's frame.
 struct FacePart {
   std::size_t example = 0;
@@ -105,7 +101,8 @@ void orient_face_parts(const std::vector<SplitTree>& trees, const std::vector<Ex
     if (p.example >= oriented.turns.size() || p.box >= oriented.turns[p.example].size()) continue;
     const Mesh* mesh = oriented.canonical.find(label_of(p));
     if (mesh == nullptr) continue;
-    oriented.turns[p.example][p.box] = find_orientation(*mesh, p.local, p.min, p.max, tol_of(p)).value_or(Orientation{});
+    oriented.turns[p.example][p.box] =
+        find_orientation(*mesh, p.local, p.min, p.max, tol_of(p)).value_or(Orientation{});
   }
   // Labels whose every part is on a face, turned alike: rebased.
   std::map<std::string, std::size_t> all;
