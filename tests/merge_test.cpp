@@ -121,6 +121,29 @@ TEST(Merge, RowsOfDifferentLengthsShareOneStretchingRepeat) {
   EXPECT_NE(std::get_if<Repeat>(&g.op(s.parts[1].child)), nullptr);
 }
 
+TEST(Merge, OneStoreyAboveAGroundFloorIsTheStoreysOfTallerHouses) {
+  // A shop with one storey above it, and shops with two and three: the
+  // storeys are a repeat in the taller ones, and the one storey, which a
+  // tile size of theirs would make one tile of, is that repeat too. One
+  // structure, not an alternative for the house of one storey. Each
+  // example's storey has its own window width: kinds, not sizes, match.
+  Grammar g;
+  auto storey = [](double window) {
+    return "split(x){ ~1 : I(wall) | ~" + std::to_string(window) + " : I(window) | ~1 : I(wall) }";
+  };
+  auto house = [&](int storeys, double height, double window) {
+    std::string t = "split(z){ ~3.5 : I(shop)";
+    for (int i = 0; i < storeys; ++i) t += " | ~" + std::to_string(height) + " : " + storey(window);
+    return t + " }";
+  };
+  const NodeId merged =
+      merge_examples(g, examples(g, {house(1, 2.8, 1.2), house(2, 2.4, 1.3), house(3, 2.7, 1.1)}), {});
+  const auto* s = std::get_if<Split>(&g.op(merged));
+  ASSERT_NE(s, nullptr) << write_operation(g, merged, {});
+  ASSERT_EQ(s->parts.size(), 2u) << write_operation(g, merged, {});
+  EXPECT_NE(std::get_if<Repeat>(&g.op(s->parts[1].child)), nullptr) << write_operation(g, merged, {});
+}
+
 TEST(Merge, WholeRunBecomesTheRepeatItself) {
   Grammar g;
   const auto roots = examples(g, {"split(z){ ~3 : I(floor) | ~3 : I(floor) | ~3 : I(floor) }"});
@@ -178,7 +201,7 @@ TEST(Merge, PlacesThatCombineFreelyBecomeChoicesAndCoupledOnesStay) {
   // Each cell saw a, b and c: one choice, so a row is three of it, and
   // each example is three of that row. The rows of an example may trade
   // places: each label is in two rows or more, or, in the third example,
-  // where b is in one row only, in two rows of the others (TradingLabels).
+  // where b is in one row only, in two rows of the others (RowsSeen).
   // So every example is the tiles of one stretching repeat(y, ~1) of the
   // one row, repeatN(x, 3){ choice }.
   const auto* stretching = std::get_if<Repeat>(&g.op(free_rows));

@@ -54,6 +54,68 @@ TEST(RepeatFolding, AMixedRowIsLeftForMerging) {
   EXPECT_EQ(folded(text), flat(write_grammar(parse_grammar(text))));
 }
 
+TEST(RepeatFolding, RunsOfOneBarePartEitherSideOfADoorAreRepeats) {
+  // Walls of one length, three before a door and two after: each run a
+  // repeat of the wall (a wider side gets more walls), the door between.
+  const std::string out = folded(
+      "a --> split(x){ ~2 : I(wall) | ~2 : I(wall) | ~2 : I(wall) | ~1.6 : I(door) | ~2 : I(wall) | "
+      "~2 : I(wall) }\n");
+  EXPECT_NE(out.find("split(x){ ~6 : repeat(x, 2.01){ I(wall) } | ~1.6 : I(door) | "
+                     "~4 : repeat(x, 2.01){ I(wall) } }"),
+            std::string::npos)
+      << out;
+  // Walls of two lengths are no one run of walls; nor are walls beside a
+  // door as wide as a wall (a row of unlike tiles, for merging).
+  for (const std::string& text :
+       {std::string("a --> split(x){ ~2.2 : I(wall) | ~2.2 : I(wall) | ~1.6 : I(door) | ~2.5 : I(wall) | "
+                    "~2.5 : I(wall) }\n"),
+        std::string("a --> split(x){ ~2.2 : I(wall) | ~2.2 : I(wall) | ~2.2 : I(door) | ~2.2 : I(wall) | "
+                    "~2.2 : I(wall) }\n")})
+    EXPECT_EQ(folded(text), flat(write_grammar(parse_grammar(text))));
+}
+
+TEST(RepeatFolding, WallBaysEitherSideOfADoorInferAsOneRepeatWhateverTheirCount) {
+  // Two to four bare walls each side of a door, as many as a 2.5 m tile
+  // fits: each side one repeat of a wall, not an alternative per count
+  // (a fixed three, and pairs of walls for two and four).
+  const Grammar source = parse_grammar(
+      "@scope rand(10, 20), 1, 4\n"
+      "front --> split(x){ ~1 : repeat(x, 2.5){ I(wall) } | 1.6 : I(door) | ~1 : repeat(x, 2.5){ I(wall) } }\n");
+  const Inference inferred = infer(test::derived_examples(source, 10), {});
+  const std::string text = write_grammar(inferred.grammar);
+  EXPECT_EQ(text.find("repeatN"), std::string::npos) << text;
+  EXPECT_EQ(text.find("building -->"), text.rfind("building -->")) << text;  // one alternative
+  EXPECT_TRUE(test::source_derives_variants(source, inferred.grammar, 1001, 1030));
+}
+
+TEST(RepeatFolding, AStoreyAloneIsARepeatWhereAnotherRowFoldsItsKind) {
+  // Above a ground floor, two storeys fold (the storeys' zone); one
+  // storey alone folds only once some row has folded storeys of its kind
+  // (sizes aside), and only where a tile size that makes that row's
+  // count makes one tile of it: 2 * 2.4 m = 4.8 m at most here.
+  auto storey = [](double window) {
+    return "split(x){ ~1 : I(wall) | ~" + std::to_string(window) + " : I(window) | ~1 : I(wall) }";
+  };
+  auto house = [&](std::vector<double> heights, double window) {
+    std::string t = "split(z){ ~3.5 : I(shop)";
+    for (const double h : heights) t += " | ~" + std::to_string(h) + " : " + storey(window);
+    return t + " }\n";
+  };
+  Grammar g = parse_grammar("two --> " + house({2.4, 2.4}, 1.3) + "one --> " + house({2.8}, 1.2) +
+                            "tall --> " + house({5}, 1.2));
+  RowsSeen seen;
+  const NodeId alone = fold_repeats(g, g.rules[1].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &seen);
+  EXPECT_EQ(write_operation(g, alone, {}).find("repeat"), std::string::npos) << write_operation(g, alone, {});
+  EXPECT_EQ(seen.lone_tiles.size(), 1u);
+  const NodeId two = fold_repeats(g, g.rules[0].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &seen);
+  ASSERT_NE(write_operation(g, two, {}).find("repeat(z"), std::string::npos) << write_operation(g, two, {});
+  const NodeId one = fold_repeats(g, g.rules[1].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &seen);
+  EXPECT_NE(flat(write_operation(g, one, {})).find("~2.8 : repeat(z, 2.81){ split(x){"), std::string::npos)
+      << write_operation(g, one, {});
+  const NodeId tall = fold_repeats(g, g.rules[2].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &seen);
+  EXPECT_EQ(write_operation(g, tall, {}).find("repeat"), std::string::npos) << write_operation(g, tall, {});
+}
+
 TEST(RepeatFolding, StoreysBetweenAGroundFloorAndARoofAreARepeat) {
   // A ground floor below, a cornice and a roof above: the storeys between
   // are tiles however many there are, two as well as three, so that houses
@@ -345,7 +407,7 @@ TEST(RepeatFolding, AnOddBayBeforeARunIsATileWhereOtherRowsShowItTradingPlaces) 
   EXPECT_EQ(std::get_if<Repeat>(&unknown.g.op(unknown.body)), nullptr) << flat(write_operation(unknown.g, unknown.body, {}));
 
   Grammar g = parse_grammar(bays({kWindow, kBalcony, kWindow, kBalcony, kBalcony}) + alone);
-  TradingLabels trading;
+  RowsSeen trading;
   const NodeId other = fold_repeats(g, g.rules[0].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &trading);
   ASSERT_NE(std::get_if<Repeat>(&g.op(other)), nullptr);
   EXPECT_EQ(trading.seen.count(g.find_label("balcony").value()), 1u);
@@ -370,7 +432,7 @@ TEST(RepeatFolding, AlternatingBaysAreARunOfPairsUnlessOtherRowsShowThemTradingP
   EXPECT_TRUE(std::holds_alternative<Split>(alone.g.op(run->child)));  // the pair
 
   Grammar g = parse_grammar(bays({kWindow, kBalcony, kBalcony, kWindow, kWindow}) + pairs);
-  TradingLabels trading;
+  RowsSeen trading;
   fold_repeats(g, g.rules[0].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &trading);
   const NodeId row = fold_repeats(g, g.rules[1].body, 1e-6, UnlikeTiles::Fold, nullptr, nullptr, &trading);
   const auto* tiles = std::get_if<Repeat>(&g.op(row));

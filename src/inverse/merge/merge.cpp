@@ -913,9 +913,10 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   for (const NodeId p : options.placed)
     for (const NodeId n : nodes_below(g, p)) copied[n] = true;
   // Folded twice where a row kept a tile from folding for a label that
-  // other rows show trading places (TradingLabels): the first pass reads
-  // which labels do, the second folds with what every row showed.
-  TradingLabels trading;
+  // other rows show trading places, or left a built part alone that other
+  // rows fold as tiles (RowsSeen): the first pass reads what the rows
+  // show, the second folds with what every row showed.
+  RowsSeen trading;
   std::vector<NodeId> nested;
   for (NodeId r : roots) nested.push_back(nest_inset_runs(g, r, options.tolerance, &copied));
   auto fold_all = [&] {
@@ -927,7 +928,9 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   fold_all();
   if (std::any_of(trading.lone.begin(), trading.lone.end(), [&](LabelId l) { return trading.seen.count(l) > 0; }) ||
       std::any_of(trading.shapes_lone.begin(), trading.shapes_lone.end(),
-                  [&](std::size_t shape) { return trading.shapes_seen.count(shape) > 0; }))
+                  [&](std::size_t shape) { return trading.shapes_seen.count(shape) > 0; }) ||
+      std::any_of(trading.lone_tiles.begin(), trading.lone_tiles.end(),
+                  [&](const auto& part) { return trading.tiles.count(part) > 0; }))
     fold_all();
   Choose all;
   for (NodeId r : folded) all.options.push_back({Expr{}, Expr::number(1.0), r});

@@ -20,7 +20,7 @@ namespace {
 class Folder {
  public:
   Folder(Grammar& g, double tolerance, UnlikeTiles unlike, TileCounts* counts, const std::vector<bool>* kept,
-         TradingLabels& trading)
+         RowsSeen& trading)
       : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts), kept_(kept), trading_(trading) {}
 
   NodeId run(NodeId id) {
@@ -132,8 +132,15 @@ class Folder {
     // fold, the pattern is found among occurrences alike but for sizes.
     const bool alike_tiles = unlike_ == UnlikeTiles::Fold;
     const bool exact = r && r->period >= 2;
-    if (!exact && alike_tiles) r = alike_run(parts);
-    if (!r || r->period < 2) return false;
+    if (!exact && alike_tiles)
+      if (auto alike = alike_run(parts)) r = alike;
+    // Else a run of one equal part (bare wall bays either side of a door)
+    // is the pattern, where every copy of it in the row is one length (not
+    // piers of bays whose windows differ, two by two between them) and no
+    // part as long as it stands beside a run: that row is tiles of unlike
+    // kinds, left to merging.
+    const bool single = r && r->period == 1;
+    if (!r) return false;
     // The row cut into runs of occurrences and stretches between them,
     // for the pattern as run r reads it.
     struct Segment {
@@ -197,6 +204,15 @@ class Folder {
     const std::vector<Segment>& segments = row.segments;
     const std::size_t covered = row.covered;
     if (2 * covered < parts.size() || segments.size() < 2) return false;
+    if (single)
+      for (std::size_t k = 0; k < segments.size(); ++k) {
+        if (segments[k].copies == 0) continue;
+        const double tile = length_of(parts, segments[k].from, 1);
+        if (std::abs(tile - length_of(parts, r->start, 1)) > tol_) return false;
+        const bool before = segments[k].from > 0 && std::abs(length_of(parts, segments[k].from - 1, 1) - tile) <= tol_;
+        const bool after = segments[k].to < parts.size() && std::abs(length_of(parts, segments[k].to, 1) - tile) <= tol_;
+        if (before || after) return false;
+      }
     // Found among alike occurrences: only where some run repeats.
     if (!exact && std::none_of(segments.begin(), segments.end(), [](const Segment& seg) { return seg.copies > 1; }))
       return false;
@@ -238,7 +254,7 @@ class Folder {
   // that one: two bays are no tile where one bay is). A piece
   // whose kind (its shape, sizes aside: tile_shape) is the only one of its
   // kind in the row, and no other row showed trading places
-  // (TradingLabels::shapes_seen), is the odd tile: it stands alone,
+  // (RowsSeen::shapes_seen), is the odd tile: it stands alone,
   // between runs. Each run becomes a repeat of a choice of its pieces
   // (merging unites them), each stretch between runs a part or one
   // group. Only where the runs hold tiles of two kinds or more, or of a
@@ -606,6 +622,12 @@ class Folder {
     const double written = shortest_decimal((low + high) / 2, (high - low) / 2);
     const NodeId tiles = g_.intern({Repeat{axis, Expr::number(written), body}, {}});
     if (counts_) (*counts_)[tiles].push_back({static_cast<std::uint32_t>(copies), total});
+    const auto along = axis.literal_axis();
+    if (copies >= 2 && along && !is_primitive(body) && !std::holds_alternative<Choose>(g_.op(body))) {
+      // The longest tile size that still makes this count here.
+      double& reach = trading_.tiles[{tile_shape(body), *along}];
+      reach = std::max(reach, total / (n - 1));
+    }
     return SplitPart{{Expr::number(total), relative}, tiles};
   }
 
@@ -637,7 +659,7 @@ class Folder {
       // Along a run of equal copies, the copies are the tiles: a row
       // window, balcony, window, balcony is a run of pairs (a pattern kept
       // in every row, as far as this row shows), unless other rows showed
-      // these tiles trading places freely (TradingLabels): then each copy
+      // these tiles trading places freely (RowsSeen): then each copy
       // is cut into tiles, none a bare primitive (a bay's walls and
       // opening are no tiles).
       const double per_copy = only_tile ? std::round(*only_tile / tile) : 1;
@@ -706,7 +728,7 @@ class Folder {
   }
 
   // Tiles that may trade places: none holds a primitive that no other
-  // tile holds, here or in some other row (TradingLabels). A ground floor
+  // tile holds, here or in some other row (RowsSeen). A ground floor
   // with the only door, under storeys of windows, is not one of the
   // storeys; the storeys above it are. Notes what it saw in trading_.
   bool exchangeable(const std::vector<std::pair<NodeId, double>>& held) {
@@ -802,6 +824,44 @@ class Folder {
     return !before && !after;
   }
 
+  // Each built part alone among other parts, of a kind (tile_shape) that
+  // some row, here or in another example, folded as tiles along this
+  // axis, becomes a repeat of one tile where some tile size that makes
+  // such a row's count would make one tile of it (ceil: n tiles on L for
+  // sizes in [L / n, L / (n - 1))): one storey above a ground floor is
+  // the storeys of the taller houses.
+  // Kinds not yet known as tiles are noted (RowsSeen::lone_tiles) for
+  // merging to fold again.
+  bool lone_tiles(const Expr& axis, std::vector<SplitPart>& parts) {
+    const auto along = axis.literal_axis();
+    if (unlike_ != UnlikeTiles::Fold || !along || parts.size() < 2) return false;
+    bool changed = false;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      SplitPart& p = parts[i];
+      const auto length = p.size.value.literal();
+      const auto* folded = std::get_if<Repeat>(&g_.op(p.child));
+      if (!p.size.relative || !length || is_primitive(p.child) || (folded && folded->axis.literal_axis() == along))
+        continue;
+      // Beside a part as long, or of its kind, it is one of a row of
+      // tiles that did not fold (storeys each holding their own bays),
+      // not a part alone.
+      auto beside = [&](std::size_t j) {
+        const auto other = parts[j].size.value.literal();
+        return (other && std::abs(*other - *length) <= tol_) || tile_shape(parts[j].child) == tile_shape(p.child);
+      };
+      if ((i > 0 && beside(i - 1)) || (i + 1 < parts.size() && beside(i + 1))) continue;
+      const std::pair<std::size_t, std::uint8_t> key{tile_shape(p.child), *along};
+      const auto tile = trading_.tiles.find(key);
+      if (tile == trading_.tiles.end()) {
+        trading_.lone_tiles.insert(key);
+      } else if (*length < tile->second) {
+        p = repeat_part(axis, *length, 1, p.child, true);
+        changed = true;
+      }
+    }
+    return changed;
+  }
+
   // The split with its parts' children already folded; kNotYet when
   // nothing changes (children_changed false and no run folded).
   NodeId fold_split(Split s, bool children_changed) {
@@ -865,6 +925,7 @@ class Folder {
         folded = true;
         changed = true;
       }
+      changed = lone_tiles(s.axis, parts) || changed;
     }
     if (parts.size() == 1 && parts[0].size.relative) return parts[0].child;
     if (!changed) return kNotYet;
@@ -882,7 +943,7 @@ class Folder {
   UnlikeTiles unlike_;
   TileCounts* counts_;  // where to note each repeat's tile count, or null
   const std::vector<bool>* kept_;  // by node id: left as it is, or null
-  TradingLabels& trading_;
+  RowsSeen& trading_;
   std::unordered_map<NodeId, std::size_t> shapes_;  // tile_shape, by node id
   std::vector<NodeId> memo_;  // by node id; kNotYet until folded
   std::vector<std::vector<LabelId>> labels_;  // labels_below, by node id
@@ -892,8 +953,8 @@ class Folder {
 }  // namespace
 
 NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike, TileCounts* counts,
-                    const std::vector<bool>* kept, TradingLabels* trading) {
-  TradingLabels own;
+                    const std::vector<bool>* kept, RowsSeen* trading) {
+  RowsSeen own;
   return Folder(g, tolerance, unlike, counts, kept, trading != nullptr ? *trading : own).run(root);
 }
 

@@ -13,7 +13,11 @@
 // each side, none as long as a tile beside it (the storeys between a
 // ground floor and a cornice and roof, as many as the height allows): a
 // run inside a mixed row is left for merging to line up with other rows
-// (merge.hpp), which finds repeats after unifying. The run's part keeps its
+// (merge.hpp), which finds repeats after unifying, unless it is a run of
+// one part whose copies in the row are all one length, none as long
+// beside them (walls either side of a door: each run a repeat). A built
+// part alone in a row, of a kind some row folds as tiles along the same
+// axis, is a repeat of one tile (RowsSeen). The run's part keeps its
 // length (k tiles) and its relative flag; the tile is the run's length / k,
 // so rounding noise spreads evenly instead of piling up at the end (the
 // size written is the shortest decimal just above it, which still makes k
@@ -53,6 +57,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <set>
 #include <unordered_map>
 #include <vector>
@@ -91,9 +96,19 @@ using TileCounts = std::unordered_map<NodeId, std::vector<TileSeen>>;
 // was seen elsewhere (merge.cpp).
 // Kinds of tiles (tile shapes: structure, sizes aside) are noted alike
 // by rows that segment_kinds reads.
-struct TradingLabels {
+// A built part (a storey, a bay) alone in a row is a repeat of one tile
+// where some row folds runs of it along the same axis: a house of one
+// storey above its ground floor is then the houses of two and three,
+// not an alternative of its own. Folding notes, for each kind of such
+// part (by shape, sizes aside, and axis: tiles), the longest tile size
+// that makes some row's count of it, and
+// the kinds it saw alone with no tile noted yet (lone_tiles); merging
+// folds again when one of those turned out a tile elsewhere.
+struct RowsSeen {
   std::set<LabelId> seen, lone;
   std::set<std::size_t> shapes_seen, shapes_lone;
+  std::map<std::pair<std::size_t, std::uint8_t>, double> tiles;
+  std::set<std::pair<std::size_t, std::uint8_t>> lone_tiles;
 };
 
 // Rewrites every split below root whose sizes are literals; returns the new
@@ -102,6 +117,6 @@ struct TradingLabels {
 // copies as they are) are left as they are, and all below them.
 NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike = UnlikeTiles::Fold,
                     TileCounts* counts = nullptr, const std::vector<bool>* kept = nullptr,
-                    TradingLabels* trading = nullptr);
+                    RowsSeen* trading = nullptr);
 
 }  // namespace vern
