@@ -87,6 +87,19 @@ TEST(SettleRepeats, CommonTileKeepsEveryCountAndClearsTheToleranceAtBothEnds) {
   EXPECT_FALSE(common_tile({{3, 9.0}, {4, 10.0}, {5, 15.9}, {5, 16.6}}, 0.2));
 }
 
+TEST(SettleRepeats, LengthsOfWholeTilesInCentimetresAreTheTile) {
+  // Bays of 4.5 m, one or two before a door (whole bays), the rest a
+  // stretching repeat on lengths drawn at random: these alone allow
+  // [4.5, 5.67), whose shortest decimal is 5; but lengths drawn at random
+  // are never whole tiles of 4.5 m.
+  const std::vector<TileSeen> seen{{1, 4.5}, {2, 9.0}, {3, 12.3456}, {2, 6.789}, {4, 17.01234}};
+  EXPECT_EQ(common_tile(seen, 1e-6), 4.5);
+  // On a centimetre grid every length is whole centimetres, and one of
+  // them whole tiles of something by chance: two lengths must tell.
+  EXPECT_EQ(common_tile({{2, 9.0}, {3, 12.35}, {2, 6.79}, {4, 17.01}}, 1e-6), 5.0);
+  EXPECT_EQ(common_tile({{2, 9.0}, {3, 13.5}, {3, 12.35}, {2, 6.79}, {4, 17.01}}, 1e-6), 4.5);
+}
+
 TEST(SettleRepeats, TilesThatDivideALengthExactlyAreTheTileDespiteFloatNoise) {
   // A run of six bays of exactly 3.8 m measured a hair long (its parts'
   // lengths summed as derived: 22.800000000005 m), beside rows of 20, 26

@@ -191,6 +191,25 @@ std::optional<double> common_tile(const std::vector<TileSeen>& seen, double tole
     // tile itself less that noise: 3.8 m for a run of six 3.8 m bays
     // measured 22.800000000005 m, not the 3.81 just above.
     const double floor_noise = lo * 1e-10;
+    // A length that is whole tiles of a size in centimetres, to the
+    // tolerance, is that size where lengths are not all in whole
+    // centimetres: lengths drawn at random are not whole tiles of
+    // anything short (k bays of 4.5 m before a door, the rest a
+    // stretching repeat, whose lengths alone put the tile at 4.6). On a
+    // model drawn on a centimetre grid every length is whole centimetres
+    // and half of them whole tiles of something by chance: there, only
+    // two lengths of two tiles or more tell.
+    const double centimetres = std::round(lo * 100) / 100;
+    const bool grid = std::ranges::all_of(
+        seen, [&](const TileSeen& t) { return std::abs(t.length - std::round(t.length * 100) / 100) <= tolerance; });
+    std::vector<double> tiled;  // distinct lengths of whole tiles of it
+    for (const TileSeen& t : seen)
+      if ((t.count >= 2 || !grid) && std::abs(t.length - t.count * centimetres) <= tolerance &&
+          std::none_of(tiled.begin(), tiled.end(), [&](double l) { return std::abs(l - t.length) <= tolerance; }))
+        tiled.push_back(t.length);
+    if (known == 0 && tiled.size() >= (grid ? 2u : 1u) && centimetres >= lo - floor_noise && centimetres < hi &&
+        gives_every_count_firmly(seen, centimetres, tolerance))
+      return centimetres;
     const auto t = shortest_decimal_in(lo - floor_noise, hi);
     if (!t) continue;
     if (gives_every_count_firmly(seen, *t, tolerance)) return t;
