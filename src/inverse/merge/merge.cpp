@@ -916,21 +916,21 @@ NodeId merge_examples(Grammar& g, const std::vector<NodeId>& roots, const MergeO
   // other rows show trading places, or left a built part alone that other
   // rows fold as tiles (RowsSeen): the first pass reads what the rows
   // show, the second folds with what every row showed.
-  RowsSeen trading;
+  RowsSeen rows_seen;
   std::vector<NodeId> nested;
   for (NodeId r : roots) nested.push_back(nest_inset_runs(g, r, options.tolerance, &copied));
   auto fold_all = [&] {
     folded.clear();
     tile_counts.clear();
     for (NodeId r : nested)
-      folded.push_back(fold_repeats(g, r, options.tolerance, unlike, &tile_counts, &copied, &trading));
+      folded.push_back(fold_repeats(g, r, options.tolerance, unlike, &tile_counts, &copied, &rows_seen));
   };
   fold_all();
-  if (std::any_of(trading.lone.begin(), trading.lone.end(), [&](LabelId l) { return trading.seen.count(l) > 0; }) ||
-      std::any_of(trading.shapes_lone.begin(), trading.shapes_lone.end(),
-                  [&](std::size_t shape) { return trading.shapes_seen.count(shape) > 0; }) ||
-      std::any_of(trading.lone_tiles.begin(), trading.lone_tiles.end(),
-                  [&](const auto& part) { return trading.tiles.count(part) > 0; }))
+  auto any_seen = [](const auto& lone, const auto& seen) {
+    return std::any_of(lone.begin(), lone.end(), [&](const auto& key) { return seen.count(key) > 0; });
+  };
+  if (any_seen(rows_seen.lone, rows_seen.seen) || any_seen(rows_seen.shapes_lone, rows_seen.shapes_seen) ||
+      any_seen(rows_seen.lone_tiles, rows_seen.tiles))
     fold_all();
   Choose all;
   for (NodeId r : folded) all.options.push_back({Expr{}, Expr::number(1.0), r});

@@ -20,8 +20,8 @@ namespace {
 class Folder {
  public:
   Folder(Grammar& g, double tolerance, UnlikeTiles unlike, TileCounts* counts, const std::vector<bool>* kept,
-         RowsSeen& trading)
-      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts), kept_(kept), trading_(trading) {}
+         RowsSeen& rows_seen)
+      : g_(g), tol_(tolerance), unlike_(unlike), counts_(counts), kept_(kept), rows_seen_(rows_seen) {}
 
   NodeId run(NodeId id) {
     if (id < memo_.size() && memo_[id] != kNotYet) return memo_[id];
@@ -337,7 +337,7 @@ class Folder {
         shapes[r].push_back(group_shape(axis, parts, runs[r].starts[k], runs[r].starts[k + 1]));
         ++kinds[shapes[r].back()];
       }
-    auto trades = [&](std::size_t shape) { return kinds[shape] >= 2 || trading_.shapes_seen.count(shape) > 0; };
+    auto trades = [&](std::size_t shape) { return kinds[shape] >= 2 || rows_seen_.shapes_seen.count(shape) > 0; };
     // Runs cut around odd tiles; segments in order: runs of pieces, and
     // stretches of parts between.
     struct Segment {
@@ -365,7 +365,7 @@ class Folder {
       for (std::size_t k = 0; k + 1 < runs[r].starts.size(); ++k) {
         const std::size_t from = runs[r].starts[k], to = runs[r].starts[k + 1];
         if (!trades(shapes[r][k])) {
-          trading_.shapes_lone.insert(shapes[r][k]);  // another row may show it trading
+          rows_seen_.shapes_lone.insert(shapes[r][k]);  // another row may show it trading
           close();
           stretch(from, to);
           continue;
@@ -391,7 +391,7 @@ class Folder {
         it->second = {std::min(it->second.first, length), std::max(it->second.second, length)};
       }
     const bool mixed = in_runs.size() >= 2 || std::any_of(in_runs.begin(), in_runs.end(), [&](std::size_t k) {
-                         return trading_.shapes_seen.count(k) > 0;
+                         return rows_seen_.shapes_seen.count(k) > 0;
                        });
     // A stretch that starts (or ends) with tiles of the runs' kinds holds
     // runs of them, one tile long too, beside the odd tile: the bay before
@@ -470,11 +470,11 @@ class Folder {
     if (2 * covered < n) return false;
     if (!mixed) {
       // A row of one kind here, which another row may show trading.
-      trading_.shapes_lone.insert(in_runs.begin(), in_runs.end());
+      rows_seen_.shapes_lone.insert(in_runs.begin(), in_runs.end());
       return false;
     }
     // Note what the row showed: kinds in two tiles or more trade places.
-    for (const auto& [shape, count] : kinds) (count >= 2 ? trading_.shapes_seen : trading_.shapes_lone).insert(shape);
+    for (const auto& [shape, count] : kinds) (count >= 2 ? rows_seen_.shapes_seen : rows_seen_.shapes_lone).insert(shape);
     std::vector<SplitPart> out;
     for (const Segment& seg : segments) {
       if (!seg.starts.empty()) {
@@ -625,7 +625,7 @@ class Folder {
     const auto along = axis.literal_axis();
     if (copies >= 2 && along && !is_primitive(body) && !std::holds_alternative<Choose>(g_.op(body))) {
       // The longest tile size that still makes this count here.
-      double& reach = trading_.tiles[{tile_shape(body), *along}];
+      double& reach = rows_seen_.tiles[{tile_shape(body), *along}];
       reach = std::max(reach, total / (n - 1));
     }
     return SplitPart{{Expr::number(total), relative}, tiles};
@@ -730,20 +730,20 @@ class Folder {
   // Tiles that may trade places: none holds a primitive that no other
   // tile holds, here or in some other row (RowsSeen). A ground floor
   // with the only door, under storeys of windows, is not one of the
-  // storeys; the storeys above it are. Notes what it saw in trading_.
+  // storeys; the storeys above it are. Notes what it saw in rows_seen_.
   bool exchangeable(const std::vector<std::pair<NodeId, double>>& held) {
     std::map<LabelId, std::size_t> tiles_with;  // label -> tiles holding it
     for (const auto& [piece, count] : held)
       for (LabelId label : labels_below(piece)) tiles_with[label] += static_cast<std::size_t>(count);
     bool lone = false;
     for (const auto& [label, tiles] : tiles_with)
-      if (tiles < 2 && !trading_.seen.count(label)) {
-        trading_.lone.insert(label);
+      if (tiles < 2 && !rows_seen_.seen.count(label)) {
+        rows_seen_.lone.insert(label);
         lone = true;
       }
     if (lone) return false;
     for (const auto& [label, tiles] : tiles_with)
-      if (tiles >= 2) trading_.seen.insert(label);
+      if (tiles >= 2) rows_seen_.seen.insert(label);
     return true;
   }
 
@@ -752,7 +752,7 @@ class Folder {
   bool seen_trading(const std::vector<std::pair<NodeId, double>>& held) {
     for (const auto& [piece, count] : held)
       for (LabelId label : labels_below(piece))
-        if (!trading_.seen.count(label)) return false;
+        if (!rows_seen_.seen.count(label)) return false;
     return true;
   }
 
@@ -829,9 +829,8 @@ class Folder {
   // axis, becomes a repeat of one tile where some tile size that makes
   // such a row's count would make one tile of it (ceil: n tiles on L for
   // sizes in [L / n, L / (n - 1))): one storey above a ground floor is
-  // the storeys of the taller houses.
-  // Kinds not yet known as tiles are noted (RowsSeen::lone_tiles) for
-  // merging to fold again.
+  // the storeys of the taller houses. Kinds not yet known as tiles are
+  // noted (RowsSeen::lone_tiles) for merging to fold again.
   bool lone_tiles(const Expr& axis, std::vector<SplitPart>& parts) {
     const auto along = axis.literal_axis();
     if (unlike_ != UnlikeTiles::Fold || !along || parts.size() < 2) return false;
@@ -851,9 +850,9 @@ class Folder {
       };
       if ((i > 0 && beside(i - 1)) || (i + 1 < parts.size() && beside(i + 1))) continue;
       const std::pair<std::size_t, std::uint8_t> key{tile_shape(p.child), *along};
-      const auto tile = trading_.tiles.find(key);
-      if (tile == trading_.tiles.end()) {
-        trading_.lone_tiles.insert(key);
+      const auto tile = rows_seen_.tiles.find(key);
+      if (tile == rows_seen_.tiles.end()) {
+        rows_seen_.lone_tiles.insert(key);
       } else if (*length < tile->second) {
         p = repeat_part(axis, *length, 1, p.child, true);
         changed = true;
@@ -943,7 +942,7 @@ class Folder {
   UnlikeTiles unlike_;
   TileCounts* counts_;  // where to note each repeat's tile count, or null
   const std::vector<bool>* kept_;  // by node id: left as it is, or null
-  RowsSeen& trading_;
+  RowsSeen& rows_seen_;
   std::unordered_map<NodeId, std::size_t> shapes_;  // tile_shape, by node id
   std::vector<NodeId> memo_;  // by node id; kNotYet until folded
   std::vector<std::vector<LabelId>> labels_;  // labels_below, by node id
@@ -953,9 +952,9 @@ class Folder {
 }  // namespace
 
 NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike, TileCounts* counts,
-                    const std::vector<bool>* kept, RowsSeen* trading) {
+                    const std::vector<bool>* kept, RowsSeen* rows_seen) {
   RowsSeen own;
-  return Folder(g, tolerance, unlike, counts, kept, trading != nullptr ? *trading : own).run(root);
+  return Folder(g, tolerance, unlike, counts, kept, rows_seen != nullptr ? *rows_seen : own).run(root);
 }
 
 }  // namespace vern

@@ -117,6 +117,6 @@ struct RowsSeen {
 // copies as they are) are left as they are, and all below them.
 NodeId fold_repeats(Grammar& g, NodeId root, double tolerance, UnlikeTiles unlike = UnlikeTiles::Fold,
                     TileCounts* counts = nullptr, const std::vector<bool>* kept = nullptr,
-                    RowsSeen* trading = nullptr);
+                    RowsSeen* rows_seen = nullptr);
 
 }  // namespace vern
