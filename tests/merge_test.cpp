@@ -26,8 +26,9 @@ std::string right_garage(double height) {
 }
 
 // A placed group (split_graph.hpp): a panel resized past its piece into
-// the next, and a column of three equal tiles. Beside it two columns of
-// one structure vary, so the building varies; the group keeps its own
+// the next, and a column of three equal tiles. Beside it columns of one
+// structure vary (of two widths: two as wide would be a run of two
+// tiles), so the building varies; the group keeps its own
 // split, which check derives as one, not flattened into the building's,
 // and its tiles stay three (repeatN, as simplifying writes equal parts),
 // not a stretching repeat.
@@ -35,7 +36,7 @@ TEST(Merge, APlacedGroupIsCopiedAsItIsBesideWhatVaries) {
   Grammar g;
   const std::string group =
       "split(x){ ~1 : S(~2, ~1, ~1){ I(a) } | ~1 : nil | ~1 : split(z){ ~1 : I(d) | ~1 : I(d) | ~1 : I(d) } }";
-  const auto roots = examples(g, {"split(x){ ~3 : " + group + " | ~1 : split(z){ ~1 : I(b) | ~2 : I(c) } | ~1 : split(z){ ~2 : I(b) | ~1 : I(c) } }",
+  const auto roots = examples(g, {"split(x){ ~3 : " + group + " | ~1 : split(z){ ~1 : I(b) | ~2 : I(c) } | ~1.5 : split(z){ ~2 : I(b) | ~1 : I(c) } }",
                                   "split(x){ ~3 : " + group + " | ~1 : split(z){ ~1 : I(b) | ~1 : I(c) } }"});
   MergeOptions options = kUniform;
   options.placed = {std::get<Split>(g.op(roots[0])).parts[0].child};

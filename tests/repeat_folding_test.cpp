@@ -116,6 +116,36 @@ TEST(RepeatFolding, AStoreyAloneIsARepeatWhereAnotherRowFoldsItsKind) {
   EXPECT_EQ(write_operation(g, tall, {}).find("repeat"), std::string::npos) << write_operation(g, tall, {});
 }
 
+TEST(RepeatFolding, TwoUnlikeStoreysBetweenAGroundFloorAndARoofAreTiles) {
+  // Two storeys of one height above a shop, each holding its own bays
+  // (blinds and panes in turn, the other way round in the other): tiles,
+  // as two equal storeys are, since what they hold trades places; a
+  // third storey would make them tiles of unlike contents anyway.
+  auto storey = [](const std::string& a, const std::string& b) {
+    return "split(x){ ~1 : I(" + a + ") | ~1 : I(" + b + ") | ~1 : I(" + a + ") }";
+  };
+  const std::string two = "split(z){ ~4 : I(shop) | ~3 : " + storey("blind", "pane") + " | ~3 : " +
+                          storey("pane", "blind") + " | ~2 : I(roof) }";
+  Grammar g = parse_grammar("a --> " + two + "\n");
+  const NodeId folded_row = fold_repeats(g, g.rules[0].body, 1e-6, UnlikeTiles::Fold);
+  const auto* s = std::get_if<Split>(&g.op(folded_row));
+  ASSERT_NE(s, nullptr);
+  ASSERT_EQ(s->parts.size(), 3u) << write_operation(g, folded_row, {});
+  const auto* tiles = std::get_if<Repeat>(&g.op(s->parts[1].child));
+  ASSERT_NE(tiles, nullptr) << write_operation(g, folded_row, {});
+  EXPECT_NE(std::get_if<Choose>(&g.op(tiles->child)), nullptr);
+  // A storey beside a bare part as high is no pair; nor are two storeys
+  // beside a third part as high (a longer row of unlike tiles), nor two
+  // storeys one of which holds a label the other never trades for.
+  for (const std::string& text :
+       {"a --> split(z){ ~4 : I(shop) | ~3 : " + storey("blind", "pane") + " | ~3 : I(attic) | ~2 : I(roof) }\n",
+        "a --> split(z){ ~3 : I(shop) | ~3 : " + storey("blind", "pane") + " | ~3 : " + storey("pane", "blind") +
+            " | ~2 : I(roof) }\n",
+        "a --> split(z){ ~4 : I(shop) | ~3 : " + storey("blind", "pane") + " | ~3 : " + storey("pane", "door") +
+            " | ~2 : I(roof) }\n"})
+    EXPECT_EQ(folded(text), flat(write_grammar(parse_grammar(text)))) << text;
+}
+
 TEST(RepeatFolding, StoreysBetweenAGroundFloorAndARoofAreARepeat) {
   // A ground floor below, a cornice and a roof above: the storeys between
   // are tiles however many there are, two as well as three, so that houses

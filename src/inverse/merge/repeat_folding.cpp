@@ -824,6 +824,35 @@ class Folder {
     return !before && !after;
   }
 
+  // Two unlike tiles of one length between ends (two storeys above a
+  // ground floor, each holding its own bays): tiles, as two equal storeys
+  // there are (between_ends), where what they hold trades places
+  // (fold_tiles: every label in both, or seen trading in other rows).
+  // Both built (a bare part beside a storey keeps its place), and not
+  // beside a part as long: a longer row of unlike tiles.
+  bool unlike_pair(const Expr& axis, std::vector<SplitPart>& parts) {
+    for (std::size_t i = 0; i + 1 < parts.size() && i <= 2; ++i) {
+      if (parts.size() - (i + 2) > 2 || parts.size() < 3) continue;
+      const auto a = parts[i].size.value.literal(), b = parts[i + 1].size.value.literal();
+      if (!parts[i].size.relative || !parts[i + 1].size.relative || !a || !b || std::abs(*a - *b) > tol_ ||
+          same_node(parts[i].child, parts[i + 1].child) || is_primitive(parts[i].child) ||
+          is_primitive(parts[i + 1].child))
+        continue;
+      auto as_long = [&](std::size_t j) {
+        const auto other = parts[j].size.value.literal();
+        return other && std::abs(*other - *a) <= tol_;
+      };
+      if ((i > 0 && as_long(i - 1)) || (i + 2 < parts.size() && as_long(i + 2))) continue;
+      const std::vector<double> at{0, *a, *a + *b};
+      if (auto part = fold_tiles(axis, parts, i, at, {0, 1, 2}, (*a + *b) / 2)) {
+        parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+        parts[i] = *part;
+        return true;
+      }
+    }
+    return false;
+  }
+
   // Each built part alone among other parts, of a kind (tile_shape) that
   // some row, here or in another example, folded as tiles along this
   // axis, becomes a repeat of one tile where some tile size that makes
@@ -921,6 +950,10 @@ class Folder {
       // front of bays with the entrance bay after some of them): each run
       // of the tiles a repeat, each stretch between runs one group.
       if (!folded && segment_row(s.axis, parts, r)) {
+        folded = true;
+        changed = true;
+      }
+      if (unlike && !folded && unlike_pair(s.axis, parts)) {
         folded = true;
         changed = true;
       }
