@@ -83,6 +83,23 @@ house --> split(z){ ~0.5 : I(slab) | ~4.5 : I(wall) | ~1 : I(storey) | ~2 : I(ro
   EXPECT_EQ(write_grammar(rebuilt(source)), write_grammar(source));
 }
 
+TEST(AlternativeLengths, AnOptionSeenAtOneLengthTakesTheMetresOfItsSettledSiblings) {
+  // Houses seen at many heights are settled: 4.4 m of ground floor and
+  // 2.8 m of roof, the storeys between. A house seen once, at one height,
+  // holds its storeys otherwise but its ends are as long: they are
+  // metres too, not shares of that one height (which on another plot
+  // made a ground floor of 4.403 m). An end of another length stays a
+  // share; the other end still counts.
+  const Grammar g = rebuilt(parse_grammar(R"(
+house --> split(z){ 4.4 : I(shop) | ~1 : repeat(z, 3){ I(storey) } | 2.8 : I(roof) }
+house --> split(z){ ~4.4 : I(shop) | ~8.2 : I(balcony) | ~2.8 : I(roof) }
+house --> split(z){ ~4 : I(shop) | ~8.2 : I(balcony) | ~2.6 : I(roof) }
+)"));
+  const std::string text = flat(g);
+  EXPECT_NE(text.find("split(z){ 4.4 : I(shop) | ~8.2 : I(balcony) | 2.8 : I(roof) }"), std::string::npos) << text;
+  EXPECT_NE(text.find("split(z){ ~4 : I(shop) | ~8.2 : I(balcony) | ~2.6 : I(roof) }"), std::string::npos) << text;
+}
+
 TEST(AlternativeLengths, TrailingPartsCountAndTheFirstDisagreementStopsARun) {
   // A 1 m parapet on top of every house; the bottoms differ (0.5 m slab or
   // 0.8 m), so nothing at the bottom is kept.

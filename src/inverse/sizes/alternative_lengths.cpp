@@ -109,6 +109,26 @@ bool run_fits(const std::vector<SplitPart>& run, const Stretch& stretch, double 
          repeat_tile_count(length, stretch.tile) == static_cast<double>(run.size());
 }
 
+// Whether an option keeps every cut within the tolerance with the parts
+// `absolute` in metres and the rest sharing what they leave.
+bool keeps_cuts(const Seen& o, const std::map<std::size_t, double>& absolute, double tolerance) {
+  double fixed = 0, weights = 0;
+  for (std::size_t i = 0; i < o.lengths.size(); ++i) {
+    if (const auto it = absolute.find(i); it != absolute.end()) fixed += it->second;
+    else weights += o.lengths[i];
+  }
+  const double rest = o.total - fixed;
+  if (rest <= 0 || weights <= 0) return false;
+  double was = 0, now = 0;
+  for (std::size_t i = 0; i < o.lengths.size(); ++i) {
+    was += o.lengths[i];
+    const auto it = absolute.find(i);
+    now += it != absolute.end() ? it->second : o.lengths[i] * rest / weights;
+    if (std::abs(was - now) > tolerance) return false;
+  }
+  return true;
+}
+
 // Which parts of each option become absolute, and at what length: a
 // leading and a trailing run of positions where every option's length
 // agrees. Empty when none does, or when the options' parts would move by
@@ -146,22 +166,61 @@ std::vector<std::map<std::size_t, double>> plan(const std::vector<Seen>& options
     for (std::size_t i = 0; i < leading.size(); ++i) absolute[i] = leading[i];
     for (std::size_t j = 0; j < trailing.size(); ++j) absolute[o.lengths.size() - 1 - j] = trailing[j];
     // Where each cut falls now, against where the example had it.
-    double fixed = 0, weights = 0;
-    for (std::size_t i = 0; i < o.lengths.size(); ++i) {
-      if (absolute.count(i)) fixed += absolute[i];
-      else weights += o.lengths[i];
-    }
-    const double rest = o.total - fixed;
-    if (rest <= 0 || weights <= 0) return {};
-    double was = 0, now = 0;
-    for (std::size_t i = 0; i < o.lengths.size(); ++i) {
-      was += o.lengths[i];
-      now += absolute.count(i) ? absolute[i] : o.lengths[i] * rest / weights;
-      if (std::abs(was - now) > tolerance) return {};
-    }
+    if (!keeps_cuts(o, absolute, tolerance)) return {};
     out.push_back(std::move(absolute));
   }
   return out;
+}
+
+// The metres that options already settled give their leading and
+// trailing parts along the axis (a choice whose other options were seen
+// at several lengths: 4.4 m of ground floor, 2.8 m of roof), where all
+// such options agree; empty where none has any.
+struct Ends {
+  std::vector<double> leading, trailing;
+};
+
+Ends settled_ends(const Grammar& g, const Choose& choose, std::uint8_t axis, double tolerance) {
+  std::optional<Ends> agreed;
+  auto same = [&](const std::vector<double>& a, const std::vector<double>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (std::abs(a[i] - b[i]) > tolerance) return false;
+    return true;
+  };
+  for (const ChooseOption& o : choose.options) {
+    const auto* s = std::get_if<Split>(&g.op(o.child));
+    if (!s || s->axis.literal_axis() != axis) continue;
+    Ends ends;
+    std::size_t i = 0;
+    for (; i < s->parts.size() && !s->parts[i].size.relative && s->parts[i].size.value.literal(); ++i)
+      ends.leading.push_back(*s->parts[i].size.value.literal());
+    for (std::size_t j = s->parts.size(); j > i && !s->parts[j - 1].size.relative && s->parts[j - 1].size.value.literal();
+         --j)
+      ends.trailing.push_back(*s->parts[j - 1].size.value.literal());
+    if (i == s->parts.size() || (ends.leading.empty() && ends.trailing.empty())) continue;
+    if (!agreed) agreed = ends;
+    else if (!same(agreed->leading, ends.leading) || !same(agreed->trailing, ends.trailing)) return {};
+  }
+  return agreed.value_or(Ends{});
+}
+
+// An option seen at one length whose leading and trailing parts are as
+// long as the settled options' metres: those parts in metres, the rest
+// shared out as before. Empty where none agrees or a cut would move.
+std::map<std::size_t, double> anchored(const Seen& o, const Ends& ends, double tolerance) {
+  std::map<std::size_t, double> absolute;
+  for (std::size_t i = 0; i < ends.leading.size() && i + 1 < o.lengths.size(); ++i) {
+    if (std::abs(o.lengths[i] - ends.leading[i]) > tolerance) break;
+    absolute[i] = ends.leading[i];
+  }
+  for (std::size_t j = 0; j < ends.trailing.size() && absolute.size() + 1 < o.lengths.size(); ++j) {
+    const std::size_t i = o.lengths.size() - 1 - j;
+    if (absolute.count(i) || std::abs(o.lengths[i] - ends.trailing[j]) > tolerance) break;
+    absolute[i] = ends.trailing[j];
+  }
+  if (!keeps_cuts(o, absolute, tolerance)) return {};
+  return absolute;
 }
 
 }  // namespace
@@ -182,9 +241,24 @@ NodeId absolute_across_alternatives(Grammar& g, NodeId root, double tolerance) {
     }
     bool changed = false;
     for (const auto& [axis, options] : by_axis) {
-      if (options.size() < 2 || !lengths_differ(options, tolerance)) continue;
-      auto absolute = plan(options, tolerance);
+      const bool apart = options.size() >= 2 && lengths_differ(options, tolerance);
+      std::vector<std::map<std::size_t, double>> absolute;
+      if (apart) absolute = plan(options, tolerance);
       absolute.resize(options.size());  // no plan: no part is absolute
+      // Options seen at one length beside options already settled in
+      // metres (a house seen once, at one height, beside houses seen at
+      // many): their ends as the settled options' where as long.
+      const Ends ends = settled_ends(g, choose, axis, tolerance);
+      bool anchors = false;
+      for (std::size_t k = 0; k < options.size(); ++k) {
+        std::map<std::size_t, double> more = absolute[k];
+        for (const auto& [i, v] : anchored(options[k], ends, tolerance)) more.emplace(i, v);
+        if (more.size() > absolute[k].size() && keeps_cuts(options[k], more, tolerance)) {
+          absolute[k] = std::move(more);
+          anchors = true;
+        }
+      }
+      if (!apart && !anchors) continue;
       std::vector<Split> splits;
       std::vector<Stretch> stretches;
       for (std::size_t k = 0; k < options.size(); ++k) {
