@@ -45,8 +45,10 @@
 // parts: a plot holding three strips of towers), and the pieces are
 // exchangeable: not bare primitives or empty space, and no piece the only
 // one to hold some label (a ground floor with the door stays below the
-// storeys, which fold). Merging then unites the choices of rows of one kind
-// (tile_choices.hpp).
+// storeys, which fold); or two such tiles of one length, both built,
+// between ends with no part as long beside them (two storeys above a
+// ground floor, each holding its own bays). Merging then unites the
+// choices of rows of one kind (tile_choices.hpp).
 //
 // Rows of tiles of a few kinds (UnlikeTiles::Fold): where a row is runs of
 // pieces of one length whose kinds (structure, sizes aside) vary, bays

@@ -27,9 +27,17 @@
 // then only in their lone share's weight become one when tidy_numbers
 // writes every lone share as ~1.)
 //
+// Options already settled (split along the same axis, with literal
+// metres at their ends: seen at several lengths, merged) say it too: an
+// option seen at one length whose leading or trailing parts are as long
+// as theirs (a 4.4 m ground floor, a 2.8 m roof, where all settled
+// options agree) has those parts in metres as well, not shares of the
+// one height it was seen at.
+//
 // Considered: options that split along one literal axis with every size a
 // relative literal (an option seen at one length); they must number two
-// or more, along one axis, and their lengths must differ. Each keeps one
+// or more, along one axis, and their lengths must differ, or have settled
+// siblings whose ends they share. Each keeps one
 // relative part at least, so it fills any scope. Options that are not so
 // are left as they are. Only the choice is rebuilt: an option's node,
 // which may also stand elsewhere, is not changed in place.
