@@ -510,6 +510,35 @@ TEST(BoxSplit, APodiumRightAcrossIsCutOffBeforeAColumnOfItsBays) {
   // (ABlockIsCutIntoPlotsBeforeSlicingItUnderATowersUpperStorey).
 }
 
+TEST(BoxSplit, HousesOfDifferentHeightsOverTheirShopsAreCutIntoHousesFirst) {
+  // A terrace of three houses, each a shop 3.5 m high and two, four or
+  // three storeys of windows between walls above it, under air up to the
+  // tallest. The shops are a slab right across, as a podium is, but every
+  // house holds storeys above it and the taller houses' storeys above a
+  // lower one's top are of its own kinds: houses, cut apart first, not
+  // storey bands across the terrace with air in them.
+  std::vector<LabelledBox> boxes;
+  const double widths[] = {6, 7.5, 5.5};
+  const int storeys[] = {2, 4, 3};
+  double x = 0;
+  for (int h = 0; h < 3; ++h) {
+    const double w = widths[h];
+    boxes.push_back(part("shop", {x, 0, 0}, {x + w, 1, 3.5}));
+    for (int s = 0; s < storeys[h]; ++s) {
+      const double z = 3.5 + 3 * s;
+      boxes.push_back(part("wall", {x, 0, z}, {x + 1, 1, z + 3}));
+      boxes.push_back(part("window", {x + 1, 0, z}, {x + w - 1, 1, z + 3}));
+      boxes.push_back(part("wall", {x + w - 1, 0, z}, {x + w, 1, z + 3}));
+    }
+    x += w;
+  }
+  const SplitTree t = split(test::numbered(boxes));
+  ASSERT_TRUE(cut_along(t, 0, 3));
+  // A tower over a podium of the same labels is still a podium: a column
+  // of the podium has nothing above the slab
+  // (APodiumRightAcrossIsCutOffBeforeAColumnOfItsBays).
+}
+
 TEST(BoxSplit, CutsThatOnlyHappenToLineUpThroughTheStoreysWait) {
   // A ground floor of a door (0..3) and window bays of 2.25 m, a roof band
   // of dormer tiles 3 m wide: both have a face at x = 3 and at x = 12, so

@@ -523,13 +523,58 @@ class Splitter {
     if (w.hi[2] > w.lo[2] && find_pieces(w, 2) && pieces_.size() > 1) {
       if (!whole) {
         piece_fill(w, 2, fill_);
-        if (fill_.front() >= kFull) return true;
+        if (fill_.front() >= kFull && !taller_neighbours_alike(w, a)) return true;
       } else if (cuts_line_up_by_chance(w, a, cuts_along_a)) {
         return true;
       }
     }
     find_pieces(w, a);
     return false;
+  }
+
+  // After a sweep along z whose lowest piece is a slab right across: are
+  // the pieces along a buildings of different heights, side by side (a
+  // terrace of houses of two to four storeys over their shops)? Each
+  // piece that stops short of the top holds parts above the slab (it is
+  // no column of the podium under air), and above its top the other
+  // pieces hold only parts labelled as some part of its own: its taller
+  // neighbours go on as it does. Not a podium beside its tower, nor
+  // storeys beside a roof narrower than they are (a lantern, tiers): what
+  // stands above those is of another kind. Leaves pieces_ as the sweep
+  // along z found them.
+  bool taller_neighbours_alike(const Work& w, int a) {
+    const Rank slab_top = pieces_.front().hi;
+    find_pieces(w, a);
+    const std::size_t n = pieces_.size();
+    std::vector<Rank> top(n, w.lo[2]);
+    std::vector<bool> storeyed(n, false);
+    std::vector<std::vector<const std::string*>> labels(n);
+    const Event* events = events_[static_cast<std::size_t>(a)].data();
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      if (events[i] & 1u) continue;
+      const std::uint32_t box = events[i] >> 1;
+      const std::uint32_t p = target_[span_of_[box]];
+      top[p] = std::max(top[p], hi_[2][box]);
+      storeyed[p] = storeyed[p] || lo_[2][box] >= slab_top;
+      labels[p].push_back(&boxes_[box].label);
+    }
+    bool alike = true;
+    for (std::size_t p = 0; p < n && alike; ++p) {
+      if (top[p] >= w.hi[2]) continue;
+      bool above = false;
+      alike = storeyed[p];
+      for (std::uint32_t i = w.begin; i < w.end && alike; ++i) {
+        if (events[i] & 1u) continue;
+        const std::uint32_t box = events[i] >> 1;
+        if (target_[span_of_[box]] == p || lo_[2][box] < top[p]) continue;
+        above = true;
+        alike = std::any_of(labels[p].begin(), labels[p].end(),
+                            [&](const std::string* l) { return *l == boxes_[box].label; });
+      }
+      alike = alike && above;
+    }
+    find_pieces(w, 2);
+    return alike;
   }
 
   // After a sweep along z: does every piece have more than twice `cuts`
