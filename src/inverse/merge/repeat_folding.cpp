@@ -208,10 +208,9 @@ class Folder {
       for (std::size_t k = 0; k < segments.size(); ++k) {
         if (segments[k].copies == 0) continue;
         const double tile = length_of(parts, segments[k].from, 1);
-        if (std::abs(tile - length_of(parts, r->start, 1)) > tol_) return false;
-        const bool before = segments[k].from > 0 && std::abs(length_of(parts, segments[k].from - 1, 1) - tile) <= tol_;
-        const bool after = segments[k].to < parts.size() && std::abs(length_of(parts, segments[k].to, 1) - tile) <= tol_;
-        if (before || after) return false;
+        if (std::abs(tile - length_of(parts, r->start, 1)) > tol_ ||
+            part_as_long_beside(parts, segments[k].from, segments[k].to, tile))
+          return false;
       }
     // Found among alike occurrences: only where some run repeats.
     if (!exact && std::none_of(segments.begin(), segments.end(), [](const Segment& seg) { return seg.copies > 1; }))
@@ -824,6 +823,18 @@ class Folder {
     return !before && !after;
   }
 
+  // Does a part as long as `length` stand just before parts[from] or just
+  // after parts[to - 1]? Then what lies between is one of a row of
+  // unlike tiles, not a run or a part alone.
+  bool part_as_long_beside(const std::vector<SplitPart>& parts, std::size_t from, std::size_t to,
+                           double length) const {
+    auto as_long = [&](std::size_t j) {
+      const auto other = parts[j].size.value.literal();
+      return other && std::abs(*other - length) <= tol_;
+    };
+    return (from > 0 && as_long(from - 1)) || (to < parts.size() && as_long(to));
+  }
+
   // Two unlike tiles of one length between ends (two storeys above a
   // ground floor, each holding its own bays): tiles, as two equal storeys
   // there are (between_ends), where what they hold trades places
@@ -838,11 +849,7 @@ class Folder {
           same_node(parts[i].child, parts[i + 1].child) || is_primitive(parts[i].child) ||
           is_primitive(parts[i + 1].child))
         continue;
-      auto as_long = [&](std::size_t j) {
-        const auto other = parts[j].size.value.literal();
-        return other && std::abs(*other - *a) <= tol_;
-      };
-      if ((i > 0 && as_long(i - 1)) || (i + 2 < parts.size() && as_long(i + 2))) continue;
+      if (part_as_long_beside(parts, i, i + 2, *a)) continue;
       const std::vector<double> at{0, *a, *a + *b};
       if (auto part = fold_tiles(axis, parts, i, at, {0, 1, 2}, (*a + *b) / 2)) {
         parts.erase(parts.begin() + static_cast<std::ptrdiff_t>(i) + 1);
@@ -873,11 +880,10 @@ class Folder {
       // Beside a part as long, or of its kind, it is one of a row of
       // tiles that did not fold (storeys each holding their own bays),
       // not a part alone.
-      auto beside = [&](std::size_t j) {
-        const auto other = parts[j].size.value.literal();
-        return (other && std::abs(*other - *length) <= tol_) || tile_shape(parts[j].child) == tile_shape(p.child);
-      };
-      if ((i > 0 && beside(i - 1)) || (i + 1 < parts.size() && beside(i + 1))) continue;
+      auto alike = [&](std::size_t j) { return tile_shape(parts[j].child) == tile_shape(p.child); };
+      if (part_as_long_beside(parts, i, i + 1, *length) || (i > 0 && alike(i - 1)) ||
+          (i + 1 < parts.size() && alike(i + 1)))
+        continue;
       const std::pair<std::size_t, std::uint8_t> key{tile_shape(p.child), *along};
       const auto tile = rows_seen_.tiles.find(key);
       if (tile == rows_seen_.tiles.end()) {

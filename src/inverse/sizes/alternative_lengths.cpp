@@ -206,8 +206,8 @@ Ends settled_ends(const Grammar& g, const Choose& choose, std::uint8_t axis, dou
 }
 
 // An option seen at one length whose leading and trailing parts are as
-// long as the settled options' metres: those parts in metres, the rest
-// shared out as before. Empty where none agrees or a cut would move.
+// long as the settled options' metres: those parts, at those lengths
+// (the caller checks that no cut moves). Empty where none agrees.
 std::map<std::size_t, double> anchored(const Seen& o, const Ends& ends, double tolerance) {
   std::map<std::size_t, double> absolute;
   for (std::size_t i = 0; i < ends.leading.size() && i + 1 < o.lengths.size(); ++i) {
@@ -219,7 +219,6 @@ std::map<std::size_t, double> anchored(const Seen& o, const Ends& ends, double t
     if (absolute.count(i) || std::abs(o.lengths[i] - ends.trailing[j]) > tolerance) break;
     absolute[i] = ends.trailing[j];
   }
-  if (!keeps_cuts(o, absolute, tolerance)) return {};
   return absolute;
 }
 

@@ -68,7 +68,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <limits>
+#include <string_view>
 
 #include "base/error.hpp"
 #include "inverse/load/coordinate_clusters.hpp"
@@ -545,10 +547,20 @@ class Splitter {
   bool taller_neighbours_alike(const Work& w, int a) {
     const Rank slab_top = pieces_.front().hi;
     find_pieces(w, a);
+    const bool alike = taller_neighbours_alike_pieces(w, a, slab_top);
+    find_pieces(w, 2);
+    return alike;
+  }
+
+  // taller_neighbours_alike on pieces_ as the sweep along a found them,
+  // in O(n log n): a box above the tops of the k lowest pieces that stop
+  // short must bear a label all k hold.
+  bool taller_neighbours_alike_pieces(const Work& w, int a, Rank slab_top) const {
     const std::size_t n = pieces_.size();
     std::vector<Rank> top(n, w.lo[2]);
     std::vector<bool> storeyed(n, false);
-    std::vector<std::vector<const std::string*>> labels(n);
+    std::vector<std::vector<std::string_view>> labels(n);
+    Rank highest_bottom = w.lo[2];
     const Event* events = events_[static_cast<std::size_t>(a)].data();
     for (std::uint32_t i = w.begin; i < w.end; ++i) {
       if (events[i] & 1u) continue;
@@ -556,25 +568,40 @@ class Splitter {
       const std::uint32_t p = target_[span_of_[box]];
       top[p] = std::max(top[p], hi_[2][box]);
       storeyed[p] = storeyed[p] || lo_[2][box] >= slab_top;
-      labels[p].push_back(&boxes_[box].label);
+      highest_bottom = std::max(highest_bottom, lo_[2][box]);
+      labels[p].push_back(boxes_[box].label);
     }
-    bool alike = true;
-    for (std::size_t p = 0; p < n && alike; ++p) {
+    std::vector<std::size_t> short_of_top;
+    for (std::size_t p = 0; p < n; ++p) {
       if (top[p] >= w.hi[2]) continue;
-      bool above = false;
-      alike = storeyed[p];
-      for (std::uint32_t i = w.begin; i < w.end && alike; ++i) {
-        if (events[i] & 1u) continue;
-        const std::uint32_t box = events[i] >> 1;
-        if (target_[span_of_[box]] == p || lo_[2][box] < top[p]) continue;
-        above = true;
-        alike = std::any_of(labels[p].begin(), labels[p].end(),
-                            [&](const std::string* l) { return *l == boxes_[box].label; });
-      }
-      alike = alike && above;
+      // Parts above the slab in it, and some in another piece above it.
+      if (!storeyed[p] || highest_bottom < top[p]) return false;
+      short_of_top.push_back(p);
     }
-    find_pieces(w, 2);
-    return alike;
+    std::sort(short_of_top.begin(), short_of_top.end(), [&](std::size_t x, std::size_t y) { return top[x] < top[y]; });
+    std::vector<Rank> tops;
+    std::vector<std::vector<std::string_view>> shared;  // labels the lowest k + 1 all hold
+    for (const std::size_t p : short_of_top) {
+      std::sort(labels[p].begin(), labels[p].end());
+      labels[p].erase(std::unique(labels[p].begin(), labels[p].end()), labels[p].end());
+      tops.push_back(top[p]);
+      if (shared.empty()) {
+        shared.push_back(labels[p]);
+      } else {
+        std::vector<std::string_view> both;
+        std::set_intersection(shared.back().begin(), shared.back().end(), labels[p].begin(), labels[p].end(),
+                              std::back_inserter(both));
+        shared.push_back(std::move(both));
+      }
+    }
+    for (std::uint32_t i = w.begin; i < w.end; ++i) {
+      if (events[i] & 1u) continue;
+      const std::uint32_t box = events[i] >> 1;
+      const auto k = static_cast<std::size_t>(std::upper_bound(tops.begin(), tops.end(), lo_[2][box]) - tops.begin());
+      if (k > 0 && !std::binary_search(shared[k - 1].begin(), shared[k - 1].end(), std::string_view(boxes_[box].label)))
+        return false;
+    }
+    return true;
   }
 
   // After a sweep along z: does every piece have more than twice `cuts`
